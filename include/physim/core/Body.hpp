@@ -1,0 +1,43 @@
+#pragma once
+// Body description handed to World::createBody, and the handle the world gives back.
+
+#include "physim/core/Geometry.hpp"
+#include "physim/core/Math.hpp"
+
+#include <cstdint>
+#include <limits>
+
+namespace physim {
+
+/// Static: never moves, infinite mass (the paper's mass 0). Kinematic: moves by its velocity, immovable by
+/// contacts and forces. Dynamic: moved by forces and contacts.
+enum class BodyType { Static, Kinematic, Dynamic };
+
+/// Handle to a body in one World. The generation makes a handle to a destroyed body detectably stale.
+struct BodyId {
+    std::uint32_t index = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t generation = 0;
+
+    bool isNull() const { return index == std::numeric_limits<std::uint32_t>::max(); }
+    friend bool operator==(const BodyId& a, const BodyId& b) {
+        return a.index == b.index && a.generation == b.generation;
+    }
+    friend bool operator!=(const BodyId& a, const BodyId& b) { return !(a == b); }
+};
+
+struct BodyDef {
+    BodyType type = BodyType::Dynamic;
+    Vec2 position = Vec2::Zero();      ///< centre of mass, m
+    double angle = 0.0;                ///< rad, counter-clockwise
+    Vec2 velocity = Vec2::Zero();      ///< m/s
+    double angularVelocity = 0.0;      ///< rad/s
+    Geometry shape = Circle{Vec2::Zero(), 0.5};
+    double density = 1.0;              ///< kg/m^2; mass = density * area (dynamic bodies only)
+    double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
+    double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
+    double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+    bool useGravity = true;
+    bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it
+};
+
+}  // namespace physim

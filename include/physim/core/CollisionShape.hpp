@@ -1,0 +1,51 @@
+#pragma once
+// The paper's CollisionShape (section 5.2): a shape placed in the world, with the paper's queries.
+// It wraps plain Geometry (what the World stores) and a pose; the World's narrow phase and these queries call
+// the same collide() and so agree.
+
+#include "physim/core/Aabb.hpp"
+#include "physim/core/Colliding.hpp"
+#include "physim/core/Geometry.hpp"
+#include "physim/core/Math.hpp"
+
+#include <memory>
+
+namespace physim {
+
+/// The paper's ShapeType (CIRCLE, RECTANGLE), grown with new shapes.
+enum class ShapeType { CIRCLE, RECTANGLE, POLYGON };
+
+class CollisionShape {
+public:
+    virtual ~CollisionShape() = default;
+
+    virtual ShapeType getType() const = 0;
+    /// The paper's getSize: full width and height for a rectangle, (radius, 0) for a circle (its length is the
+    /// radius), the bounding box size in the shape's own frame for a polygon. Metres.
+    virtual Vec2 getSize() const = 0;
+    virtual std::unique_ptr<CollisionShape> clone() const = 0;
+
+    /// The paper's AABB test (section 5.2.1) on the world-space bounding boxes; works for any rotation.
+    bool aabbCollision(const CollisionShape& other) const;
+    /// The full narrow phase (the paper's SAT, section 5.2.2): normal from this shape towards `other`.
+    Colliding satCollision(const CollisionShape& other) const;
+    /// World-space bounding box. (The paper returned the SFML sprite; drawing belongs to Mesh here.)
+    Aabb getBounds() const;
+
+    const Geometry& geometry() const { return geometry_; }
+    const Transform& transform() const { return transform_; }
+    Vec2 getPosition() const { return transform_.p; }
+    double getRotation() const { return angle_; }  ///< rad
+    /// Places the shape: its local origin (the body's centre of mass) at `position`, rotated by `angle` rad.
+    void setTransform(const Vec2& position, double angle);
+
+protected:
+    explicit CollisionShape(Geometry geometry);
+
+private:
+    Geometry geometry_;
+    Transform transform_;
+    double angle_ = 0.0;
+};
+
+}  // namespace physim

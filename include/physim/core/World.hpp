@@ -1,0 +1,110 @@
+#pragma once
+// The physics world: owns every body's data and steps it. No SFML, no ROOT.
+//
+// One fixed step runs as three phases, so the framework can call the paper's entity hooks between them:
+//   beginStep(dt)  forces -> velocities
+//   collide()      broad phase -> narrow phase -> continuous -> contact solve
+//   finishStep()   velocities -> positions, position correction, sleep
+// step(dt) runs all three. Each phase skips the stages the world's content does not call for.
+
+#include "physim/core/Body.hpp"
+#include "physim/core/Contact.hpp"
+#include "physim/core/StepProfile.hpp"
+#include "physim/core/WorldSettings.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace physim {
+
+struct BodyData;       // internal storage, src/core/BodyData.hpp
+class ContactSolver;  // internal, src/core/ContactSolver.hpp
+
+class World {
+public:
+    explicit World(const WorldSettings& settings = {});
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    // --- bodies -------------------------------------------------------------------------------------
+    /// Validates the definition (throws std::invalid_argument naming the bad value) and adds the body.
+    BodyId createBody(const BodyDef& def);
+    void destroyBody(BodyId id);
+    bool contains(BodyId id) const;
+    std::size_t bodyCount() const;
+
+    BodyType type(BodyId id) const;
+    const Geometry& shape(BodyId id) const;
+    Transform transform(BodyId id) const;
+    Vec2 position(BodyId id) const;
+    double angle(BodyId id) const;
+    Vec2 velocity(BodyId id) const;
+    double angularVelocity(BodyId id) const;
+    double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
+    double inverseMass(BodyId id) const;  ///< 1/kg; 0 when immovable
+    double inertia(BodyId id) const;      ///< kg m^2 about the centre of mass; 0 when it cannot rotate
+    double inverseInertia(BodyId id) const;
+    double restitution(BodyId id) const;
+    double staticFriction(BodyId id) const;
+    double dynamicFriction(BodyId id) const;
+    bool useGravity(BodyId id) const;
+
+    void setTransform(BodyId id, const Vec2& position, double angle);
+    void setVelocity(BodyId id, const Vec2& velocity);
+    void setAngularVelocity(BodyId id, double angularVelocity);
+    void setUseGravity(BodyId id, bool useGravity);
+    /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
+    void setMass(BodyId id, double mass);
+
+    /// Force (N) at the centre of mass, accumulated until the end of the current step.
+    void applyForce(BodyId id, const Vec2& force);
+    /// Force (N) applied at a world point (m): also adds the torque r x F.
+    void applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint);
+    void applyTorque(BodyId id, double torque);
+    /// Instant change of momentum (N s) at the centre of mass.
+    void applyLinearImpulse(BodyId id, const Vec2& impulse);
+
+    // --- stepping -----------------------------------------------------------------------------------
+    void step(double dt);
+    void beginStep(double dt);
+    void collide();
+    void finishStep();
+
+    const std::vector<Manifold>& contacts() const { return contacts_; }
+    const StepProfile& profile() const { return profile_; }
+    const WorldSettings& settings() const { return settings_; }
+    void setSettings(const WorldSettings& settings);
+    /// Number of completed steps.
+    std::uint64_t stepCount() const { return stepCount_; }
+
+private:
+    enum class Phase { Idle, Forces, Collided };
+
+    BodyData& at(BodyId id);
+    const BodyData& at(BodyId id) const;
+    BodyData& requireDynamic(BodyId id, const char* what);
+
+    WorldSettings settings_;
+    std::vector<BodyData> bodies_;            // slot per index; dead slots are on freeList_
+    std::vector<std::uint32_t> freeList_;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // broad-phase output: slot index pairs
+    std::vector<std::uint32_t> sweepOrder_;   // broad-phase scratch, kept to avoid per-step allocation
+    std::vector<Manifold> contacts_;
+    std::vector<Manifold> previousContacts_;  // for warm starting
+    std::unique_ptr<ContactSolver> solver_;
+    StepProfile profile_;
+    std::size_t liveCount_ = 0;
+    std::size_t movableCount_ = 0;  // dynamic + kinematic
+    std::size_t dynamicCount_ = 0;
+    Phase phase_ = Phase::Idle;
+    double dt_ = 0.0;
+    std::uint64_t stepCount_ = 0;
+};
+
+}  // namespace physim

@@ -1,0 +1,18 @@
+#pragma once
+
+#include "physim/core/Math.hpp"
+
+namespace physim {
+
+struct WorldSettings {
+    Vec2 gravity{0.0, -9.81};         ///< m/s^2, y up
+    int velocityIterations = 8;       ///< sequential-impulse passes over all contacts per step
+    int positionIterations = 3;       ///< position-projection passes per step (no velocity is added)
+    double linearSlop = 0.005;        ///< m of overlap left alone, so resting contacts persist between steps
+    double restitutionThreshold = 1.0;///< m/s: slower approaches do not bounce, so resting bodies settle
+};
+
+/// Throws std::invalid_argument naming the first bad field.
+void validate(const WorldSettings& settings);
+
+}  // namespace physim

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Sets up dependencies if needed, then configures, builds and runs the whole test suite with ctest.
+#   scripts/test.sh                 the 'default' preset (release with debug info)
+#   scripts/test.sh asan cuda ...   the named presets, one after the other
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+"$PHYSIM_ROOT_DIR/scripts/setup.sh"
+cd "$PHYSIM_ROOT_DIR"
+
+presets=("$@")
+[ ${#presets[@]} -gt 0 ] || presets=(default)
+for preset in "${presets[@]}"; do
+  physim_log "preset '$preset': configure, build, test"
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$(physim_jobs)"
+  ctest --preset "$preset" -j "$(physim_jobs)"
+done

@@ -1,0 +1,19 @@
+#pragma once
+// Broad phase: candidate pairs whose world bounding boxes overlap, each pair once, never static-static.
+
+#include "BodyData.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace physim {
+
+using BodyPair = std::pair<std::uint32_t, std::uint32_t>;
+
+/// Refreshes every live body's aabb and writes the overlapping pairs of slot indices (first < second),
+/// sorted, so the order is deterministic. `scratch` is reused between calls.
+void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pairs,
+                        std::vector<std::uint32_t>& scratch);
+
+}  // namespace physim

@@ -1,0 +1,23 @@
+#include "physim/core/StepProfile.hpp"
+
+#include <numeric>
+
+namespace physim {
+
+std::string_view stageName(Stage s) {
+    switch (s) {
+        case Stage::Forces: return "forces";
+        case Stage::BroadPhase: return "broad phase";
+        case Stage::NarrowPhase: return "narrow phase";
+        case Stage::Continuous: return "continuous";
+        case Stage::Solve: return "solve";
+        case Stage::Integrate: return "integrate";
+        case Stage::Sleep: return "sleep";
+        case Stage::Count: break;
+    }
+    return "?";
+}
+
+double StepProfile::total() const { return std::accumulate(seconds.begin(), seconds.end(), 0.0); }
+
+}  // namespace physim

@@ -1,0 +1,309 @@
+#include "physim/core/World.hpp"
+
+#include "BodyData.hpp"
+#include "BroadPhase.hpp"
+#include "ContactSolver.hpp"
+#include "Integrator.hpp"
+
+#include "physim/core/Collide.hpp"
+#include "physim/core/Validate.hpp"
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+namespace physim {
+namespace {
+
+// Runs `work` as stage `s` only when `needed`, recording whether it ran and its wall-clock time.
+template <class Work>
+void runStage(StepProfile& profile, Stage s, bool needed, Work&& work) {
+    if (!needed) return;
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+    profile.secondsOf(s) = elapsed.count();
+    profile.ran[static_cast<std::size_t>(s)] = true;
+}
+
+void validate(const BodyDef& def) {
+    requireFinite("body position", def.position);
+    requireFinite("body angle", def.angle);
+    requireFinite("body velocity", def.velocity);
+    requireFinite("body angular velocity", def.angularVelocity);
+    if (def.type == BodyType::Dynamic) requirePositive("body density", def.density);
+    requireInRange("body restitution", def.restitution, 0.0, 1.0);
+    requireNonNegative("body static friction", def.staticFriction);
+    requireNonNegative("body dynamic friction", def.dynamicFriction);
+    validate(def.shape);
+}
+
+// Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape.
+void assignMass(BodyData& b, double mass) {
+    b.mass = mass;
+    b.invMass = 1.0 / mass;
+    const double density = mass / b.unitMass.area;
+    // Inertia about the centre of mass: the shape's own second moment plus the parallel-axis term for a
+    // shape whose centroid is offset from the body origin.
+    b.inertia = density * b.unitMass.secondMoment + mass * b.unitMass.centroid.squaredNorm();
+    b.invInertia = (b.fixedRotation || b.inertia <= 0.0) ? 0.0 : 1.0 / b.inertia;
+}
+
+}  // namespace
+
+void validate(const WorldSettings& s) {
+    requireFinite("gravity", s.gravity);
+    if (s.velocityIterations < 1)
+        throw std::invalid_argument("physim: velocityIterations must be >= 1, got " +
+                                    std::to_string(s.velocityIterations));
+    if (s.positionIterations < 0)
+        throw std::invalid_argument("physim: positionIterations must be >= 0, got " +
+                                    std::to_string(s.positionIterations));
+    requireNonNegative("linearSlop", s.linearSlop);
+    requireNonNegative("restitutionThreshold", s.restitutionThreshold);
+}
+
+World::World(const WorldSettings& settings) : solver_(std::make_unique<ContactSolver>()) {
+    setSettings(settings);
+}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+void World::setSettings(const WorldSettings& settings) {
+    physim::validate(settings);
+    settings_ = settings;
+}
+
+// --- bodies ------------------------------------------------------------------------------------------
+
+BodyId World::createBody(const BodyDef& def) {
+    validate(def);
+    std::uint32_t index;
+    if (!freeList_.empty()) {
+        index = freeList_.back();
+        freeList_.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(bodies_.size());
+        bodies_.emplace_back();
+    }
+    BodyData& b = bodies_[index];
+    const std::uint32_t generation = b.generation + 1;
+    b = BodyData{};
+    b.generation = generation;
+    b.alive = true;
+    b.type = def.type;
+    b.xf.p = def.position;
+    b.angle = def.angle;
+    b.xf.q = Rotation::fromAngle(def.angle);
+    b.shape = def.shape;
+    b.unitMass = computeMassProperties(def.shape);
+    b.restitution = def.restitution;
+    b.staticFriction = def.staticFriction;
+    b.dynamicFriction = def.dynamicFriction;
+    b.useGravity = def.useGravity;
+    b.fixedRotation = def.fixedRotation;
+    if (def.type != BodyType::Static) {
+        b.v = def.velocity;
+        b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
+    }
+    if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
+
+    ++liveCount_;
+    if (b.movable()) ++movableCount_;
+    if (b.type == BodyType::Dynamic) ++dynamicCount_;
+    return BodyId{index, generation};
+}
+
+void World::destroyBody(BodyId id) {
+    BodyData& b = at(id);
+    --liveCount_;
+    if (b.movable()) --movableCount_;
+    if (b.type == BodyType::Dynamic) --dynamicCount_;
+    b.alive = false;
+    freeList_.push_back(id.index);
+    // Contacts that name the destroyed body must not be solved or warm-started again.
+    auto names = [&](const Manifold& m) { return m.bodyA == id || m.bodyB == id; };
+    contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), names), contacts_.end());
+    previousContacts_.erase(std::remove_if(previousContacts_.begin(), previousContacts_.end(), names),
+                            previousContacts_.end());
+}
+
+bool World::contains(BodyId id) const {
+    return !id.isNull() && id.index < bodies_.size() && bodies_[id.index].alive &&
+           bodies_[id.index].generation == id.generation;
+}
+
+std::size_t World::bodyCount() const { return liveCount_; }
+
+BodyData& World::at(BodyId id) {
+    return const_cast<BodyData&>(static_cast<const World&>(*this).at(id));
+}
+
+const BodyData& World::at(BodyId id) const {
+    if (!contains(id))
+        throw std::invalid_argument("physim: body id (index " + std::to_string(id.index) + ", generation " +
+                                    std::to_string(id.generation) + ") is not a live body of this world");
+    return bodies_[id.index];
+}
+
+BodyData& World::requireDynamic(BodyId id, const char* what) {
+    BodyData& b = at(id);
+    if (b.type != BodyType::Dynamic)
+        throw std::invalid_argument(std::string("physim: ") + what + " needs a dynamic body");
+    return b;
+}
+
+BodyType World::type(BodyId id) const { return at(id).type; }
+const Geometry& World::shape(BodyId id) const { return at(id).shape; }
+Transform World::transform(BodyId id) const { return at(id).xf; }
+Vec2 World::position(BodyId id) const { return at(id).xf.p; }
+double World::angle(BodyId id) const { return at(id).angle; }
+Vec2 World::velocity(BodyId id) const { return at(id).v; }
+double World::angularVelocity(BodyId id) const { return at(id).w; }
+double World::mass(BodyId id) const { return at(id).mass; }
+double World::inverseMass(BodyId id) const { return at(id).invMass; }
+double World::inertia(BodyId id) const { return at(id).inertia; }
+double World::inverseInertia(BodyId id) const { return at(id).invInertia; }
+double World::restitution(BodyId id) const { return at(id).restitution; }
+double World::staticFriction(BodyId id) const { return at(id).staticFriction; }
+double World::dynamicFriction(BodyId id) const { return at(id).dynamicFriction; }
+bool World::useGravity(BodyId id) const { return at(id).useGravity; }
+
+void World::setTransform(BodyId id, const Vec2& position, double angle) {
+    requireFinite("body position", position);
+    requireFinite("body angle", angle);
+    BodyData& b = at(id);
+    b.xf.p = position;
+    b.angle = angle;
+    b.xf.q = Rotation::fromAngle(angle);
+}
+
+void World::setVelocity(BodyId id, const Vec2& velocity) {
+    requireFinite("body velocity", velocity);
+    BodyData& b = at(id);
+    if (b.movable()) b.v = velocity;
+}
+
+void World::setAngularVelocity(BodyId id, double angularVelocity) {
+    requireFinite("body angular velocity", angularVelocity);
+    BodyData& b = at(id);
+    if (b.movable() && !b.fixedRotation) b.w = angularVelocity;
+}
+
+void World::setUseGravity(BodyId id, bool useGravity) { at(id).useGravity = useGravity; }
+
+void World::setMass(BodyId id, double mass) {
+    requirePositive("body mass", mass);
+    assignMass(requireDynamic(id, "setMass"), mass);
+}
+
+void World::applyForce(BodyId id, const Vec2& force) {
+    requireFinite("force", force);
+    at(id).force += force;
+}
+
+void World::applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint) {
+    requireFinite("force", force);
+    requireFinite("force application point", worldPoint);
+    BodyData& b = at(id);
+    b.force += force;
+    b.torque += cross(worldPoint - b.xf.p, force);
+}
+
+void World::applyTorque(BodyId id, double torque) {
+    requireFinite("torque", torque);
+    at(id).torque += torque;
+}
+
+void World::applyLinearImpulse(BodyId id, const Vec2& impulse) {
+    requireFinite("impulse", impulse);
+    BodyData& b = at(id);
+    b.v += b.invMass * impulse;
+}
+
+// --- stepping ----------------------------------------------------------------------------------------
+
+void World::step(double dt) {
+    beginStep(dt);
+    collide();
+    finishStep();
+}
+
+void World::beginStep(double dt) {
+    // Above a second per step is a unit mistake (milliseconds passed as seconds), not a simulation.
+    requireInRange("time step dt (s)", dt, 0.0, 1.0);
+    if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
+    if (phase_ != Phase::Idle) throw std::logic_error("physim: beginStep called before the last step finished");
+    dt_ = dt;
+    profile_ = StepProfile{};
+    runStage(profile_, Stage::Forces, dynamicCount_ > 0,
+             [&] { integrateVelocities(bodies_, settings_.gravity, dt_); });
+    phase_ = Phase::Forces;
+}
+
+void World::collide() {
+    if (phase_ != Phase::Forces) throw std::logic_error("physim: collide must follow beginStep");
+    previousContacts_.swap(contacts_);
+    contacts_.clear();
+    pairs_.clear();
+
+    runStage(profile_, Stage::BroadPhase, movableCount_ > 0 && liveCount_ >= 2,
+             [&] { findCandidatePairs(bodies_, pairs_, sweepOrder_); });
+
+    runStage(profile_, Stage::NarrowPhase, !pairs_.empty(), [&] {
+        std::size_t previous = 0;  // both lists are sorted by (a, b): match them in one pass
+        for (const auto& [a, b] : pairs_) {
+            const BodyData& A = bodies_[a];
+            const BodyData& B = bodies_[b];
+            Manifold m = physim::collide(A.shape, A.xf, B.shape, B.xf);
+            if (m.pointCount == 0) continue;
+            m.bodyA = BodyId{a, A.generation};
+            m.bodyB = BodyId{b, B.generation};
+            // Warm start: carry last step's impulses over to points with the same feature id.
+            while (previous < previousContacts_.size() &&
+                   std::make_pair(previousContacts_[previous].bodyA.index,
+                                  previousContacts_[previous].bodyB.index) < std::make_pair(a, b))
+                ++previous;
+            if (previous < previousContacts_.size() && previousContacts_[previous].bodyA == m.bodyA &&
+                previousContacts_[previous].bodyB == m.bodyB) {
+                const Manifold& old = previousContacts_[previous];
+                for (int i = 0; i < m.pointCount; ++i)
+                    for (int j = 0; j < old.pointCount; ++j)
+                        if (m.points[i].id == old.points[j].id) {
+                            m.points[i].normalImpulse = old.points[j].normalImpulse;
+                            m.points[i].tangentImpulse = old.points[j].tangentImpulse;
+                        }
+            }
+            contacts_.push_back(m);
+        }
+    });
+    profile_.candidatePairs = pairs_.size();
+    profile_.manifolds = contacts_.size();
+
+    // Continuous collision (time of impact for fast bodies) arrives with its own issue; no body asks for it yet.
+    runStage(profile_, Stage::Continuous, false, [] {});
+
+    runStage(profile_, Stage::Solve, !contacts_.empty(), [&] {
+        solver_->prepare(bodies_, contacts_, settings_);
+        for (int i = 0; i < settings_.velocityIterations; ++i) solver_->solveVelocities(bodies_, contacts_);
+    });
+    phase_ = Phase::Collided;
+}
+
+void World::finishStep() {
+    if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
+    runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
+        integratePositions(bodies_, dt_);
+        if (!contacts_.empty())
+            for (int i = 0; i < settings_.positionIterations; ++i)
+                solver_->correctPositions(bodies_, contacts_, settings_);
+    });
+    // Sleeping arrives with the dynamics issue; until then every body is always awake.
+    runStage(profile_, Stage::Sleep, false, [] {});
+    clearForces(bodies_);
+    ++stepCount_;
+    phase_ = Phase::Idle;
+}
+
+}  // namespace physim
