@@ -28,6 +28,7 @@ struct BodyData {
 
     // Cold: material and shape.
     double mass = 0.0;              // kg, 0 when immovable
+    double density = 1.0;           // kg/m^2, for mass when the body becomes dynamic
     double inertia = 0.0;           // kg m^2 about the centre of mass
     double restitution = 0.0;
     double staticFriction = 0.0;

@@ -41,6 +41,7 @@ void validate(const BodyDef& def) {
 // Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape.
 void assignMass(BodyData& b, double mass) {
     b.mass = mass;
+    b.density = mass / b.unitMass.area;
     b.invMass = 1.0 / mass;
     const double density = mass / b.unitMass.area;
     // Inertia about the centre of mass: the shape's own second moment plus the parallel-axis term for a
@@ -107,6 +108,7 @@ BodyId World::createBody(const BodyDef& def) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
+    b.density = def.density;
     if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
 
     ++liveCount_;
@@ -192,6 +194,35 @@ void World::setAngularVelocity(BodyId id, double angularVelocity) {
 }
 
 void World::setUseGravity(BodyId id, bool useGravity) { at(id).useGravity = useGravity; }
+
+void World::setMaterial(BodyId id, double restitution, double staticFriction, double dynamicFriction) {
+    requireInRange("body restitution", restitution, 0.0, 1.0);
+    requireNonNegative("body static friction", staticFriction);
+    requireNonNegative("body dynamic friction", dynamicFriction);
+    BodyData& b = at(id);
+    b.restitution = restitution;
+    b.staticFriction = staticFriction;
+    b.dynamicFriction = dynamicFriction;
+}
+
+void World::setType(BodyId id, BodyType type) {
+    BodyData& b = at(id);
+    if (b.type == type) return;
+    if (b.movable()) --movableCount_;
+    if (b.type == BodyType::Dynamic) --dynamicCount_;
+    b.type = type;
+    if (b.movable()) ++movableCount_;
+    if (type == BodyType::Dynamic) {
+        ++dynamicCount_;
+        assignMass(b, b.density * b.unitMass.area);
+    } else {
+        b.mass = b.inertia = b.invMass = b.invInertia = 0.0;
+    }
+    if (type == BodyType::Static) {
+        b.v.setZero();
+        b.w = 0.0;
+    }
+}
 
 void World::setMass(BodyId id, double mass) {
     requirePositive("body mass", mass);

@@ -59,6 +59,11 @@ public:
     void setVelocity(BodyId id, const Vec2& velocity);
     void setAngularVelocity(BodyId id, double angularVelocity);
     void setUseGravity(BodyId id, bool useGravity);
+    /// Restitution in [0, 1], friction coefficients >= 0 (throws std::invalid_argument naming a bad value).
+    void setMaterial(BodyId id, double restitution, double staticFriction, double dynamicFriction);
+    /// Changes a body's type. Becoming static or kinematic stops it and makes it immovable by contacts;
+    /// becoming dynamic gives it the mass of its shape at its density.
+    void setType(BodyId id, BodyType type);
     /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
     void setMass(BodyId id, double mass);
 

@@ -1,0 +1,68 @@
+#pragma once
+// The paper's RigidBody (section 5.1): a behavior that is an entity's handle to its body in the World.
+// Before the entity is added to a simulation the settings are kept in a BodyDef; afterwards every read and
+// write goes to the world. SI units: kg, m, s, rad.
+
+#include "physim/core/Body.hpp"
+#include "physim/core/Math.hpp"
+#include "physim/framework/Behavior.hpp"
+
+namespace physim {
+
+class World;
+
+/// How addForce changes the body (the paper's ForceMode, as in Unity):
+/// ACCELERATION m/s^2 and FORCE N act over the step (accumulated, cleared after it);
+/// IMPULSE N s and VELOCITY m/s change the velocity at once (VELOCITY ignores mass).
+enum class ForceMode { ACCELERATION, FORCE, IMPULSE, VELOCITY };
+
+class RigidBody : public Behavior {
+public:
+    explicit RigidBody(Entity* parent = nullptr);
+
+    double mass() const;         ///< kg; 0 means static (immovable), as in the paper
+    double inv_mass() const;     ///< 1/kg; 0 for static bodies
+    double inertia() const;      ///< kg m^2 about the centre of mass; 0 for static bodies
+    double inv_inertia() const;
+    /// mass > 0: dynamic with that mass (inertia follows the shape). mass == 0: static (immovable), as in the
+    /// paper. Throws std::invalid_argument for negative or NaN mass.
+    void setMass(double mass);
+    /// kg/m^2, > 0: mass and inertia from the shape's area and second moment.
+    void setDensity(double density);
+
+    Vec2 velocity() const;          ///< m/s
+    void setVelocity(const Vec2& velocity);
+    double angularVelocity() const; ///< rad/s, counter-clockwise
+    void setAngularVelocity(double angularVelocity);
+    bool useGravity() const;
+    void setUseGravity(bool useGravity);
+    double restitution() const;
+    void setRestitution(double restitution);  ///< [0, 1]; a pair uses min(eA, eB)
+    double staticFriction() const;
+    void setStaticFriction(double mu);        ///< >= 0; a pair uses the average
+    double dynamicFriction() const;
+    void setDynamicFriction(double mu);       ///< >= 0; a pair uses the average
+
+    void addForce(const Vec2& value, ForceMode mode = ForceMode::FORCE);
+
+    /// The world body, once the entity has been added to a simulation; null before.
+    BodyId bodyId() const { return id_; }
+    bool attached() const { return world_ != nullptr; }
+
+    /// The collision geometry the body's mass and inertia come from (Object sets it from its shape).
+    void setGeometry(const Geometry& shape);
+    /// Used by the entity that owns this body (Object): create the body in `world`.
+    void attach(World& world);
+    void detach();
+    Vec2 position() const;
+    double angle() const;
+    void setPose(const Vec2& position, double angle);
+
+private:
+    World* world_ = nullptr;  // non-owning; the simulation owns the world and outlives attachment
+    BodyId id_;
+    BodyDef def_;
+    double massOverride_ = -1.0;  // kg set before attach; < 0: from density
+};
+
+}  // namespace physim

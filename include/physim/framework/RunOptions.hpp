@@ -1,0 +1,35 @@
+#pragma once
+// Command-line options shared by every physim program (examples included).
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace physim {
+
+struct RunOptions {
+    bool help = false;
+    bool headless = false;             ///< no window, no display needed
+    std::optional<double> seconds;     ///< simulated seconds to run; headless default 10, window: until closed
+    std::optional<std::string> outDir; ///< where summary.json and the graphs' files go
+    std::optional<double> hz;          ///< physics rate; the simulation's own default otherwise (40 Hz)
+    int maxStepsPerFrame = 8;          ///< cap on catch-up steps per window frame
+    int width = 1280;                  ///< window size, pixels
+    int height = 720;
+
+    static constexpr double defaultHeadlessSeconds = 10.0;
+};
+
+/// A command line that cannot be run; what() names the offending argument and value. Exit code 2.
+class UsageError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Parses the arguments after the program name. Throws UsageError.
+RunOptions parseRunOptions(const std::vector<std::string>& args);
+std::string usage(std::string_view program, std::string_view title);
+
+}  // namespace physim

@@ -1,0 +1,94 @@
+#pragma once
+// The paper's Simulation (section 3): subclass it, create entities in onCreate, react in the other hooks.
+// It owns its entities, its physics World and its GraphsManager. A Runner drives it (window or headless).
+
+#include "physim/core/World.hpp"
+#include "physim/framework/Entity.hpp"
+#include "physim/framework/View.hpp"
+#include "physim/graphs/GraphsManager.hpp"
+
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <SFML/Window/Event.hpp>
+
+namespace sf {
+class RenderWindow;
+}  // namespace sf
+
+namespace physim {
+
+class Simulation {
+public:
+    double time = 0.0;             ///< simulated seconds since the start (advances by one fixed step at a time)
+    GraphsManager graphsManager;
+    bool start = false;            ///< true once onCreate has run
+    bool paused = false;           ///< no fixed steps while paused (P toggles it)
+    View view;                     ///< what the window shows: centre and zoom, in metres
+
+    Simulation();
+    virtual ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    // The paper's hooks, called by the runner.
+    virtual void onCreate() {}
+    virtual void onEvent(sf::Event) {}
+    virtual void onUpdate() {}
+    virtual void onDrawGraphs() {}
+    virtual void onRender(sf::RenderWindow*) {}
+    /// Shown in the window title and --help.
+    virtual std::string title() const { return "physim"; }
+
+    /// Takes ownership, gives the entity the next id (1, 2, ...) and creates its physics body. Throws
+    /// std::invalid_argument for a null entity, std::logic_error for one already in a simulation.
+    Entity& addEntity(std::unique_ptr<Entity> entity);
+    template <class T>
+    T& addEntity(std::unique_ptr<T> entity) {
+        static_assert(std::is_base_of_v<Entity, T>, "T must derive from physim::Entity");
+        T* raw = entity.get();
+        addEntity(std::unique_ptr<Entity>(std::move(entity)));
+        return *raw;
+    }
+    /// Constructs a T from the arguments and adds it.
+    template <class T, class... Args>
+    T& spawn(Args&&... args) {
+        return addEntity(std::make_unique<T>(std::forward<Args>(args)...));
+    }
+    /// Releases an entity (its body leaves the world). Throws std::invalid_argument for an unknown id and
+    /// std::logic_error while the entities are being iterated (inside a phase).
+    std::unique_ptr<Entity> removeEntity(int id);
+    Entity* findEntity(int id) const;
+    const std::vector<std::unique_ptr<Entity>>& entities() const { return entities_; }
+
+    World& world() { return world_; }
+    const World& world() const { return world_; }
+
+    /// Fixed physics rate in Hz (default 40, the paper's 1/40 s step). Throws for hz <= 0, NaN or > 10000.
+    void setPhysicsRate(double hz);
+    double physicsRate() const { return 1.0 / fixedTimeStep_; }
+    double fixedTimeStep() const { return fixedTimeStep_; }
+
+    /// One fixed step: every entity's beforeFixedUpdate, the world's forces; the world's collision
+    /// detection and response, every entity's checkCollisions; the world's integration, every entity's
+    /// fixedUpdate. Advances `time` by fixedTimeStep().
+    void fixedStep();
+    /// Per frame, before the fixed steps: every entity's update() and then its behaviors' update().
+    void updateEntities();
+    void renderEntities(sf::RenderWindow* window);
+
+private:
+    template <class Phase>
+    void forEachEntity(Phase&& phase);
+
+    World world_;
+    std::vector<std::unique_ptr<Entity>> entities_;
+    int nextId_ = 1;
+    int iterating_ = 0;  // > 0 while a phase walks the entity list
+    double fixedTimeStep_ = 1.0 / 40.0;
+};
+
+}  // namespace physim

@@ -1,0 +1,142 @@
+#include "physim/framework/RigidBody.hpp"
+
+#include "physim/core/Validate.hpp"
+#include "physim/core/World.hpp"
+
+#include <stdexcept>
+
+namespace physim {
+
+RigidBody::RigidBody(Entity* parent) : Behavior(parent) {}
+
+double RigidBody::mass() const {
+    if (world_) return world_->mass(id_);
+    if (def_.type != BodyType::Dynamic) return 0.0;
+    return massOverride_ > 0.0 ? massOverride_ : def_.density * computeMassProperties(def_.shape).area;
+}
+double RigidBody::inv_mass() const {
+    if (world_) return world_->inverseMass(id_);
+    const double m = mass();
+    return m > 0.0 ? 1.0 / m : 0.0;
+}
+double RigidBody::inertia() const {
+    if (world_) return world_->inertia(id_);
+    if (def_.type != BodyType::Dynamic || def_.fixedRotation) return 0.0;
+    const MassProperties unit = computeMassProperties(def_.shape);
+    return mass() / unit.area * unit.secondMoment + mass() * unit.centroid.squaredNorm();
+}
+double RigidBody::inv_inertia() const {
+    if (world_) return world_->inverseInertia(id_);
+    const double i = inertia();
+    return i > 0.0 ? 1.0 / i : 0.0;
+}
+
+void RigidBody::setGeometry(const Geometry& shape) {
+    if (world_) throw std::logic_error("physim: a body's shape cannot change after it was added to a simulation");
+    validate(shape);
+    def_.shape = shape;
+}
+
+void RigidBody::setMass(double mass) {
+    requireNonNegative("rigid body mass", mass);
+    if (world_) {
+        world_->setType(id_, mass == 0.0 ? BodyType::Static : BodyType::Dynamic);
+        if (mass > 0.0) world_->setMass(id_, mass);
+        return;
+    }
+    def_.type = mass == 0.0 ? BodyType::Static : BodyType::Dynamic;
+    massOverride_ = mass;
+}
+
+void RigidBody::setDensity(double density) {
+    requirePositive("rigid body density", density);
+    if (world_) {
+        const MassProperties unit = computeMassProperties(world_->shape(id_));
+        world_->setType(id_, BodyType::Dynamic);
+        world_->setMass(id_, density * unit.area);
+        return;
+    }
+    def_.type = BodyType::Dynamic;
+    def_.density = density;
+    massOverride_ = -1.0;
+}
+
+Vec2 RigidBody::velocity() const { return world_ ? world_->velocity(id_) : def_.velocity; }
+void RigidBody::setVelocity(const Vec2& v) {
+    requireFinite("rigid body velocity", v);
+    if (world_) world_->setVelocity(id_, v);
+    else def_.velocity = v;
+}
+double RigidBody::angularVelocity() const { return world_ ? world_->angularVelocity(id_) : def_.angularVelocity; }
+void RigidBody::setAngularVelocity(double w) {
+    requireFinite("rigid body angular velocity", w);
+    if (world_) world_->setAngularVelocity(id_, w);
+    else def_.angularVelocity = w;
+}
+bool RigidBody::useGravity() const { return world_ ? world_->useGravity(id_) : def_.useGravity; }
+void RigidBody::setUseGravity(bool g) {
+    if (world_) world_->setUseGravity(id_, g);
+    else def_.useGravity = g;
+}
+
+double RigidBody::restitution() const { return world_ ? world_->restitution(id_) : def_.restitution; }
+double RigidBody::staticFriction() const { return world_ ? world_->staticFriction(id_) : def_.staticFriction; }
+double RigidBody::dynamicFriction() const { return world_ ? world_->dynamicFriction(id_) : def_.dynamicFriction; }
+
+void RigidBody::setRestitution(double e) {
+    requireInRange("rigid body restitution", e, 0.0, 1.0);
+    if (world_) world_->setMaterial(id_, e, staticFriction(), dynamicFriction());
+    else def_.restitution = e;
+}
+void RigidBody::setStaticFriction(double mu) {
+    requireNonNegative("rigid body static friction", mu);
+    if (world_) world_->setMaterial(id_, restitution(), mu, dynamicFriction());
+    else def_.staticFriction = mu;
+}
+void RigidBody::setDynamicFriction(double mu) {
+    requireNonNegative("rigid body dynamic friction", mu);
+    if (world_) world_->setMaterial(id_, restitution(), staticFriction(), mu);
+    else def_.dynamicFriction = mu;
+}
+
+void RigidBody::addForce(const Vec2& value, ForceMode mode) {
+    requireFinite("addForce value", value);
+    if (!world_) throw std::logic_error("physim: addForce needs the entity to be added to a simulation first");
+    if (world_->type(id_) != BodyType::Dynamic) return;  // static bodies ignore forces (infinite mass)
+    switch (mode) {
+        case ForceMode::ACCELERATION: world_->applyForce(id_, world_->mass(id_) * value); break;
+        case ForceMode::FORCE: world_->applyForce(id_, value); break;
+        case ForceMode::IMPULSE: world_->applyLinearImpulse(id_, value); break;
+        case ForceMode::VELOCITY: world_->setVelocity(id_, world_->velocity(id_) + value); break;
+    }
+}
+
+void RigidBody::attach(World& world) {
+    if (world_) throw std::logic_error("physim: rigid body is already attached to a world");
+    id_ = world.createBody(def_);
+    world_ = &world;
+    if (def_.type == BodyType::Dynamic && massOverride_ > 0.0) world.setMass(id_, massOverride_);
+}
+
+void RigidBody::detach() {
+    if (!world_) return;
+    def_.position = world_->position(id_);
+    def_.angle = world_->angle(id_);
+    def_.velocity = world_->velocity(id_);
+    def_.angularVelocity = world_->angularVelocity(id_);
+    world_->destroyBody(id_);
+    world_ = nullptr;
+    id_ = BodyId{};
+}
+
+Vec2 RigidBody::position() const { return world_ ? world_->position(id_) : def_.position; }
+double RigidBody::angle() const { return world_ ? world_->angle(id_) : def_.angle; }
+void RigidBody::setPose(const Vec2& position, double angle) {
+    requireFinite("position", position);
+    requireFinite("rotation", angle);
+    if (world_) world_->setTransform(id_, position, angle);
+    def_.position = position;
+    def_.angle = angle;
+}
+
+}  // namespace physim

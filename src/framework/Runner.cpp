@@ -1,0 +1,170 @@
+#include "physim/framework/Runner.hpp"
+
+#include "physim/framework/Summary.hpp"
+
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Window/Event.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+namespace physim {
+
+Runner::Runner(SimulationFactory factory, RunOptions options)
+    : factory_(std::move(factory)), options_(std::move(options)), accumulator_(1.0 / 40.0, options_.maxStepsPerFrame) {
+    if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
+}
+
+Runner::~Runner() = default;
+
+Simulation& Runner::simulation() {
+    if (!simulation_) throw std::logic_error("physim: Runner has no simulation yet (call restart or run)");
+    return *simulation_;
+}
+
+void Runner::restart() {
+    simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
+    simulation_ = factory_();
+    if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
+    Simulation& sim = *simulation_;
+    sim.graphsManager.setLive(!options_.headless);
+    if (options_.hz) sim.setPhysicsRate(*options_.hz);
+    sim.onCreate();
+    if (options_.hz) sim.setPhysicsRate(*options_.hz);  // the command line wins over onCreate's choice
+    sim.start = true;
+    accumulator_ = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
+}
+
+int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
+    Simulation& sim = simulation();
+    sim.onUpdate();
+    sim.updateEntities();
+    int steps = 0;
+    if (!sim.paused) {
+        steps = accumulator_.advance(frameSeconds);
+        for (int i = 0; i < steps; ++i) sim.fixedStep();
+    }
+    sim.onDrawGraphs();
+    if (window) {
+        window->clear(sf::Color(235, 235, 235));
+        sim.renderEntities(window);
+        sim.onRender(window);
+    }
+    sim.graphsManager.render();
+    if (window) window->display();
+    return steps;
+}
+
+void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
+    Simulation& sim = simulation();
+    switch (event.type) {
+        case sf::Event::Closed: quit_ = true; break;
+        case sf::Event::Resized:
+            if (window)
+                window->setView(sf::View(sf::FloatRect(0.f, 0.f, static_cast<float>(event.size.width),
+                                                       static_cast<float>(event.size.height))));
+            break;
+        case sf::Event::MouseWheelScrolled:
+            sim.view.zoom(event.mouseWheelScroll.delta > 0 ? 1.1 : 1.0 / 1.1);
+            break;
+        case sf::Event::KeyPressed:
+            sim.onEvent(event);
+            if (event.key.code == sf::Keyboard::Space) restart();
+            else if (event.key.code == sf::Keyboard::P) sim.paused = !sim.paused;
+            else if (event.key.code == sf::Keyboard::Escape) quit_ = true;
+            break;
+        default: break;
+    }
+}
+
+void Runner::writeOutputs(const std::string& directory) const {
+    if (!simulation_) throw std::logic_error("physim: nothing to write before the simulation started");
+    std::filesystem::create_directories(directory);
+    const std::filesystem::path path = std::filesystem::path(directory) / "summary.json";
+    std::ofstream out(path);
+    out << summaryJson(*simulation_);
+    if (!out) throw std::runtime_error("physim: cannot write " + path.string());
+    simulation_->graphsManager.writeFiles(directory);
+}
+
+int Runner::run() {
+    const int code = options_.headless ? runHeadless() : runWindow();
+    if (options_.outDir) writeOutputs(*options_.outDir);
+    return code;
+}
+
+int Runner::runHeadless() {
+    restart();
+    const double seconds = options_.seconds.value_or(RunOptions::defaultHeadlessSeconds);
+    // One fixed step per frame: the frame loop and every hook run exactly as in a window, with no clock.
+    const double dt = simulation().fixedTimeStep();
+    const auto frames = static_cast<long long>(std::ceil(seconds / dt - 1e-9));
+    for (long long i = 0; i < frames && !quit_; ++i) frame(simulation().fixedTimeStep(), nullptr);
+    return 0;
+}
+
+int Runner::runWindow() {
+    sf::ContextSettings context;
+    context.antialiasingLevel = 4;
+    sf::RenderWindow window(sf::VideoMode(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)),
+                            "physim", sf::Style::Default, context);
+    window.setFramerateLimit(60);
+    restart();
+    sf::Clock frameClock, titleClock;
+    int framesSinceTitle = 0;
+    while (window.isOpen() && !quit_) {
+        sf::Event event;
+        while (window.pollEvent(event)) handleEvent(event, &window);
+        if (quit_) break;
+        frame(frameClock.restart().asSeconds(), &window);
+        ++framesSinceTitle;
+        const double sinceTitle = titleClock.getElapsedTime().asSeconds();
+        if (sinceTitle >= 0.25) {
+            const Simulation& sim = simulation();
+            char title[256];
+            std::snprintf(title, sizeof title, "%s | t = %.2f s | physics %.0f Hz | %.0f FPS%s", sim.title().c_str(),
+                          sim.time, sim.physicsRate(), framesSinceTitle / sinceTitle, sim.paused ? " | PAUSED" : "");
+            window.setTitle(title);
+            titleClock.restart();
+            framesSinceTitle = 0;
+        }
+        if (options_.seconds && simulation().time >= *options_.seconds) break;
+    }
+    return 0;
+}
+
+int runMain(int argc, const char* const* argv, const SimulationFactory& factory) {
+    const std::string program = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : "physim";
+    RunOptions options;
+    try {
+        options = parseRunOptions(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+    } catch (const UsageError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 2;
+    }
+    try {
+        if (options.help) {
+            std::cout << usage(program, factory()->title());
+            return 0;
+        }
+        if (!options.headless) {
+            const char* display = std::getenv("DISPLAY");
+            if (!display || !*display) {
+                std::cerr << program << ": no display to open a window on; use --headless (or run under xvfb-run)\n";
+                return 2;
+            }
+        }
+        Runner runner(factory, options);
+        return runner.run();
+    } catch (const std::exception& e) {
+        std::cerr << program << ": error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace physim

@@ -1,0 +1,87 @@
+#include "physim/framework/Simulation.hpp"
+
+#include "physim/core/Validate.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace physim {
+
+Simulation::Simulation() = default;
+
+Simulation::~Simulation() {
+    // Bodies are removed while the world still exists (it is destroyed after the entities otherwise).
+    for (auto& e : entities_) e->onDetach(world_);
+}
+
+Entity& Simulation::addEntity(std::unique_ptr<Entity> entity) {
+    if (!entity) throw std::invalid_argument("physim: addEntity got a null entity");
+    if (entity->simulation_ != nullptr)
+        throw std::logic_error("physim: entity " + std::to_string(entity->id()) + " is already in a simulation");
+    entity->onAttach(world_);  // may throw (bad body settings): nothing has changed yet
+    entity->id_ = nextId_++;
+    entity->simulation_ = this;
+    entities_.push_back(std::move(entity));
+    return *entities_.back();
+}
+
+std::unique_ptr<Entity> Simulation::removeEntity(int id) {
+    if (iterating_ > 0)
+        throw std::logic_error("physim: removeEntity(" + std::to_string(id) + ") during an entity phase");
+    for (auto it = entities_.begin(); it != entities_.end(); ++it) {
+        if ((*it)->id() != id) continue;
+        std::unique_ptr<Entity> e = std::move(*it);
+        entities_.erase(it);
+        e->onDetach(world_);
+        e->simulation_ = nullptr;
+        return e;
+    }
+    throw std::invalid_argument("physim: no entity with id " + std::to_string(id));
+}
+
+Entity* Simulation::findEntity(int id) const {
+    for (const auto& e : entities_)
+        if (e->id() == id) return e.get();
+    return nullptr;
+}
+
+void Simulation::setPhysicsRate(double hz) {
+    requireInRange("physics rate (Hz)", hz, 1e-3, 1e4);
+    fixedTimeStep_ = 1.0 / hz;
+}
+
+// Walks by index, so entities added during a phase are appended safely (and visited in this pass).
+template <class Phase>
+void Simulation::forEachEntity(Phase&& phase) {
+    ++iterating_;
+    try {
+        for (std::size_t i = 0; i < entities_.size(); ++i) phase(*entities_[i]);
+    } catch (...) {
+        --iterating_;
+        throw;
+    }
+    --iterating_;
+}
+
+void Simulation::fixedStep() {
+    forEachEntity([](Entity& e) { e.beforeFixedUpdate(); });
+    world_.beginStep(fixedTimeStep_);
+    world_.collide();
+    forEachEntity([](Entity& e) { e.checkCollisions(); });
+    world_.finishStep();
+    forEachEntity([](Entity& e) { e.fixedUpdate(); });
+    time += fixedTimeStep_;
+}
+
+void Simulation::updateEntities() {
+    forEachEntity([](Entity& e) {
+        e.update();
+        for (Behavior* b : e.behaviors()) b->update();
+    });
+}
+
+void Simulation::renderEntities(sf::RenderWindow* window) {
+    forEachEntity([window](Entity& e) { e.render(window); });
+}
+
+}  // namespace physim

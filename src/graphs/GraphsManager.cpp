@@ -1,0 +1,195 @@
+#include "physim/graphs/GraphsManager.hpp"
+
+#include <TCanvas.h>
+#include <TError.h>
+#include <TGraph.h>
+#include <TROOT.h>
+#include <TSystem.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <stdexcept>
+
+namespace physim {
+
+struct GraphsManager::Graph {
+    std::string title;
+    graph_modifier modifier;
+    GraphMode mode = GraphMode::DEFAULT;
+    std::vector<std::pair<double, double>> points;
+    std::size_t skipped = 0;
+};
+
+// ROOT objects. The canvas is deleted before the graphs it shows; the pads do not own the graphs.
+struct GraphsManager::Root {
+    std::vector<std::unique_ptr<TGraph>> graphs;
+    std::unique_ptr<TCanvas> canvas;
+    std::chrono::steady_clock::time_point lastRefresh{};
+
+    ~Root() { canvas.reset(); }
+};
+
+namespace {
+
+const char* drawOption(GraphMode mode) { return mode == GraphMode::WITH_LINES ? "APL" : "AP"; }
+
+// Pads in a grid close to the canvas's aspect ratio.
+std::pair<int, int> padGrid(std::size_t n) {
+    const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
+    const int rows = static_cast<int>((n + cols - 1) / cols);
+    return {cols, rows};
+}
+
+std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, int x, int y, int w, int h,
+                                    const std::vector<std::unique_ptr<TGraph>>& graphs,
+                                    const std::vector<GraphMode>& modes) {
+    char name[96];  // unique per manager and purpose: ROOT finds (and replaces) canvases by name
+    std::snprintf(name, sizeof name, "physim_graphs_%s_%p", purpose, owner);
+    auto canvas = std::make_unique<TCanvas>(name, "physim graphs", x, y, w, h);
+    const auto [cols, rows] = padGrid(graphs.size());
+    if (graphs.size() > 1) canvas->Divide(cols, rows);
+    for (std::size_t i = 0; i < graphs.size(); ++i) {
+        canvas->cd(static_cast<int>(i) + 1);
+        gPad->SetGrid();
+        // An empty TGraph draws nothing; it appears once it has points and the pad is refreshed.
+        graphs[i]->Draw(drawOption(modes[i]));
+    }
+    return canvas;
+}
+
+}  // namespace
+
+GraphsManager::GraphsManager() = default;
+GraphsManager::~GraphsManager() = default;
+
+void GraphsManager::setCanvasSize(int width, int height) {
+    if (width <= 0 || height <= 0)
+        throw std::invalid_argument("physim: canvas size must be positive, got " + std::to_string(width) + " x " +
+                                    std::to_string(height));
+    width_ = width;
+    height_ = height;
+    if (root_ && root_->canvas) root_->canvas->SetCanvasSize(width, height);
+}
+
+void GraphsManager::setCanvasPosition(int x, int y) {
+    x_ = x;
+    y_ = y;
+    if (root_ && root_->canvas) root_->canvas->SetWindowPosition(x, y);
+}
+
+void GraphsManager::setLive(bool live, double refreshHz) {
+    if (built_) throw std::logic_error("physim: GraphsManager::setLive must be called before build()");
+    if (!(refreshHz > 0.0 && std::isfinite(refreshHz)))
+        throw std::invalid_argument("physim: graph refresh rate must be > 0 Hz, got " + std::to_string(refreshHz));
+    live_ = live;
+    refreshHz_ = refreshHz;
+}
+
+void GraphsManager::addGraph(const std::string& title, graph_modifier modifier, GraphMode mode) {
+    if (built_) throw std::logic_error("physim: addGraph(\"" + title + "\") after build()");
+    graphs_.push_back(Graph{title, std::move(modifier), mode, {}, 0});
+}
+
+void GraphsManager::build() {
+    if (built_) throw std::logic_error("physim: GraphsManager::build() called twice");
+    built_ = true;
+    if (graphs_.empty()) return;
+    if (!live_) gROOT->SetBatch(kTRUE);  // no window, no display needed
+    root_ = std::make_unique<Root>();
+    for (const Graph& g : graphs_) {
+        auto tg = std::make_unique<TGraph>();
+        tg->SetTitle(g.title.c_str());
+        tg->SetMarkerStyle(20);
+        tg->SetMarkerSize(0.5);
+        if (g.modifier) g.modifier(tg.get());
+        root_->graphs.push_back(std::move(tg));
+    }
+    if (live_) {
+        std::vector<GraphMode> modes;
+        for (const Graph& g : graphs_) modes.push_back(g.mode);
+        root_->canvas = makeCanvas(this, "live", x_, y_, width_, height_, root_->graphs, modes);
+    }
+}
+
+const GraphsManager::Graph& GraphsManager::graph(int i) const {
+    if (i < 0 || static_cast<std::size_t>(i) >= graphs_.size())
+        throw std::out_of_range("physim: graph index " + std::to_string(i) + " is not in [0, " +
+                                std::to_string(graphs_.size()) + ")");
+    return graphs_[static_cast<std::size_t>(i)];
+}
+
+void GraphsManager::addPoint(int i, double x, double y) {
+    if (!built_) throw std::logic_error("physim: addPoint before GraphsManager::build()");
+    Graph& g = const_cast<Graph&>(graph(i));
+    if (!std::isfinite(x) || !std::isfinite(y)) {
+        ++g.skipped;
+        return;
+    }
+    g.points.emplace_back(x, y);
+    TGraph& tg = *root_->graphs[static_cast<std::size_t>(i)];
+    tg.SetPoint(tg.GetN(), x, y);
+}
+
+void GraphsManager::render() {
+    if (!live_ || !root_ || !root_->canvas) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - root_->lastRefresh < std::chrono::duration<double>(1.0 / refreshHz_)) return;
+    root_->lastRefresh = now;
+    for (std::size_t i = 0; i < root_->graphs.size(); ++i) {
+        root_->canvas->cd(static_cast<int>(i) + 1);
+        gPad->Modified();
+    }
+    root_->canvas->Update();
+    gSystem->ProcessEvents();
+}
+
+void GraphsManager::reset() {
+    for (Graph& g : graphs_) {
+        g.points.clear();
+        g.skipped = 0;
+    }
+    if (root_)
+        for (auto& tg : root_->graphs) tg->Set(0);
+}
+
+std::size_t GraphsManager::graphCount() const { return graphs_.size(); }
+const std::string& GraphsManager::title(int i) const { return graph(i).title; }
+const std::vector<std::pair<double, double>>& GraphsManager::points(int i) const { return graph(i).points; }
+std::size_t GraphsManager::skippedPoints(int i) const { return graph(i).skipped; }
+
+std::vector<std::string> GraphsManager::writeFiles(const std::string& directory) const {
+    namespace fs = std::filesystem;
+    fs::create_directories(directory);
+    std::vector<std::string> written;
+    for (std::size_t i = 0; i < graphs_.size(); ++i) {
+        const fs::path path = fs::path(directory) / ("graph_" + std::to_string(i) + ".csv");
+        std::ofstream out(path);
+        if (!out) throw std::runtime_error("physim: cannot write " + path.string());
+        out << "# " << graphs_[i].title << "\n" << "x,y\n" << std::setprecision(17);
+        for (const auto& [x, y] : graphs_[i].points) out << x << ',' << y << '\n';
+        written.push_back(path.string());
+    }
+    if (root_ && !root_->graphs.empty()) {
+        const bool wasBatch = gROOT->IsBatch();
+        gROOT->SetBatch(kTRUE);
+        std::vector<GraphMode> modes;
+        for (const Graph& g : graphs_) modes.push_back(g.mode);
+        // A separate batch canvas, so a live window is left as it is.
+        auto canvas = makeCanvas(this, "export", 0, 0, width_, height_, root_->graphs, modes);
+        const fs::path png = fs::path(directory) / "graphs.png";
+        const Int_t ignoreLevel = gErrorIgnoreLevel;
+        gErrorIgnoreLevel = kWarning;  // no "file has been created" line on every run
+        canvas->SaveAs(png.string().c_str());
+        gErrorIgnoreLevel = ignoreLevel;
+        canvas.reset();
+        gROOT->SetBatch(wasBatch);
+        written.push_back(png.string());
+    }
+    return written;
+}
+
+}  // namespace physim

@@ -1,0 +1,88 @@
+// GraphsManager headless: what is written is what was added; bad calls get clear errors.
+
+#include <physim/graphs/GraphsManager.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace physim {
+namespace {
+
+std::vector<std::string> lines(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::string> out;
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+}
+
+TEST(GraphsManager, EachGraphIsItsOwnAndFilesMatchThePoints) {
+    GraphsManager gm;
+    gm.addGraph("Speed;t (s);v (m/s)");
+    gm.addGraph("Height;t (s);y (m)", {}, GraphMode::WITH_LINES);
+    gm.build();
+    for (int i = 0; i < 5; ++i) gm.addPoint(0, i, 2.0 * i);
+    gm.addPoint(1, 0.5, -1.25);
+    EXPECT_EQ(gm.points(0).size(), 5u);
+    EXPECT_EQ(gm.points(1).size(), 1u) << "graphs must not alias each other";
+
+    const auto dir = std::filesystem::temp_directory_path() / "physim_graphs_test";
+    std::filesystem::remove_all(dir);
+    const auto written = gm.writeFiles(dir.string());
+    ASSERT_EQ(written.size(), 3u);
+    const auto g0 = lines((dir / "graph_0.csv").string());
+    ASSERT_EQ(g0.size(), 2u + 5u);
+    EXPECT_EQ(g0[0], "# Speed;t (s);v (m/s)");
+    EXPECT_EQ(g0[1], "x,y");
+    EXPECT_EQ(g0[4], "2,4");
+    const auto g1 = lines((dir / "graph_1.csv").string());
+    ASSERT_EQ(g1.size(), 3u);
+    EXPECT_EQ(g1[2], "0.5,-1.25");
+    EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u) << "a PNG drawn in ROOT's batch mode";
+    std::filesystem::remove_all(dir);
+}
+
+TEST(GraphsManager, NonFinitePointsAreSkippedAndCounted) {
+    GraphsManager gm;
+    gm.addGraph("g");
+    gm.build();
+    gm.addPoint(0, 1.0, NAN);
+    gm.addPoint(0, INFINITY, 1.0);
+    gm.addPoint(0, 1.0, 1.0);
+    EXPECT_EQ(gm.points(0).size(), 1u);
+    EXPECT_EQ(gm.skippedPoints(0), 2u);
+    gm.reset();
+    EXPECT_TRUE(gm.points(0).empty());
+    EXPECT_EQ(gm.graphCount(), 1u);
+}
+
+TEST(GraphsManager, MisuseGetsClearErrors) {
+    GraphsManager gm;
+    gm.addGraph("g");
+    EXPECT_THROW(gm.addPoint(0, 1.0, 1.0), std::logic_error) << "before build";
+    gm.build();
+    EXPECT_THROW(gm.addPoint(1, 1.0, 1.0), std::out_of_range);
+    EXPECT_THROW(gm.addPoint(-1, 1.0, 1.0), std::out_of_range);
+    EXPECT_THROW(gm.addGraph("late"), std::logic_error);
+    EXPECT_THROW(gm.build(), std::logic_error);
+    EXPECT_THROW(gm.setCanvasSize(0, 100), std::invalid_argument);
+    gm.render();  // headless: nothing to refresh, no crash
+}
+
+TEST(GraphsManager, ModifierStylesTheGraph) {
+    GraphsManager gm;
+    int calls = 0;
+    gm.addGraph("g", [&calls](TGraph* g) {
+        ASSERT_NE(g, nullptr);
+        ++calls;
+    });
+    gm.build();
+    EXPECT_EQ(calls, 1);
+}
+
+}  // namespace
+}  // namespace physim

@@ -1,0 +1,22 @@
+# cmake -DBUILD_DIR=... -DWORK_DIR=... -DSOURCE_DIR=... -P InstallTest.cmake
+# Installs the build into a scratch prefix, then configures, builds and runs the consumer project against it.
+file(REMOVE_RECURSE "${WORK_DIR}")
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix"
+  RESULT_VARIABLE rc OUTPUT_QUIET)
+if(rc)
+  message(FATAL_ERROR "install failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/consumer" -B "${WORK_DIR}/consumer"
+  -G Ninja -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix -DROOT_DIR=${ROOT_DIR} RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "find_package(physim) from the installed tree failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK_DIR}/consumer" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building against the installed physim failed: ${rc}")
+endif()
+execute_process(COMMAND "${WORK_DIR}/consumer/consumer" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the consumer program failed: ${rc}")
+endif()
+file(REMOVE_RECURSE "${WORK_DIR}")

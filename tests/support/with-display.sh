@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Runs a command with an X display: the current one if it answers, else a private Xvfb (xvfb-run).
+set -euo pipefail
+if [ -n "${DISPLAY:-}" ] && command -v xdpyinfo >/dev/null 2>&1 && xdpyinfo >/dev/null 2>&1; then
+  exec "$@"
+fi
+if ! command -v xvfb-run >/dev/null 2>&1; then
+  echo "with-display.sh: no X display and no xvfb-run (scripts/setup.sh installs xvfb)" >&2
+  exit 1
+fi
+exec xvfb-run -a -s "-screen 0 1280x720x24" "$@"
