@@ -61,6 +61,8 @@ void checkConvexCounterClockwise(const Vec2* v, int count, const char* what) {
         upper = upper.cwiseMax(v[i]);
     }
     const double size = (upper - lower).norm();
+    if (!std::isfinite(size))  // squared lengths overflow: every later check would see NaN
+        fail(what, "is too large: its extent " + show(upper - lower) + " m overflows squared lengths");
     for (int i = 0; i < count; ++i)
         for (int j = i + 1; j < count; ++j)
             if ((v[i] - v[j]).norm() <= kCoincident * size)

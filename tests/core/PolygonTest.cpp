@@ -70,6 +70,7 @@ TEST(MakePolygon, BadInputNamesTheProblem) {
     expectRejected({{0, 0}, {1, 0}, {1, NAN}}, "finite");
     expectRejected({{0, 0}, {1, 0}, {INFINITY, 1}}, "finite");
     expectRejected({{0, 0}, {1, 0}, {1, 0}, {0, 1}}, "coincident");
+    expectRejected({{0, 0}, {1e300, 0}, {0, 1e300}}, "too large");
     expectRejected({{0, 0}, {1, 0}, {2, 0}}, "collinear");                   // zero area
     expectRejected({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, "collinear");   // a vertex mid-edge
     expectRejected({{0, 0}, {2, 0}, {1, 0.5}, {2, 2}, {0, 2}}, "convex");    // reflex vertex
