@@ -31,8 +31,10 @@ struct Proxy {
     double lowerX, lowerY, upperX, upperY;  // world box, m
     std::int64_t row;                       // kLargeRow for a large box
     std::uint32_t body;                     // slot index
-    std::uint32_t movable;
+    std::uint32_t flags;                    // kMovable, kSeen
 };
+constexpr std::uint32_t kMovable = 1;  // dynamic or kinematic: may pair with a static body
+constexpr std::uint32_t kSeen = 2;     // already taken from last call's order (repeats are dropped)
 static_assert(sizeof(Proxy) % sizeof(std::uint32_t) == 0, "a proxy fills whole words");
 constexpr std::size_t kProxyWords = sizeof(Proxy) / sizeof(std::uint32_t);
 
@@ -110,7 +112,7 @@ void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pa
         sizeSum += std::max(size.x(), size.y());
         ++live;
         bySlot.set(i, {b.aabb.lower.x(), b.aabb.lower.y(), b.aabb.upper.x(), b.aabb.upper.y(), 0, i,
-                       b.movable() ? 1u : 0u});
+                       b.movable() ? kMovable : 0u});
     }
     scratch[0] = 0;
     if (live < 2) return;
@@ -136,12 +138,18 @@ void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pa
         bySlot.set(i, p);
     }
 
-    // Last call's order, minus slots that died since. Its indices are distinct, so it still holds every live
-    // body iff the counts match; otherwise (bodies added, first call) it is rebuilt and fully sorted.
+    // Last call's order, minus slots that died since (and any repeat, so even a scratch written by someone
+    // else gives the right answer). With distinct live entries it holds every live body iff the counts match;
+    // otherwise (bodies added, first call) it is rebuilt and fully sorted.
     std::size_t kept = 0;
     for (std::size_t k = 0; k < previous; ++k) {
         const std::uint32_t i = order[k];
-        if (i < slots && bySlot[i].body != kDead) order[kept++] = i;
+        if (i >= slots) continue;
+        Proxy p = bySlot[i];
+        if (p.body == kDead || (p.flags & kSeen)) continue;
+        p.flags |= kSeen;  // cleared again as the proxies are copied into sorted order
+        bySlot.set(i, p);
+        order[kept++] = i;
     }
     const bool rebuilt = kept != live;
     if (rebuilt) {
@@ -161,7 +169,11 @@ void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pa
     // The proxies in last call's order: the one random-access pass over the table. Insertion sort then repairs
     // the order on these records, reading memory front to back, and so does the sweep.
     const auto gather = [&] {
-        for (std::size_t k = 0; k < live; ++k) inOrder.set(k, bySlot[order[k]]);
+        for (std::size_t k = 0; k < live; ++k) {
+            Proxy p = bySlot[order[k]];
+            p.flags &= ~kSeen;
+            inOrder.set(k, p);
+        }
     };
     if (rebuilt) fullSort();
     gather();
@@ -194,7 +206,7 @@ void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pa
     while (smallCount < live && inOrder[smallCount].row != kLargeRow) ++smallCount;
 
     const auto consider = [&](const Proxy& a, const Proxy& b) {
-        if ((a.movable || b.movable) && overlaps(a, b))
+        if (((a.flags | b.flags) & kMovable) && overlaps(a, b))
             pairs.emplace_back(std::min(a.body, b.body), std::max(a.body, b.body));
     };
     std::size_t rowStart = 0;

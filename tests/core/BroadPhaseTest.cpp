@@ -119,6 +119,28 @@ TEST(BroadPhase, ReusedScratchFollowsAMovingScene) {
     }
 }
 
+TEST(BroadPhase, AnyScratchContentGivesTheRightPairs) {
+    std::mt19937_64 rng(8);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<BodyData> bodies;
+    for (int i = 0; i < 200; ++i)
+        bodies.push_back(body(makeCircle(0.4), {10.0 * u(rng), 10.0 * u(rng)}, 0.0, BodyType::Dynamic));
+    std::vector<BodyPair> pairs;
+    // An order of the right length that repeats slot 0 and so misses slot 199: counting alone would trust it.
+    std::vector<std::uint32_t> scratch = {200};
+    for (std::uint32_t i = 0; i < 199; ++i) scratch.push_back(i);
+    scratch.push_back(0);
+    findCandidatePairs(bodies, pairs, scratch);
+    EXPECT_EQ(pairs, bruteForce(bodies));
+    // A stale count with out-of-range slots.
+    scratch = {100000, 3, 3, 7, 9999, 1};
+    findCandidatePairs(bodies, pairs, scratch);
+    EXPECT_EQ(pairs, bruteForce(bodies));
+    std::vector<std::uint32_t> empty;
+    findCandidatePairs(bodies, pairs, empty);
+    EXPECT_EQ(pairs, bruteForce(bodies));
+}
+
 TEST(BroadPhase, NeverPairsTwoStaticBodies) {
     std::vector<BodyData> bodies;
     for (int i = 0; i < 10; ++i) bodies.push_back(body(makeBox(1.0, 1.0), {0.1 * i, 0.0}, 0.0, BodyType::Static));
