@@ -92,7 +92,9 @@ void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pa
     pairs.clear();
     const std::size_t slots = bodies.size();
     // Keeps last call's order (at the front) while making room for the proxy tables behind it.
-    const std::size_t previous = scratch.empty() ? 0 : std::min<std::size_t>(scratch[0], scratch.size() - 1);
+    // (At most `slots` entries: the order's room; the body array never shrinks in the World, but stay safe.)
+    const std::size_t previous =
+        scratch.empty() ? 0 : std::min({std::size_t{scratch[0]}, scratch.size() - 1, slots});
     scratch.resize(1 + slots + 2 * slots * kProxyWords);
     std::uint32_t* const order = scratch.data() + 1;
     ProxyTable bySlot(order + slots);
