@@ -2,12 +2,20 @@
 
 #include "physim/core/CircleShape.hpp"
 #include "physim/core/Collide.hpp"
+#include "physim/core/PolygonShape.hpp"
 #include "physim/core/RectangleShape.hpp"
 #include "physim/core/Validate.hpp"
 
-#include <algorithm>
-
 namespace physim {
+namespace {
+
+Polygon rectangle(const Vec2& size) {
+    requirePositive("rectangle width", size.x());
+    requirePositive("rectangle height", size.y());
+    return makeBox(0.5 * size.x(), 0.5 * size.y());
+}
+
+}  // namespace
 
 CollisionShape::CollisionShape(Geometry geometry) : geometry_(std::move(geometry)) { validate(geometry_); }
 
@@ -25,22 +33,7 @@ bool CollisionShape::aabbCollision(const CollisionShape& other) const {
 }
 
 Colliding CollisionShape::satCollision(const CollisionShape& other) const {
-    const Manifold m = collide(geometry_, transform_, other.geometry_, other.transform_);
-    Colliding c;
-    if (m.pointCount == 0) return c;
-    c.collision = true;
-    c.normal = m.normal;
-    c.collidingPoints.contactCount = m.pointCount;
-    c.collidingPoints.pointA = m.points[0].point;
-    if (m.pointCount > 1) c.collidingPoints.pointB = m.points[1].point;
-    double deepest = 0.0, shallowest = -m.points[0].separation;
-    for (int i = 0; i < m.pointCount; ++i) {
-        deepest = std::max(deepest, -m.points[i].separation);
-        shallowest = std::min(shallowest, -m.points[i].separation);
-    }
-    c.penetration = deepest;
-    c.overlap = std::max(shallowest, 0.0);
-    return c;
+    return computeColliding(geometry_, transform_, other.geometry_, other.transform_);
 }
 
 CircleShape::CircleShape(double radius) : CollisionShape(makeCircle(radius)) {}
@@ -48,6 +41,18 @@ CircleShape::CircleShape(double radius) : CollisionShape(makeCircle(radius)) {}
 double CircleShape::radius() const { return std::get<Circle>(geometry()).radius; }
 
 RectangleShape::RectangleShape(const Vec2& size)
-    : CollisionShape(makeBox(0.5 * size.x(), 0.5 * size.y())), size_(size) {}
+    : CollisionShape(rectangle(size)), size_(size) {}
+
+PolygonShape::PolygonShape(const std::vector<Vec2>& points) : CollisionShape(makePolygon(points)) {}
+
+Vec2 PolygonShape::getSize() const {
+    const Aabb local = computeAabb(geometry(), Transform{});
+    return local.upper - local.lower;
+}
+
+std::vector<Vec2> PolygonShape::vertices() const {
+    const auto& p = std::get<Polygon>(geometry());
+    return {p.vertices.begin(), p.vertices.begin() + p.count};
+}
 
 }  // namespace physim

@@ -1,5 +1,7 @@
 #include "physim/core/Geometry.hpp"
 
+#include "PolygonCheck.hpp"
+
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>
@@ -13,22 +15,6 @@ Circle makeCircle(double radius, const Vec2& center) {
     requirePositive("circle radius", radius);
     requireFinite("circle center", center);
     return Circle{center, radius};
-}
-
-Polygon makeBox(double halfWidth, double halfHeight) {
-    requirePositive("box half-width", halfWidth);
-    requirePositive("box half-height", halfHeight);
-    Polygon p;
-    p.count = 4;
-    p.vertices[0] = {-halfWidth, -halfHeight};
-    p.vertices[1] = {halfWidth, -halfHeight};
-    p.vertices[2] = {halfWidth, halfHeight};
-    p.vertices[3] = {-halfWidth, halfHeight};
-    p.normals[0] = {0.0, -1.0};
-    p.normals[1] = {1.0, 0.0};
-    p.normals[2] = {0.0, 1.0};
-    p.normals[3] = {-1.0, 0.0};
-    return p;
 }
 
 namespace {
@@ -91,10 +77,23 @@ void validate(const Geometry& g) {
         return;
     }
     const auto& p = std::get<Polygon>(g);
-    if (p.count < 3 || p.count > Polygon::maxVertices)
-        throw std::invalid_argument("physim: polygon vertex count must be in [3, " +
-                                    std::to_string(Polygon::maxVertices) + "], got " + std::to_string(p.count));
-    for (int i = 0; i < p.count; ++i) requireFinite("polygon vertex", p.vertices[i]);
+    if (p.count >= 3 && p.count <= Polygon::maxVertices && signedArea(p.vertices.data(), p.count) < 0.0)
+        throw std::invalid_argument("physim: polygon vertices must be counter-clockwise, got clockwise "
+                                    "(makePolygon accepts either winding)");
+    checkConvexCounterClockwise(p.vertices.data(), p.count, "polygon");
+    // The narrow phase trusts the normals: each must be its edge's outward unit normal. 1e-9 allows the
+    // rounding of normalising a finite edge, nothing more.
+    for (int i = 0; i < p.count; ++i) {
+        const Vec2 edge = p.vertices[(i + 1) % p.count] - p.vertices[i];
+        const Vec2 expected = Vec2(edge.y(), -edge.x()).normalized();
+        if (!std::isfinite(p.normals[i].x()) || !std::isfinite(p.normals[i].y()) ||
+            (p.normals[i] - expected).norm() > 1e-9)
+            throw std::invalid_argument("physim: polygon normal " + std::to_string(i) +
+                                        " must be the outward unit normal of edge " + std::to_string(i) + " (" +
+                                        std::to_string(expected.x()) + ", " + std::to_string(expected.y()) +
+                                        "), got (" + std::to_string(p.normals[i].x()) + ", " +
+                                        std::to_string(p.normals[i].y()) + ")");
+    }
 }
 
 }  // namespace physim

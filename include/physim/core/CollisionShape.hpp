@@ -29,8 +29,12 @@ public:
     bool aabbCollision(const CollisionShape& other) const;
     /// The full narrow phase (the paper's SAT, section 5.2.2): normal from this shape towards `other`.
     Colliding satCollision(const CollisionShape& other) const;
-    /// World-space bounding box. (The paper returned the SFML sprite; drawing belongs to Mesh here.)
+    /// World-space bounding box, tight for any rotation. (The paper returned the SFML sprite; drawing belongs
+    /// to Mesh here.)
     Aabb getBounds() const;
+    /// Area (m^2), centroid (m, shape frame) and second moment of area about the centroid (m^4): mass and
+    /// moment of inertia per unit density (kg/m^2).
+    MassProperties getMassProperties() const { return computeMassProperties(geometry_); }
 
     const Geometry& geometry() const { return geometry_; }
     const Transform& transform() const { return transform_; }

@@ -1,12 +1,16 @@
 #pragma once
 // Collision geometry as plain data in body-local metres. The body's origin is its centre of mass, so the
-// factories below build shapes centred on the local origin unless an offset is asked for.
+// factories below build shapes centred on the local origin unless an offset is asked for. makePolygon keeps
+// the coordinates it is given: a polygon whose centroid is not at the origin still rotates about the origin,
+// and the World adds the parallel-axis term to its inertia. Centre the points on their centroid
+// (computeMassProperties(...).centroid) to make a body rotate about its own centre.
 
 #include "physim/core/Aabb.hpp"
 #include "physim/core/Math.hpp"
 
 #include <array>
 #include <variant>
+#include <vector>
 
 namespace physim {
 
@@ -16,7 +20,8 @@ struct Circle {
 };
 
 /// Convex polygon, counter-clockwise, at most maxVertices vertices, with outward unit edge normals:
-/// normals[i] is the normal of the edge vertices[i] -> vertices[(i + 1) % count].
+/// normals[i] is the normal of the edge vertices[i] -> vertices[(i + 1) % count]. Build one with makeBox or
+/// makePolygon; validate() checks a hand-filled one.
 struct Polygon {
     static constexpr int maxVertices = 8;
     std::array<Vec2, maxVertices> vertices{};
@@ -31,6 +36,17 @@ Circle makeCircle(double radius, const Vec2& center = Vec2::Zero());
 
 /// A rectangle of half-extents (m) centred on the local origin. Throws for non-positive or non-finite sizes.
 Polygon makeBox(double halfWidth, double halfHeight);
+
+/// A rectangle of half-extents (m) centred at `center` (m, local) and rotated by `angle` (rad, CCW) in the
+/// body frame. Throws std::invalid_argument for bad sizes or a non-finite centre or angle.
+Polygon makeBox(double halfWidth, double halfHeight, const Vec2& center, double angle);
+
+/// A convex polygon through `points` (m, body-local), given in order around the boundary in either winding;
+/// the result is counter-clockwise and keeps the coordinates as given (no recentring, see the file comment).
+/// Throws std::invalid_argument naming the problem: fewer than 3 or more than Polygon::maxVertices points,
+/// a non-finite coordinate, coincident points, three consecutive collinear points (or zero area), a reflex
+/// vertex (non-convex) or a boundary that winds more than once (self-intersecting).
+Polygon makePolygon(const std::vector<Vec2>& points);
 
 /// Mass properties per unit density (kg/m^2): area (m^2), centroid (m, local) and the second moment of area
 /// about the centroid (m^4). Multiply area and secondMoment by a density to get mass and inertia.
@@ -50,7 +66,9 @@ Aabb computeAabb(const Geometry& g, const Transform& xf);
 namespace physim {
 
 /// Throws std::invalid_argument naming the problem: non-positive or non-finite radius, a polygon with fewer
-/// than 3 or more than Polygon::maxVertices vertices, non-finite coordinates.
+/// than 3 or more than Polygon::maxVertices vertices, non-finite coordinates, or a polygon that makePolygon
+/// would reject (coincident, collinear, clockwise, non-convex), or whose normals are not its outward unit
+/// edge normals.
 void validate(const Geometry& g);
 
 }  // namespace physim

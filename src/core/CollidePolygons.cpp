@@ -1,0 +1,132 @@
+// Narrow phase for two convex polygons: separating axes (SAT) over both polygons' face normals, then a
+// contact manifold from clipping the incident edge against the reference face.
+
+#include "Manifolds.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace physim {
+namespace {
+
+// Faces count as facing each other (a resting stack) when their normals are within about 1.1 degrees of
+// antiparallel; only then is the reference-face tolerance applied.
+constexpr double kFacingCosine = -0.9998;
+
+struct FaceQuery {
+    int face = 0;
+    double separation = -std::numeric_limits<double>::infinity();
+};
+
+// The face of `p` whose supporting line is farthest from `q` (greatest separation). Its separation is
+// min over q's vertices of n_i . (w - v_i); the shapes are disjoint when some face's separation is > 0.
+FaceQuery maxSeparation(const Polygon& p, const Polygon& q) {
+    FaceQuery best;
+    for (int i = 0; i < p.count; ++i) {
+        double s = std::numeric_limits<double>::infinity();
+        for (int j = 0; j < q.count; ++j) s = std::min(s, p.normals[i].dot(q.vertices[j] - p.vertices[i]));
+        if (s > best.separation) best = {i, s};
+    }
+    return best;
+}
+
+// Feature id of a clipped point: who is the reference, which reference face and incident edge, which end of
+// the incident edge. The same touching features give the same id from step to step.
+std::uint32_t featureId(bool flip, int referenceFace, int incidentEdge, int end) {
+    return (flip ? 1u << 12 : 0u) | static_cast<std::uint32_t>(referenceFace) << 8 |
+           static_cast<std::uint32_t>(incidentEdge) << 4 | static_cast<std::uint32_t>(end);
+}
+
+}  // namespace
+
+NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb) {
+    // Work in a's frame: b's vertices relative to a stay small numbers even far from the world origin.
+    Polygon local = b;
+    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
+    const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
+    for (int i = 0; i < b.count; ++i) {
+        local.vertices[i] = relative.apply(b.vertices[i]);
+        local.normals[i] = q.apply(b.normals[i]);
+    }
+
+    NarrowResult r;
+    const FaceQuery onA = maxSeparation(a, local);
+    const FaceQuery onB = maxSeparation(local, a);
+    r.separation = std::max(onA.separation, onB.separation);
+    if (r.separation > 0.0) return r;
+
+    // The reference face is the face of least overlap (the minimum translation); a's face wins a near tie
+    // between facing faces so the choice, and so the feature ids, do not flicker.
+    const bool facing = a.normals[onA.face].dot(local.normals[onB.face]) < kFacingCosine;
+    const bool flip = facing ? onB.separation > onA.separation + kReferenceFaceTolerance
+                             : onB.separation > onA.separation;
+    const Polygon& ref = flip ? local : a;
+    const Polygon& inc = flip ? a : local;
+    const int i1 = flip ? onB.face : onA.face;
+    r.separation = flip ? onB.separation : onA.separation;
+
+    const Vec2 n = ref.normals[i1];
+    const Vec2 t = perp(n);  // direction of the reference edge (counter-clockwise polygon)
+    const Vec2& v11 = ref.vertices[i1];
+    const double faceLength = t.dot(ref.vertices[(i1 + 1) % ref.count] - v11);
+
+    // Incident edge: the edge of the other polygon most antiparallel to the reference normal. It holds the
+    // other polygon's deepest vertex, and runs along -t.
+    int i2 = 0;
+    double mostAntiparallel = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < inc.count; ++j) {
+        const double d = n.dot(inc.normals[j]);
+        if (d < mostAntiparallel) {
+            mostAntiparallel = d;
+            i2 = j;
+        }
+    }
+    const Vec2& v21 = inc.vertices[i2];
+    const Vec2& v22 = inc.vertices[(i2 + 1) % inc.count];
+
+    // Clip the incident edge to the reference face's side planes (0 <= t . (x - v11) <= faceLength). Positions
+    // along t: v22 is the lower end, v21 the upper. The two ranges overlap for the least-overlap face; a guard
+    // keeps a single vertex if tolerances ever make them miss.
+    const double lower = t.dot(v22 - v11), upper = t.dot(v21 - v11);
+    const double span = upper - lower;  // > 0: the incident edge is within 60 degrees of antiparallel
+    Vec2 clipped[2];
+    int ends[2] = {0, 1};
+    int candidates = 2;
+    const double from = std::max(lower, 0.0), to = std::min(upper, faceLength);
+    if (span > 0.0 && from <= to) {
+        clipped[0] = v22 + ((from - lower) / span) * (v21 - v22);
+        clipped[1] = v22 + ((to - lower) / span) * (v21 - v22);
+    } else {
+        const bool lowerDeeper = n.dot(v22 - v11) <= n.dot(v21 - v11);
+        clipped[0] = lowerDeeper ? v22 : v21;
+        ends[0] = lowerDeeper ? 0 : 1;
+        candidates = 1;
+    }
+
+    // Keep the points on or below the reference face, or within kSpeculativeMargin above it: a tilted incident
+    // edge touches with one end only (vertex against face). Each point goes midway between the two surfaces.
+    Manifold& m = r.manifold;
+    m.normal = xa.q.apply(flip ? Vec2(-n) : n);
+    double separations[2];
+    int deepest = 0;
+    for (int k = 0; k < candidates; ++k) {
+        separations[k] = n.dot(clipped[k] - v11);
+        if (separations[k] < separations[deepest]) deepest = k;
+    }
+    for (int k = 0; k < candidates; ++k) {
+        if (separations[k] > kSpeculativeMargin) continue;
+        ContactPoint& cp = m.points[m.pointCount++];
+        cp.point = xa.apply(clipped[k] - 0.5 * separations[k] * n);
+        cp.separation = separations[k];
+        cp.id = featureId(flip, i1, i2, ends[k]);
+    }
+    if (m.pointCount == 0) {  // overlap along every axis but the clipped edge ends above the face by rounding
+        ContactPoint& cp = m.points[m.pointCount++];
+        cp.point = xa.apply(clipped[deepest] - 0.5 * separations[deepest] * n);
+        cp.separation = std::min(separations[deepest], 0.0);
+        cp.id = featureId(flip, i1, i2, ends[deepest]);
+    }
+    return r;
+}
+
+}  // namespace physim

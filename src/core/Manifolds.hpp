@@ -1,0 +1,36 @@
+#pragma once
+// The narrow-phase routines behind collide() (src/core/NarrowPhase.cpp dispatches to them). Internal.
+//
+// Every routine returns the contact manifold (normal from the first shape to the second, up to two points
+// midway between the surfaces, stable feature ids) and the signed distance between the shapes along that
+// normal: negative when they overlap, where its magnitude is the penetration depth (the distance to move the
+// second shape along the normal to separate them). pointCount is 0 exactly when the shapes do not touch.
+
+#include "physim/core/Contact.hpp"
+#include "physim/core/Geometry.hpp"
+
+namespace physim {
+
+struct NarrowResult {
+    Manifold manifold;
+    double separation = 0.0;  ///< m along manifold.normal; only meaningful when manifold.pointCount > 0
+};
+
+NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb);
+/// Normal from the polygon to the circle.
+NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, const Circle& b, const Transform& xb);
+NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb);
+
+/// Largest |separation difference| (m) for which polygon-polygon keeps the first shape's face as the reference
+/// when the two candidate faces are almost antiparallel (a box resting on a box): rounding and solver jitter
+/// then cannot swap the reference face between steps, which would change the feature ids and lose warm
+/// starting. 50x below the default linear slop, so the penetration it reports is within this of the minimum.
+constexpr double kReferenceFaceTolerance = 1e-4;
+
+/// A polygon-polygon manifold keeps a clipped point up to this far (m) outside the reference face, when the
+/// shapes touch. A box resting flat is tilted by solver rounding (1e-7 rad or so), lifting one corner by a
+/// hair; dropping that point would leave a single point under the box, which then rocks. Far below the
+/// default linear slop (5e-3 m), so a point kept this way holds a body no visible distance off the ground.
+constexpr double kSpeculativeMargin = 5e-4;
+
+}  // namespace physim
