@@ -54,6 +54,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             const std::string& text = value();
             if (text.empty()) throw UsageError("--out needs a directory, got ''");
             o.outDir = text;
+        } else if (a == "--screenshot") {
+            const std::string& text = value();
+            if (text.empty()) throw UsageError("--screenshot needs a file name, got ''");
+            o.screenshot = text;
         } else if (a == "--max-steps-per-frame") {
             o.maxStepsPerFrame = parseInt(a, value(), 1, 1000);
         } else if (a == "--size") {
@@ -79,6 +83,7 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --out DIR                write summary.json (final state, SI units) and the graphs'\n"
        << "                           data (graph_<i>.csv, graphs.png) to DIR at the end\n"
        << "  --hz H                   physics rate in Hz (default: the simulation's, 40 as in the paper)\n"
+       << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
        << "  --help                   this text\n\n"

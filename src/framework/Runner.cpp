@@ -3,6 +3,7 @@
 #include "physim/framework/Summary.hpp"
 
 #include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Graphics/Texture.hpp>
 #include <SFML/Window/Event.hpp>
 
 #include <cmath>
@@ -134,6 +135,14 @@ int Runner::runWindow() {
             framesSinceTitle = 0;
         }
         if (options_.seconds && simulation().time >= *options_.seconds) break;
+    }
+    if (options_.screenshot) {
+        // What the window shows now: the last frame, after display().
+        sf::Texture texture;
+        texture.create(window.getSize().x, window.getSize().y);
+        texture.update(window);
+        if (!texture.copyToImage().saveToFile(*options_.screenshot))
+            throw std::runtime_error("physim: cannot write the screenshot " + *options_.screenshot);
     }
     return 0;
 }

@@ -17,7 +17,8 @@ std::string errorOf(const std::vector<std::string>& args) {
 TEST(RunOptions, ParsesEveryFlag) {
     const RunOptions o = parseRunOptions(
         {"--headless", "--seconds", "2.5", "--out", "dir", "--hz", "120", "--max-steps-per-frame", "3", "--size",
-         "800x600"});
+         "800x600", "--screenshot", "shot.png"});
+    EXPECT_EQ(o.screenshot, "shot.png");
     EXPECT_TRUE(o.headless);
     EXPECT_EQ(o.seconds, 2.5);
     EXPECT_EQ(o.outDir, "dir");
@@ -42,6 +43,7 @@ TEST(RunOptions, BadArgumentsNameTheValue) {
     EXPECT_NE(errorOf({"--max-steps-per-frame", "0"}).find("0"), std::string::npos);
     EXPECT_NE(errorOf({"--size", "big"}).find("big"), std::string::npos);
     EXPECT_NE(errorOf({"--out", ""}).find("--out"), std::string::npos);
+    EXPECT_NE(errorOf({"--screenshot", ""}).find("--screenshot"), std::string::npos);
 }
 
 }  // namespace

@@ -1,0 +1,10 @@
+# cmake -DPROGRAM=... -DSHOT=... -DWRAPPER=... -P WindowRun.cmake
+file(REMOVE "${SHOT}")
+execute_process(COMMAND "${WRAPPER}" "${PROGRAM}" --seconds 0.5 --screenshot "${SHOT}" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "window run failed: ${rc}")
+endif()
+file(SIZE "${SHOT}" size)
+if(size LESS 1000)
+  message(FATAL_ERROR "screenshot ${SHOT} missing or empty (${size} bytes)")
+endif()
