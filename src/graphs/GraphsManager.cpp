@@ -2,6 +2,7 @@
 
 #include <TCanvas.h>
 #include <TError.h>
+#include <TFile.h>
 #include <TGraph.h>
 #include <TROOT.h>
 #include <TSystem.h>
@@ -188,6 +189,15 @@ std::vector<std::string> GraphsManager::writeFiles(const std::string& directory)
         canvas.reset();
         gROOT->SetBatch(wasBatch);
         written.push_back(png.string());
+
+        // Every graph in one ROOT file, named graph_<i>, for analysis in ROOT itself.
+        const fs::path rootFile = fs::path(directory) / "graphs.root";
+        TFile file(rootFile.string().c_str(), "RECREATE");
+        if (file.IsZombie()) throw std::runtime_error("physim: cannot write " + rootFile.string());
+        for (std::size_t i = 0; i < root_->graphs.size(); ++i)
+            root_->graphs[i]->Write(("graph_" + std::to_string(i)).c_str());
+        file.Close();
+        written.push_back(rootFile.string());
     }
     return written;
 }

@@ -2,11 +2,15 @@
 
 #include <physim/graphs/GraphsManager.hpp>
 
+#include <TFile.h>
+#include <TGraph.h>
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -33,7 +37,7 @@ TEST(GraphsManager, EachGraphIsItsOwnAndFilesMatchThePoints) {
     const auto dir = std::filesystem::temp_directory_path() / "physim_graphs_test";
     std::filesystem::remove_all(dir);
     const auto written = gm.writeFiles(dir.string());
-    ASSERT_EQ(written.size(), 3u);
+    ASSERT_EQ(written.size(), 4u);
     const auto g0 = lines((dir / "graph_0.csv").string());
     ASSERT_EQ(g0.size(), 2u + 5u);
     EXPECT_EQ(g0[0], "# Speed;t (s);v (m/s)");
@@ -43,6 +47,18 @@ TEST(GraphsManager, EachGraphIsItsOwnAndFilesMatchThePoints) {
     ASSERT_EQ(g1.size(), 3u);
     EXPECT_EQ(g1[2], "0.5,-1.25");
     EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u) << "a PNG drawn in ROOT's batch mode";
+    {
+        TFile file((dir / "graphs.root").string().c_str(), "READ");
+        ASSERT_FALSE(file.IsZombie());
+        // Objects read from a file belong to the caller (ROOT's convention for non-histograms).
+        const std::unique_ptr<TGraph> g0root(file.Get<TGraph>("graph_0"));
+        const std::unique_ptr<TGraph> g1root(file.Get<TGraph>("graph_1"));
+        ASSERT_NE(g0root, nullptr);
+        ASSERT_NE(g1root, nullptr);
+        EXPECT_EQ(g0root->GetN(), 5);
+        EXPECT_EQ(g0root->GetPointY(3), 6.0);
+        EXPECT_EQ(g1root->GetN(), 1);
+    }
     std::filesystem::remove_all(dir);
 }
 

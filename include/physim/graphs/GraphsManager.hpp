@@ -57,8 +57,8 @@ public:
     const std::vector<std::pair<double, double>>& points(int i) const;
     std::size_t skippedPoints(int i) const;
 
-    /// Writes graph_<i>.csv for each graph ("x,y" header; title in a comment line), and graphs.png with every
-    /// pad. Returns the paths written. Creates `directory` if needed.
+    /// Writes graph_<i>.csv for each graph ("x,y" header; title in a comment line), graphs.png with every pad,
+    /// and graphs.root holding each TGraph as graph_<i>. Returns the paths written. Creates `directory`.
     std::vector<std::string> writeFiles(const std::string& directory) const;
 
 private:
