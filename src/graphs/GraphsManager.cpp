@@ -1,5 +1,6 @@
 #include "physim/graphs/GraphsManager.hpp"
 
+#include <TAxis.h>
 #include <TCanvas.h>
 #include <TError.h>
 #include <TFile.h>
@@ -7,6 +8,7 @@
 #include <TROOT.h>
 #include <TSystem.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -21,6 +23,7 @@ struct GraphsManager::Graph {
     std::string title;
     graph_modifier modifier;
     GraphMode mode = GraphMode::DEFAULT;
+    int pad = 0;  // pads are numbered in addGraph order; addSeries shares its graph's pad
     std::vector<std::pair<double, double>> points;
     std::size_t skipped = 0;
 };
@@ -28,7 +31,8 @@ struct GraphsManager::Graph {
 // ROOT objects. The canvas is deleted before the graphs it shows; the pads do not own the graphs.
 struct GraphsManager::Root {
     std::vector<std::unique_ptr<TGraph>> graphs;
-    std::unique_ptr<TCanvas> canvas;
+    std::unique_ptr<TCanvas> canvas;  // live window; null headless
+    std::vector<bool> padDrawn;       // live: a pad is drawn once it has points (ROOT rejects empty graphs)
     std::chrono::steady_clock::time_point lastRefresh{};
 
     ~Root() { canvas.reset(); }
@@ -36,33 +40,72 @@ struct GraphsManager::Root {
 
 namespace {
 
-const char* drawOption(GraphMode mode) { return mode == GraphMode::WITH_LINES ? "APL" : "AP"; }
+const char* drawOption(GraphMode mode, bool first) {
+    if (mode == GraphMode::WITH_LINES) return first ? "APL" : "PL";
+    return first ? "AP" : "P";
+}
 
 // Pads in a grid close to the canvas's aspect ratio.
-std::pair<int, int> padGrid(std::size_t n) {
+std::pair<int, int> padGrid(int n) {
     const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-    const int rows = static_cast<int>((n + cols - 1) / cols);
+    const int rows = (n + cols - 1) / cols;
     return {cols, rows};
 }
 
-std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, int x, int y, int w, int h,
-                                    const std::vector<std::unique_ptr<TGraph>>& graphs,
-                                    const std::vector<GraphMode>& modes) {
+std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, int x, int y, int w, int h, int pads) {
     char name[96];  // unique per manager and purpose: ROOT finds (and replaces) canvases by name
     std::snprintf(name, sizeof name, "physim_graphs_%s_%p", purpose, owner);
     auto canvas = std::make_unique<TCanvas>(name, "physim graphs", x, y, w, h);
-    const auto [cols, rows] = padGrid(graphs.size());
-    if (graphs.size() > 1) canvas->Divide(cols, rows);
-    for (std::size_t i = 0; i < graphs.size(); ++i) {
-        canvas->cd(static_cast<int>(i) + 1);
+    const auto [cols, rows] = padGrid(pads);
+    if (pads > 1) canvas->Divide(cols, rows);
+    for (int p = 0; p < pads; ++p) {
+        canvas->cd(p + 1);
         gPad->SetGrid();
-        // An empty TGraph draws nothing; it appears once it has points and the pad is refreshed.
-        graphs[i]->Draw(drawOption(modes[i]));
     }
     return canvas;
 }
 
 }  // namespace
+
+// Draws pad `pad` of `canvas`: the first graph with axes, the others over it, with a legend when there are
+// several. Once per canvas: drawing again would add the graphs to the pad twice.
+void GraphsManager::drawPad(TCanvas& canvas, int pad) const {
+    canvas.cd(pad + 1);
+    int series = 0;
+    for (std::size_t i = 0; i < graphs_.size(); ++i) {
+        if (graphs_[i].pad != pad) continue;
+        root_->graphs[i]->Draw(drawOption(graphs_[i].mode, series == 0));
+        ++series;
+    }
+    if (series > 1) gPad->BuildLegend(0.65, 0.75, 0.95, 0.92);  // the pad owns the legend
+    fitAxes(pad);
+}
+
+// The axes span every series on the pad (ROOT sizes them to the first graph alone).
+void GraphsManager::fitAxes(int pad) const {
+    double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
+    TGraph* first = nullptr;
+    for (std::size_t i = 0; i < graphs_.size(); ++i) {
+        if (graphs_[i].pad != pad) continue;
+        if (!first) first = root_->graphs[i].get();
+        for (const auto& [x, y] : graphs_[i].points) {
+            xmin = std::min(xmin, x), xmax = std::max(xmax, x);
+            ymin = std::min(ymin, y), ymax = std::max(ymax, y);
+        }
+    }
+    if (!first || xmin > xmax) return;
+    const double mx = 0.05 * std::max(xmax - xmin, 1e-9), my = 0.05 * std::max(ymax - ymin, 1e-9);
+    first->GetXaxis()->SetLimits(xmin - mx, xmax + mx);
+    first->SetMinimum(ymin - my);
+    first->SetMaximum(ymax + my);
+    if (gPad) gPad->Modified();
+}
+
+bool GraphsManager::padHasPoints(int pad) const {
+    for (const Graph& g : graphs_)
+        if (g.pad == pad && !g.points.empty()) return true;
+    return false;
+}
 
 GraphsManager::GraphsManager() = default;
 GraphsManager::~GraphsManager() = default;
@@ -90,9 +133,17 @@ void GraphsManager::setLive(bool live, double refreshHz) {
     refreshHz_ = refreshHz;
 }
 
-void GraphsManager::addGraph(const std::string& title, graph_modifier modifier, GraphMode mode) {
+int GraphsManager::addGraph(const std::string& title, graph_modifier modifier, GraphMode mode) {
     if (built_) throw std::logic_error("physim: addGraph(\"" + title + "\") after build()");
-    graphs_.push_back(Graph{title, std::move(modifier), mode, {}, 0});
+    graphs_.push_back(Graph{title, std::move(modifier), mode, padCount_++, {}, 0});
+    return static_cast<int>(graphs_.size()) - 1;
+}
+
+int GraphsManager::addSeries(int onGraph, const std::string& label, graph_modifier modifier, GraphMode mode) {
+    if (built_) throw std::logic_error("physim: addSeries(\"" + label + "\") after build()");
+    const int pad = graph(onGraph).pad;
+    graphs_.push_back(Graph{label, std::move(modifier), mode, pad, {}, 0});
+    return static_cast<int>(graphs_.size()) - 1;
 }
 
 void GraphsManager::build() {
@@ -101,18 +152,22 @@ void GraphsManager::build() {
     if (graphs_.empty()) return;
     if (!live_) gROOT->SetBatch(kTRUE);  // no window, no display needed
     root_ = std::make_unique<Root>();
+    static const Color_t seriesColors[] = {kBlack, kRed + 1, kBlue + 1, kGreen + 2, kMagenta + 1, kOrange + 7};
+    std::vector<int> seriesOnPad(static_cast<std::size_t>(padCount_), 0);
     for (const Graph& g : graphs_) {
         auto tg = std::make_unique<TGraph>();
         tg->SetTitle(g.title.c_str());
         tg->SetMarkerStyle(20);
         tg->SetMarkerSize(0.5);
+        const Color_t color = seriesColors[seriesOnPad[static_cast<std::size_t>(g.pad)]++ % 6];
+        tg->SetMarkerColor(color);
+        tg->SetLineColor(color);
         if (g.modifier) g.modifier(tg.get());
         root_->graphs.push_back(std::move(tg));
     }
     if (live_) {
-        std::vector<GraphMode> modes;
-        for (const Graph& g : graphs_) modes.push_back(g.mode);
-        root_->canvas = makeCanvas(this, "live", x_, y_, width_, height_, root_->graphs, modes);
+        root_->canvas = makeCanvas(this, "live", x_, y_, width_, height_, padCount_);
+        root_->padDrawn.assign(static_cast<std::size_t>(padCount_), false);
     }
 }
 
@@ -140,9 +195,15 @@ void GraphsManager::render() {
     const auto now = std::chrono::steady_clock::now();
     if (now - root_->lastRefresh < std::chrono::duration<double>(1.0 / refreshHz_)) return;
     root_->lastRefresh = now;
-    for (std::size_t i = 0; i < root_->graphs.size(); ++i) {
-        root_->canvas->cd(static_cast<int>(i) + 1);
-        gPad->Modified();
+    for (int p = 0; p < padCount_; ++p) {
+        if (!padHasPoints(p)) continue;
+        if (root_->padDrawn[static_cast<std::size_t>(p)]) {
+            root_->canvas->cd(p + 1);
+            fitAxes(p);  // to the points so far
+        } else {
+            drawPad(*root_->canvas, p);
+            root_->padDrawn[static_cast<std::size_t>(p)] = true;
+        }
     }
     root_->canvas->Update();
     gSystem->ProcessEvents();
@@ -177,10 +238,10 @@ std::vector<std::string> GraphsManager::writeFiles(const std::string& directory)
     if (root_ && !root_->graphs.empty()) {
         const bool wasBatch = gROOT->IsBatch();
         gROOT->SetBatch(kTRUE);
-        std::vector<GraphMode> modes;
-        for (const Graph& g : graphs_) modes.push_back(g.mode);
         // A separate batch canvas, so a live window is left as it is.
-        auto canvas = makeCanvas(this, "export", 0, 0, width_, height_, root_->graphs, modes);
+        auto canvas = makeCanvas(this, "export", 0, 0, width_, height_, padCount_);
+        for (int p = 0; p < padCount_; ++p)
+            if (padHasPoints(p)) drawPad(*canvas, p);
         const fs::path png = fs::path(directory) / "graphs.png";
         const Int_t ignoreLevel = gErrorIgnoreLevel;
         gErrorIgnoreLevel = kWarning;  // no "file has been created" line on every run

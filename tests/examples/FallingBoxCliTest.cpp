@@ -1,11 +1,11 @@
 // falling_box run as a user runs it: bad arguments exit with 2 and name the value; a headless run writes
 // summary.json and the graph's CSV describing the box at rest on the ground.
 
+#include "RunProgram.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
-
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -15,22 +15,9 @@
 
 namespace {
 
-struct Result {
-    int exitCode = -1;
-    std::string output;  // stdout and stderr
-};
+using physim::test::Result;
 
-Result run(const std::string& args) {
-    const std::string command = std::string(PHYSIM_FALLING_BOX) + " " + args + " 2>&1";
-    Result r;
-    FILE* pipe = popen(command.c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    while (fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-    const int status = pclose(pipe);
-    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+Result run(const std::string& args) { return physim::test::runProgram(PHYSIM_FALLING_BOX, args); }
 
 TEST(FallingBoxCli, BadArgumentsExitWithTwoAndNameTheValue) {
     struct Case {

@@ -102,3 +102,32 @@ TEST(GraphsManager, ModifierStylesTheGraph) {
 
 }  // namespace
 }  // namespace physim
+
+namespace physim {
+namespace {
+
+TEST(GraphsManager, SeriesShareTheirGraphsPadButNotTheirPoints) {
+    GraphsManager gm;
+    gm.addGraph("Height;t (s);y (m)");
+    gm.addGraph("Speed;t (s);v (m/s)");
+    const int analytic = gm.addSeries(0, "analytic");
+    EXPECT_EQ(analytic, 2);
+    EXPECT_THROW(gm.addSeries(7, "x"), std::out_of_range);
+    gm.build();
+    for (int i = 0; i <= 10; ++i) {
+        gm.addPoint(0, 0.1 * i, 1.0 - 0.05 * i * i);
+        gm.addPoint(analytic, 0.1 * i, 1.0 - 0.049 * i * i);
+    }
+    EXPECT_EQ(gm.points(0).size(), 11u);
+    EXPECT_EQ(gm.points(analytic).size(), 11u);
+    EXPECT_TRUE(gm.points(1).empty());
+    const auto dir = std::filesystem::temp_directory_path() / "physim_graphs_series_test";
+    std::filesystem::remove_all(dir);
+    const auto written = gm.writeFiles(dir.string());  // graph 1 has no points: its pad stays empty
+    EXPECT_EQ(lines((dir / "graph_2.csv").string())[0], "# analytic");
+    EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u);
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace physim

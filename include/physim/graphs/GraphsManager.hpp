@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+class TCanvas;
 class TGraph;
 
 namespace physim {
@@ -37,11 +38,15 @@ public:
     void setCanvasPosition(const V& pos) { setCanvasPosition(static_cast<int>(pos.x), static_cast<int>(pos.y)); }
 
     /// Adds a graph before build(). Axis labels (with units) go in the title as "title;x label;y label",
-    /// ROOT's convention. Throws std::logic_error after build().
-    void addGraph(const std::string& title, graph_modifier modifier = {}, GraphMode mode = GraphMode::DEFAULT);
-    /// Creates one ROOT graph per addGraph call (each its own object) laid out on pads of one canvas.
+    /// ROOT's convention. Returns its index for addPoint. Throws std::logic_error after build().
+    int addGraph(const std::string& title, graph_modifier modifier = {}, GraphMode mode = GraphMode::DEFAULT);
+    /// Adds a series drawn on the same pad as graph `onGraph` (an analytic curve over the simulated points,
+    /// say), with a legend entry `label`. Returns its index for addPoint. Before build() only.
+    int addSeries(int onGraph, const std::string& label, graph_modifier modifier = {},
+                  GraphMode mode = GraphMode::WITH_LINES);
+    /// Creates one ROOT graph per addGraph/addSeries call (each its own object) laid out on pads of one canvas.
     void build();
-    /// Appends a point to graph `i` (0-based, in addGraph order). Non-finite points are skipped and counted.
+    /// Appends a point to graph `i` (0-based, in addGraph/addSeries order). Non-finite points are skipped and counted.
     /// Throws std::out_of_range for an unknown index, std::logic_error before build().
     void addPoint(int i, double x, double y);
     /// Live mode: refreshes the canvas, at most `refreshHz` times a second. Headless: does nothing.
@@ -66,9 +71,13 @@ private:
     struct Root;  // ROOT objects (canvas, graphs): only in the .cpp
 
     const Graph& graph(int i) const;
+    void drawPad(TCanvas& canvas, int pad) const;
+    void fitAxes(int pad) const;
+    bool padHasPoints(int pad) const;
 
     std::vector<Graph> graphs_;
     std::unique_ptr<Root> root_;
+    int padCount_ = 0;
     int width_ = 1200, height_ = 700, x_ = 0, y_ = 0;
     bool built_ = false;
     bool live_ = false;
