@@ -8,7 +8,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cd "$PHYSIM_ROOT_DIR"
 cmake --preset default >/dev/null
 cmake --build --preset default -j "$(physim_jobs)" --target falling_box
-demo="$PHYSIM_ROOT_DIR/build/default/examples/falling_box/falling_box"
+demo="$PHYSIM_ROOT_DIR/build/default/bin/falling_box"
 
 if [ $# -gt 0 ]; then
   exec "$demo" "$@"
