@@ -37,6 +37,8 @@ public:
         graphsManager.build();
     }
 
+    std::string keysHelp() const override { return "N: kick the box up"; }
+
     void onEvent(sf::Event event) override {
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::N)
             box_->rb.addForce({0.0, 6.0 * box_->rb.mass()}, physim::ForceMode::IMPULSE);

@@ -34,6 +34,8 @@ public:
         graphsManager.build();
     }
 
+    std::string keysHelp() const override { return "N: launch again"; }
+
     void onEvent(sf::Event event) override {
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::N) {
             graphsManager.reset();

@@ -33,6 +33,8 @@ public:
         graphsManager.build();
     }
 
+    std::string keysHelp() const override { return "N: drop again"; }
+
     void onEvent(sf::Event event) override {
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::N) drop();
     }

@@ -3,6 +3,9 @@
 #include "physim/framework/Summary.hpp"
 
 #include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Graphics/Font.hpp>
+#include <SFML/Graphics/RectangleShape.hpp>
+#include <SFML/Graphics/Text.hpp>
 #include <SFML/Graphics/Texture.hpp>
 #include <SFML/Window/Event.hpp>
 
@@ -55,6 +58,7 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
         sim.onRender(window);
+        drawOverlay(*window);
     }
     sim.graphsManager.render();
     if (window) window->display();
@@ -109,12 +113,35 @@ int Runner::runHeadless() {
     return 0;
 }
 
+void Runner::drawOverlay(sf::RenderWindow& window) {
+    if (!overlayFont_) return;
+    const Simulation& sim = simulation();
+    char status[160];
+    std::snprintf(status, sizeof status, "t = %.2f s   physics %.0f Hz   %.0f FPS%s", sim.time, sim.physicsRate(),
+                  framesPerSecond_, sim.paused ? "   PAUSED" : "");
+    std::string keys = "Space restart   P pause   Esc quit   wheel zoom";
+    if (!sim.keysHelp().empty()) keys += "   " + sim.keysHelp();
+    sf::Text text(std::string(status) + "\n" + keys, *overlayFont_, 15);
+    text.setFillColor(sf::Color(30, 30, 30));
+    text.setPosition(10.f, 8.f);
+    sf::RectangleShape backing({text.getLocalBounds().width + 16.f, text.getLocalBounds().height + 18.f});
+    backing.setFillColor(sf::Color(255, 255, 255, 200));
+    backing.setPosition(2.f, 2.f);
+    window.draw(backing);  // pixel space: the window's default view
+    window.draw(text);
+}
+
 int Runner::runWindow() {
     sf::ContextSettings context;
     context.antialiasingLevel = 4;
     sf::RenderWindow window(sf::VideoMode(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)),
                             "physim", sf::Style::Default, context);
     window.setFramerateLimit(60);
+    overlayFont_ = std::make_unique<sf::Font>();
+    if (!overlayFont_->loadFromFile("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf")) {
+        std::cerr << "physim: DejaVuSans.ttf not found (Debian: fonts-dejavu-core); the overlay is off\n";
+        overlayFont_.reset();
+    }
     restart();
     sf::Clock frameClock, titleClock;
     int framesSinceTitle = 0;
@@ -126,6 +153,7 @@ int Runner::runWindow() {
         ++framesSinceTitle;
         const double sinceTitle = titleClock.getElapsedTime().asSeconds();
         if (sinceTitle >= 0.25) {
+            framesPerSecond_ = framesSinceTitle / sinceTitle;
             const Simulation& sim = simulation();
             char title[256];
             std::snprintf(title, sizeof title, "%s | t = %.2f s | physics %.0f Hz | %.0f FPS%s", sim.title().c_str(),

@@ -13,6 +13,7 @@
 
 namespace sf {
 class Event;
+class Font;
 class RenderWindow;
 }  // namespace sf
 
@@ -47,12 +48,16 @@ public:
 private:
     int runHeadless();
     int runWindow();
+    /// Top-left overlay: simulated time, physics rate, frames per second, pause state and the keys.
+    void drawOverlay(sf::RenderWindow& window);
 
     SimulationFactory factory_;
     RunOptions options_;
     std::unique_ptr<Simulation> simulation_;
     FixedStepAccumulator accumulator_;
     bool quit_ = false;
+    std::unique_ptr<sf::Font> overlayFont_;  // null when no font file is found: no overlay then
+    double framesPerSecond_ = 0.0;
 };
 
 /// Parses the command line and runs. Prints usage errors with exit code 2, runtime errors with 1.

@@ -42,6 +42,8 @@ public:
     virtual void onRender(sf::RenderWindow*) {}
     /// Shown in the window title and --help.
     virtual std::string title() const { return "physim"; }
+    /// The simulation's own keys, shown in the window's overlay next to the runner's (e.g. "N: kick").
+    virtual std::string keysHelp() const { return ""; }
 
     /// Takes ownership, gives the entity the next id (1, 2, ...) and creates its physics body. Throws
     /// std::invalid_argument for a null entity, std::logic_error for one already in a simulation.
