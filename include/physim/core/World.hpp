@@ -6,6 +6,9 @@
 //   collide()      broad phase -> narrow phase -> continuous -> contact solve
 //   finishStep()   velocities -> positions, position correction, sleep
 // step(dt) runs all three. Each phase skips the stages the world's content does not call for.
+// With settings().substeps = n > 1 every phase's work is done n times with dt / n: beginStep applies the
+// first substep's forces, collide runs substeps 1 .. n-1 whole and the last one up to its solve, and
+// finishStep moves the bodies by the last substep (docs/dynamics.md says why substeps).
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
@@ -94,6 +97,10 @@ private:
     BodyData& at(BodyId id);
     const BodyData& at(BodyId id) const;
     BodyData& requireDynamic(BodyId id, const char* what);
+    // One substep's parts (settings_.substeps of them per step, each of h_ seconds).
+    void integrateForces();
+    void detectAndSolve();
+    void integrateAndCorrect();
 
     WorldSettings settings_;
     std::vector<BodyData> bodies_;            // slot per index; dead slots are on freeList_
@@ -109,6 +116,7 @@ private:
     std::size_t dynamicCount_ = 0;
     Phase phase_ = Phase::Idle;
     double dt_ = 0.0;
+    double h_ = 0.0;  // substep, s
     std::uint64_t stepCount_ = 0;
 };
 
