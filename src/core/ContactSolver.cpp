@@ -57,9 +57,12 @@ void ContactSolver::prepare(std::vector<BodyData>& bodies, std::vector<Manifold>
             pt.localB = B.xf.applyInverse(cp.point + 0.5 * cp.separation * n);
             pt.normalMass = effectiveMass(A, B, pt.rA, pt.rB, n);
             pt.tangentMass = effectiveMass(A, B, pt.rA, pt.rB, t);
-            // Restitution targets the approach speed before any impulse of this step (warm starting
-            // included), so the bounce does not depend on the order contacts are visited in.
-            const double vn = n.dot(relativeVelocity(A, B, pt.rA, pt.rB));
+            // Restitution reverses the approach speed the bodies had before this substep: before any
+            // impulse (warm starting included), so the bounce does not depend on the order contacts are
+            // visited in, and before this substep's gravity, so a bounce mirrors the fall. Semi-implicit
+            // Euler is time-reversible, so with e = 1 the ball retraces its fall and gains no energy;
+            // reversing the speed after gravity would add m g h v per bounce (1.3% at 60 Hz for a 2 m drop).
+            const double vn = n.dot(B.v0 + cross(B.w0, pt.rB) - A.v0 - cross(A.w0, pt.rA));
             pt.velocityBias = vn < -s.restitutionThreshold ? -ps.restitution * vn : 0.0;
         }
         ps.blockSolve = false;
