@@ -231,6 +231,15 @@ void World::setMass(BodyId id, double mass) {
     assignMass(requireDynamic(id, "setMass"), mass);
 }
 
+void World::setFixedRotation(BodyId id, bool fixedRotation) {
+    BodyData& b = at(id);
+    b.fixedRotation = fixedRotation;
+    if (b.type == BodyType::Dynamic) assignMass(b, b.mass);  // recomputes the inverse inertia
+    if (fixedRotation) b.w = 0.0;
+}
+
+bool World::fixedRotation(BodyId id) const { return at(id).fixedRotation; }
+
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
     at(id).force += force;

@@ -69,6 +69,10 @@ public:
     void setType(BodyId id, BodyType type);
     /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
     void setMass(BodyId id, double mass);
+    /// Locks (true) or frees the body's rotation: locked, its inverse inertia is 0, so contacts and torques
+    /// do not turn it, and its angular velocity is zeroed.
+    void setFixedRotation(BodyId id, bool fixedRotation);
+    bool fixedRotation(BodyId id) const;
 
     /// Force (N) at the centre of mass, accumulated until the end of the current step.
     void applyForce(BodyId id, const Vec2& force);
