@@ -16,6 +16,8 @@ struct BodyData {
     double angle = 0.0;             // rad, unwrapped (xf.q caches its cosine and sine)
     Vec2 v = Vec2::Zero();          // m/s
     double w = 0.0;                 // rad/s
+    Vec2 v0 = Vec2::Zero();         // m/s and rad/s before this substep's forces: what restitution reverses
+    double w0 = 0.0;
     double invMass = 0.0;           // 1/kg, 0 = immovable
     double invInertia = 0.0;        // 1/(kg m^2), 0 = does not rotate
     Vec2 force = Vec2::Zero();      // N, accumulated until the end of the step

@@ -34,7 +34,10 @@ private:
         std::uint32_t a = 0, b = 0;
         double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
         PointState points[2];
+        bool blockSolve = false;  // two-point manifold solved as one 2x2 problem (below)
+        double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // normal mass matrix K and 1/det K
     };
+    void solveNormalBlock(BodyData& A, BodyData& B, Manifold& m, const PairState& ps);
     std::vector<PairState> pairs_;
 };
 

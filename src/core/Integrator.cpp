@@ -4,6 +4,8 @@ namespace physim {
 
 void integrateVelocities(std::vector<BodyData>& bodies, const Vec2& gravity, double dt) {
     for (BodyData& b : bodies) {
+        b.v0 = b.v;
+        b.w0 = b.w;
         if (!b.alive || b.type != BodyType::Dynamic) continue;
         const Vec2 acceleration = b.invMass * b.force + (b.useGravity ? gravity : Vec2::Zero());
         b.v += dt * acceleration;

@@ -22,7 +22,7 @@ void runStage(StepProfile& profile, Stage s, bool needed, Work&& work) {
     const auto start = std::chrono::steady_clock::now();
     work();
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    profile.secondsOf(s) = elapsed.count();
+    profile.secondsOf(s) += elapsed.count();  // substeps add up
     profile.ran[static_cast<std::size_t>(s)] = true;
 }
 
@@ -57,6 +57,8 @@ void validate(const WorldSettings& s) {
     if (s.velocityIterations < 1)
         throw std::invalid_argument("physim: velocityIterations must be >= 1, got " +
                                     std::to_string(s.velocityIterations));
+    if (s.substeps < 1)
+        throw std::invalid_argument("physim: substeps must be >= 1, got " + std::to_string(s.substeps));
     if (s.positionIterations < 0)
         throw std::invalid_argument("physim: positionIterations must be >= 0, got " +
                                     std::to_string(s.positionIterations));
@@ -229,6 +231,15 @@ void World::setMass(BodyId id, double mass) {
     assignMass(requireDynamic(id, "setMass"), mass);
 }
 
+void World::setFixedRotation(BodyId id, bool fixedRotation) {
+    BodyData& b = at(id);
+    b.fixedRotation = fixedRotation;
+    if (b.type == BodyType::Dynamic) assignMass(b, b.mass);  // recomputes the inverse inertia
+    if (fixedRotation) b.w = 0.0;
+}
+
+bool World::fixedRotation(BodyId id) const { return at(id).fixedRotation; }
+
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
     at(id).force += force;
@@ -267,14 +278,42 @@ void World::beginStep(double dt) {
     if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
     if (phase_ != Phase::Idle) throw std::logic_error("physim: beginStep called before the last step finished");
     dt_ = dt;
+    h_ = dt / settings_.substeps;
     profile_ = StepProfile{};
-    runStage(profile_, Stage::Forces, dynamicCount_ > 0,
-             [&] { integrateVelocities(bodies_, settings_.gravity, dt_); });
+    integrateForces();
     phase_ = Phase::Forces;
 }
 
 void World::collide() {
     if (phase_ != Phase::Forces) throw std::logic_error("physim: collide must follow beginStep");
+    // Substeps 1 .. n-1 run whole here; the last one stops after its solve, so the framework's
+    // checkCollisions sees that substep's contacts, and finishStep moves the bodies.
+    for (int k = 0; k < settings_.substeps; ++k) {
+        if (k > 0) {
+            integrateAndCorrect();
+            integrateForces();
+        }
+        detectAndSolve();
+    }
+    phase_ = Phase::Collided;
+}
+
+void World::finishStep() {
+    if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
+    integrateAndCorrect();
+    // Sleeping arrives with the dynamics issue; until then every body is always awake.
+    runStage(profile_, Stage::Sleep, false, [] {});
+    clearForces(bodies_);
+    ++stepCount_;
+    phase_ = Phase::Idle;
+}
+
+void World::integrateForces() {
+    runStage(profile_, Stage::Forces, dynamicCount_ > 0,
+             [&] { integrateVelocities(bodies_, settings_.gravity, h_); });
+}
+
+void World::detectAndSolve() {
     previousContacts_.swap(contacts_);
     contacts_.clear();
     pairs_.clear();
@@ -291,7 +330,7 @@ void World::collide() {
             if (m.pointCount == 0) continue;
             m.bodyA = BodyId{a, A.generation};
             m.bodyB = BodyId{b, B.generation};
-            // Warm start: carry last step's impulses over to points with the same feature id.
+            // Warm start: carry the last substep's impulses over to points with the same feature id.
             while (previous < previousContacts_.size() &&
                    std::make_pair(previousContacts_[previous].bodyA.index,
                                   previousContacts_[previous].bodyB.index) < std::make_pair(a, b))
@@ -319,22 +358,15 @@ void World::collide() {
         solver_->prepare(bodies_, contacts_, settings_);
         for (int i = 0; i < settings_.velocityIterations; ++i) solver_->solveVelocities(bodies_, contacts_);
     });
-    phase_ = Phase::Collided;
 }
 
-void World::finishStep() {
-    if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
+void World::integrateAndCorrect() {
     runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
-        integratePositions(bodies_, dt_);
+        integratePositions(bodies_, h_);
         if (!contacts_.empty())
             for (int i = 0; i < settings_.positionIterations; ++i)
                 solver_->correctPositions(bodies_, contacts_, settings_);
     });
-    // Sleeping arrives with the dynamics issue; until then every body is always awake.
-    runStage(profile_, Stage::Sleep, false, [] {});
-    clearForces(bodies_);
-    ++stepCount_;
-    phase_ = Phase::Idle;
 }
 
 }  // namespace physim

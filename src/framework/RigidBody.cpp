@@ -111,6 +111,21 @@ void RigidBody::addForce(const Vec2& value, ForceMode mode) {
     }
 }
 
+void RigidBody::setFixedRotation(bool fixedRotation) {
+    if (world_) world_->setFixedRotation(id_, fixedRotation);
+    def_.fixedRotation = fixedRotation;
+}
+bool RigidBody::fixedRotation() const { return world_ ? world_->fixedRotation(id_) : def_.fixedRotation; }
+
+void RigidBody::setKinematic(bool kinematic) {
+    const BodyType type = kinematic ? BodyType::Kinematic : BodyType::Dynamic;
+    if (world_) world_->setType(id_, type);
+    else def_.type = type;
+}
+bool RigidBody::isKinematic() const {
+    return (world_ ? world_->type(id_) : def_.type) == BodyType::Kinematic;
+}
+
 void RigidBody::attach(World& world) {
     if (world_) throw std::logic_error("physim: rigid body is already attached to a world");
     id_ = world.createBody(def_);

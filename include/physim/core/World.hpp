@@ -6,6 +6,9 @@
 //   collide()      broad phase -> narrow phase -> continuous -> contact solve
 //   finishStep()   velocities -> positions, position correction, sleep
 // step(dt) runs all three. Each phase skips the stages the world's content does not call for.
+// With settings().substeps = n > 1 every phase's work is done n times with dt / n: beginStep applies the
+// first substep's forces, collide runs substeps 1 .. n-1 whole and the last one up to its solve, and
+// finishStep moves the bodies by the last substep (docs/dynamics.md says why substeps).
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
@@ -66,6 +69,10 @@ public:
     void setType(BodyId id, BodyType type);
     /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
     void setMass(BodyId id, double mass);
+    /// Locks (true) or frees the body's rotation: locked, its inverse inertia is 0, so contacts and torques
+    /// do not turn it, and its angular velocity is zeroed.
+    void setFixedRotation(BodyId id, bool fixedRotation);
+    bool fixedRotation(BodyId id) const;
 
     /// Force (N) at the centre of mass, accumulated until the end of the current step.
     void applyForce(BodyId id, const Vec2& force);
@@ -94,6 +101,10 @@ private:
     BodyData& at(BodyId id);
     const BodyData& at(BodyId id) const;
     BodyData& requireDynamic(BodyId id, const char* what);
+    // One substep's parts (settings_.substeps of them per step, each of h_ seconds).
+    void integrateForces();
+    void detectAndSolve();
+    void integrateAndCorrect();
 
     WorldSettings settings_;
     std::vector<BodyData> bodies_;            // slot per index; dead slots are on freeList_
@@ -109,6 +120,7 @@ private:
     std::size_t dynamicCount_ = 0;
     Phase phase_ = Phase::Idle;
     double dt_ = 0.0;
+    double h_ = 0.0;  // substep, s
     std::uint64_t stepCount_ = 0;
 };
 

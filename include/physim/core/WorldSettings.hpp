@@ -6,10 +6,12 @@ namespace physim {
 
 struct WorldSettings {
     Vec2 gravity{0.0, -9.81};         ///< m/s^2, y up
-    int velocityIterations = 8;       ///< sequential-impulse passes over all contacts per step
-    int positionIterations = 3;       ///< position-projection passes per step (no velocity is added)
+    int substeps = 4;                 ///< each step is this many substeps of dt / substeps (docs/dynamics.md)
+    int velocityIterations = 6;       ///< sequential-impulse passes over all contacts per substep
+    int positionIterations = 2;       ///< position-projection passes per substep (no velocity is added)
     double linearSlop = 0.005;        ///< m of overlap left alone, so resting contacts persist between steps
     double restitutionThreshold = 1.0;///< m/s: slower approaches do not bounce, so resting bodies settle
+    bool enableSleep = true;          ///< reserved: sleeping is not implemented yet, every body is simulated
 };
 
 /// Throws std::invalid_argument naming the first bad field.

@@ -45,6 +45,15 @@ public:
 
     void addForce(const Vec2& value, ForceMode mode = ForceMode::FORCE);
 
+    /// Locks the rotation (Unity's freezeRotation): contacts and torques no longer turn the body.
+    void setFixedRotation(bool fixedRotation);
+    bool fixedRotation() const;
+    /// Kinematic: moved by its velocity only; gravity, forces and contacts do not change it, and it pushes
+    /// dynamic bodies as an infinitely heavy one would. setKinematic(false) makes it dynamic again with the
+    /// mass of its shape at its density.
+    void setKinematic(bool kinematic);
+    bool isKinematic() const;
+
     /// The world body, once the entity has been added to a simulation; null before.
     BodyId bodyId() const { return id_; }
     bool attached() const { return world_ != nullptr; }
