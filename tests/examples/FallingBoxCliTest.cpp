@@ -63,12 +63,10 @@ TEST(FallingBoxCli, HeadlessRunWritesTheFinalStateAndGraph) {
     EXPECT_GT(y, 0.5 - 0.01);
     EXPECT_LT(y, 0.5 + 1e-3);
     EXPECT_LT(std::hypot(box["velocity"][0].get<double>(), box["velocity"][1].get<double>()), 1e-3);
-    // A straight drop stays centred and upright. Sequential impulses visit the two contact points one after
-    // the other, which tips a bouncing box slightly, by an amount that depends on rounding (measured 0.1 mm
-    // and 1.8 mrad optimised, 1.2 mm unoptimised); a block solver for two-point manifolds (the dynamics
-    // issue) removes that. Bounds: 5 mm and 10 mrad, well below a visible tilt of a 1 m box.
-    EXPECT_NEAR(box["position"][0].get<double>(), 0.0, 5e-3);
-    EXPECT_NEAR(box["angle"].get<double>(), 0.0, 0.01);
+    // A straight drop stays centred and upright: the solver treats a two-point contact's normal impulses as one
+    // block, so neither corner is favoured (measured: x and angle exactly 0). 1e-6 leaves room for rounding.
+    EXPECT_NEAR(box["position"][0].get<double>(), 0.0, 1e-6);
+    EXPECT_NEAR(box["angle"].get<double>(), 0.0, 1e-6);
 
     // One graph point per frame: 160 frames, plus the title comment and the header.
     std::ifstream csv(dir / "graph_0.csv");
