@@ -3,6 +3,7 @@
 #include "BodyData.hpp"
 #include "BroadPhase.hpp"
 #include "ContactSolver.hpp"
+#include "ContinuousStage.hpp"
 #include "Integrator.hpp"
 
 #include "physim/core/Collide.hpp"
@@ -36,6 +37,7 @@ void validate(const BodyDef& def) {
     requireNonNegative("body static friction", def.staticFriction);
     requireNonNegative("body dynamic friction", def.dynamicFriction);
     validate(def.shape);
+    checkPrecision(def.precision);
 }
 
 // Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape.
@@ -64,7 +66,8 @@ void validate(const WorldSettings& s) {
     requireNonNegative("restitutionThreshold", s.restitutionThreshold);
 }
 
-World::World(const WorldSettings& settings) : solver_(std::make_unique<ContactSolver>()) {
+World::World(const WorldSettings& settings)
+    : solver_(std::make_unique<ContactSolver>()), continuous_(std::make_unique<ContinuousStage>()) {
     setSettings(settings);
 }
 World::~World() = default;
@@ -104,6 +107,8 @@ BodyId World::createBody(const BodyDef& def) {
     b.dynamicFriction = def.dynamicFriction;
     b.useGravity = def.useGravity;
     b.fixedRotation = def.fixedRotation;
+    b.detection = def.collisionDetection;
+    b.precision = def.precision;
     if (def.type != BodyType::Static) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
@@ -114,6 +119,7 @@ BodyId World::createBody(const BodyDef& def) {
     ++liveCount_;
     if (b.movable()) ++movableCount_;
     if (b.type == BodyType::Dynamic) ++dynamicCount_;
+    if (b.detection != CollisionDetection::Discrete) ++continuousCount_;
     return BodyId{index, generation};
 }
 
@@ -122,6 +128,7 @@ void World::destroyBody(BodyId id) {
     --liveCount_;
     if (b.movable()) --movableCount_;
     if (b.type == BodyType::Dynamic) --dynamicCount_;
+    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
     b.alive = false;
     freeList_.push_back(id.index);
     // Contacts that name the destroyed body must not be solved or warm-started again.
@@ -229,6 +236,18 @@ void World::setMass(BodyId id, double mass) {
     assignMass(requireDynamic(id, "setMass"), mass);
 }
 
+void World::setCollisionDetection(BodyId id, CollisionDetection mode, double precision) {
+    checkPrecision(precision);
+    BodyData& b = at(id);
+    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
+    if (mode != CollisionDetection::Discrete) ++continuousCount_;
+    b.detection = mode;
+    b.precision = precision;
+}
+
+CollisionDetection World::collisionDetection(BodyId id) const { return at(id).detection; }
+double World::collisionPrecision(BodyId id) const { return at(id).precision; }
+
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
     at(id).force += force;
@@ -312,9 +331,6 @@ void World::collide() {
     profile_.candidatePairs = pairs_.size();
     profile_.manifolds = contacts_.size();
 
-    // Continuous collision (time of impact for fast bodies) arrives with its own issue; no body asks for it yet.
-    runStage(profile_, Stage::Continuous, false, [] {});
-
     runStage(profile_, Stage::Solve, !contacts_.empty(), [&] {
         solver_->prepare(bodies_, contacts_, settings_);
         for (int i = 0; i < settings_.velocityIterations; ++i) solver_->solveVelocities(bodies_, contacts_);
@@ -324,8 +340,12 @@ void World::collide() {
 
 void World::finishStep() {
     if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
+    // Continuous detection runs here, after the solve, so the velocities it sweeps are final (ContinuousStage.hpp).
+    runStage(profile_, Stage::Continuous, continuousCount_ > 0,
+             [&] { continuous_->findImpacts(bodies_, dt_, settings_); });
     runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
         integratePositions(bodies_, dt_);
+        continuous_->placeBodies(bodies_);  // bodies that hit something end where their impacts left them
         if (!contacts_.empty())
             for (int i = 0; i < settings_.positionIterations; ++i)
                 solver_->correctPositions(bodies_, contacts_, settings_);

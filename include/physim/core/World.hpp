@@ -3,8 +3,9 @@
 //
 // One fixed step runs as three phases, so the framework can call the paper's entity hooks between them:
 //   beginStep(dt)  forces -> velocities
-//   collide()      broad phase -> narrow phase -> continuous -> contact solve
-//   finishStep()   velocities -> positions, position correction, sleep
+//   collide()      broad phase -> narrow phase -> contact solve
+//   finishStep()   continuous (time of impact, after the solve) -> velocities -> positions, position
+//                  correction, sleep
 // step(dt) runs all three. Each phase skips the stages the world's content does not call for.
 
 #include "physim/core/Body.hpp"
@@ -22,6 +23,7 @@ namespace physim {
 
 struct BodyData;       // internal storage, src/core/BodyData.hpp
 class ContactSolver;  // internal, src/core/ContactSolver.hpp
+class ContinuousStage;  // internal, src/core/ContinuousStage.hpp
 
 class World {
 public:
@@ -66,6 +68,11 @@ public:
     void setType(BodyId id, BodyType type);
     /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
     void setMass(BodyId id, double mass);
+    /// Discrete or continuous (sampled with `precision`, a fraction of the step in (0, 1], or exact) collision
+    /// detection; continuous detection acts on dynamic bodies. Throws std::invalid_argument for a bad precision.
+    void setCollisionDetection(BodyId id, CollisionDetection mode, double precision = kDefaultPrecision);
+    CollisionDetection collisionDetection(BodyId id) const;
+    double collisionPrecision(BodyId id) const;
 
     /// Force (N) at the centre of mass, accumulated until the end of the current step.
     void applyForce(BodyId id, const Vec2& force);
@@ -103,10 +110,12 @@ private:
     std::vector<Manifold> contacts_;
     std::vector<Manifold> previousContacts_;  // for warm starting
     std::unique_ptr<ContactSolver> solver_;
+    std::unique_ptr<ContinuousStage> continuous_;
     StepProfile profile_;
     std::size_t liveCount_ = 0;
     std::size_t movableCount_ = 0;  // dynamic + kinematic
     std::size_t dynamicCount_ = 0;
+    std::size_t continuousCount_ = 0;  // bodies whose detection is not Discrete
     Phase phase_ = Phase::Idle;
     double dt_ = 0.0;
     std::uint64_t stepCount_ = 0;
