@@ -29,6 +29,30 @@ void applyImpulse(BodyData& a, BodyData& b, const Vec2& n, const Vec2& c, const 
     b.w += j * b.invInertia * rnb;
 }
 
+// Normal (from a to b) and point of the contact between two placed shapes that touch or nearly touch: closest
+// points when apart, the narrow phase's manifold when overlapping. False when neither gives one.
+bool contactAt(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb, Vec2& normal,
+               Vec2& point) {
+    const DistanceOutput gap = shapeDistance(a, xa, b, xb);
+    if (gap.distance > 0.0) {
+        normal = gap.normal;
+        point = 0.5 * (gap.pointA + gap.pointB);
+        return true;
+    }
+    const Manifold m = collide(a, xa, b, xb);
+    if (m.pointCount == 0) return false;
+    normal = m.normal;
+    point = m.points[0].point;
+    return true;
+}
+
+// Normal speed (m/s) at which b approaches a at the contact point: > 0 when closing.
+double closingSpeed(const BodyData& a, const BodyData& b, const Vec2& n, const Vec2& c, const Transform& xa,
+                    const Transform& xb) {
+    const Vec2 relative = (b.v + cross(b.w, c - xb.p)) - (a.v + cross(a.w, c - xa.p));
+    return -relative.dot(n);
+}
+
 }  // namespace
 
 void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, const WorldSettings& settings) {
@@ -75,6 +99,17 @@ void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, cons
                 if (r.state == ToiState::Hit && r.t < first) {
                     first = r.t;
                     partner = j;
+                } else if (r.state == ToiState::Touching && first > 0.0) {
+                    // Touching at the start (the contact just met, or a resting one): the discrete contacts own
+                    // it, unless the bodies would close by more than the tolerance over the rest of the step
+                    // (the solve saw no contact within that hair's gap): then it is an impact now.
+                    Vec2 n, c;
+                    const Transform there = theirs.at(0.0);
+                    if (contactAt(body.shape, mine.at(0.0), bodies[j].shape, there, n, c) &&
+                        closingSpeed(body, bodies[j], n, c, mine.at(0.0), there) * rest * dt > kToiTolerance) {
+                        first = 0.0;
+                        partner = j;
+                    }
                 }
             }
             if (partner == bodies.size()) {  // free for the rest of the step
@@ -98,13 +133,9 @@ void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, cons
             const Transform bodyStart = body.xf, otherStart = other.xf;
             body.xf = here;
             other.xf = there;
-            const DistanceOutput gap = shapeDistance(body.shape, here, other.shape, there);
-            if (gap.distance > 0.0) {
-                applyImpulse(body, other, gap.normal, 0.5 * (gap.pointA + gap.pointB), settings);
-            } else {  // sampled: the first hitting pose overlaps; the narrow phase gives normal and point
-                const Manifold m = collide(body.shape, here, other.shape, there);
-                if (m.pointCount > 0) applyImpulse(body, other, m.normal, m.points[0].point, settings);
-            }
+            // Sampled hits overlap: contactAt then takes the narrow phase's normal and point.
+            Vec2 n, c;
+            if (contactAt(body.shape, here, other.shape, there, n, c)) applyImpulse(body, other, n, c, settings);
             body.xf = bodyStart;
             other.xf = otherStart;
             dp = dt * body.v;

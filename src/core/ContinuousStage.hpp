@@ -9,7 +9,8 @@
 //      min of the pair, none below the restitution threshold; no friction) to it and its partner;
 //   3. sweeps the rest of the step with the new velocity in the same way (up to kMaxImpacts impacts), so the
 //      body neither tunnels nor stops dead: it bounces or slides on for the remaining time.
-// Pairs already touching at the start of a (sub-)step are left to the discrete contacts. The integrator then
+// Pairs already touching at the start of a (sub-)step are left to the discrete contacts unless they would still
+// close by more than kToiTolerance over the rest of the step (then they are an impact at once). The integrator then
 // moves every body as usual, and placeBodies puts the bodies that hit something where step 3 ended them.
 
 #include "BodyData.hpp"

@@ -271,6 +271,18 @@ TEST(ContinuousCrossing, TwoFastBodiesMeetInsteadOfPassing) {
     EXPECT_GT(world.velocity(ib).x(), 100.0);
 }
 
+// A ball left within the tolerance of the wall (as an impact leaves it) and then fired into it at 1000 m/s: the
+// pair touches at the start of the step, yet the solve saw no contact (a gap, however small, is no contact), so
+// the stage must treat it as an impact at once rather than leave it to the discrete contacts.
+TEST(ContinuousWall, FiredFromTouchingDistanceDoesNotTunnel) {
+    for (const double gap : {0.0, 5e-5}) {
+        Shot s;
+        setUp(s, CollisionDetection::ContinuousExact, 1000.0, 0.0, kWallX - kHalfWall - kRadius - gap);
+        EXPECT_FALSE(tunnels(s, 1000.0, 0.0)) << gap;
+        EXPECT_LE(s.world.position(s.ball).x(), kWallX - kHalfWall - kRadius + 1e-9) << gap;
+    }
+}
+
 // A continuous body resting on the ground (touching at the start of every step) is left to the discrete
 // contacts: it neither sinks nor is frozen, it slides off under a push.
 TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
