@@ -5,6 +5,7 @@
 #include "physim/core/Body.hpp"
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
+#include "physim/core/TimeOfImpact.hpp"
 
 #include <cstdint>
 
@@ -38,6 +39,8 @@ struct BodyData {
     MassProperties unitMass;        // of the shape, per unit density
     Geometry shape;
     std::uint32_t generation = 0;
+    CollisionDetection detection = CollisionDetection::Discrete;
+    double precision = kDefaultPrecision;  // sampled continuous detection: spacing, fraction of the step
 
     bool movable() const { return type != BodyType::Static; }
 };

@@ -3,6 +3,7 @@
 #include "BodyData.hpp"
 #include "BroadPhase.hpp"
 #include "ContactSolver.hpp"
+#include "ContinuousStage.hpp"
 #include "Integrator.hpp"
 
 #include "physim/core/Collide.hpp"
@@ -36,6 +37,7 @@ void validate(const BodyDef& def) {
     requireNonNegative("body static friction", def.staticFriction);
     requireNonNegative("body dynamic friction", def.dynamicFriction);
     validate(def.shape);
+    checkPrecision(def.precision);
 }
 
 // Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape.
@@ -66,7 +68,8 @@ void validate(const WorldSettings& s) {
     requireNonNegative("restitutionThreshold", s.restitutionThreshold);
 }
 
-World::World(const WorldSettings& settings) : solver_(std::make_unique<ContactSolver>()) {
+World::World(const WorldSettings& settings)
+    : solver_(std::make_unique<ContactSolver>()), continuous_(std::make_unique<ContinuousStage>()) {
     setSettings(settings);
 }
 World::~World() = default;
@@ -106,6 +109,8 @@ BodyId World::createBody(const BodyDef& def) {
     b.dynamicFriction = def.dynamicFriction;
     b.useGravity = def.useGravity;
     b.fixedRotation = def.fixedRotation;
+    b.detection = def.collisionDetection;
+    b.precision = def.precision;
     if (def.type != BodyType::Static) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
@@ -116,6 +121,7 @@ BodyId World::createBody(const BodyDef& def) {
     ++liveCount_;
     if (b.movable()) ++movableCount_;
     if (b.type == BodyType::Dynamic) ++dynamicCount_;
+    if (b.detection != CollisionDetection::Discrete) ++continuousCount_;
     return BodyId{index, generation};
 }
 
@@ -124,6 +130,7 @@ void World::destroyBody(BodyId id) {
     --liveCount_;
     if (b.movable()) --movableCount_;
     if (b.type == BodyType::Dynamic) --dynamicCount_;
+    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
     b.alive = false;
     freeList_.push_back(id.index);
     // Contacts that name the destroyed body must not be solved or warm-started again.
@@ -240,6 +247,18 @@ void World::setFixedRotation(BodyId id, bool fixedRotation) {
 
 bool World::fixedRotation(BodyId id) const { return at(id).fixedRotation; }
 
+void World::setCollisionDetection(BodyId id, CollisionDetection mode, double precision) {
+    checkPrecision(precision);
+    BodyData& b = at(id);
+    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
+    if (mode != CollisionDetection::Discrete) ++continuousCount_;
+    b.detection = mode;
+    b.precision = precision;
+}
+
+CollisionDetection World::collisionDetection(BodyId id) const { return at(id).detection; }
+double World::collisionPrecision(BodyId id) const { return at(id).precision; }
+
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
     at(id).force += force;
@@ -351,9 +370,6 @@ void World::detectAndSolve() {
     profile_.candidatePairs = pairs_.size();
     profile_.manifolds = contacts_.size();
 
-    // Continuous collision (time of impact for fast bodies) arrives with its own issue; no body asks for it yet.
-    runStage(profile_, Stage::Continuous, false, [] {});
-
     runStage(profile_, Stage::Solve, !contacts_.empty(), [&] {
         solver_->prepare(bodies_, contacts_, settings_);
         for (int i = 0; i < settings_.velocityIterations; ++i) solver_->solveVelocities(bodies_, contacts_);
@@ -361,8 +377,13 @@ void World::detectAndSolve() {
 }
 
 void World::integrateAndCorrect() {
+    // Continuous detection runs here, after the substep's solve, so the velocities it sweeps are final
+    // (ContinuousStage.hpp); it sweeps this substep's motion, h_.
+    runStage(profile_, Stage::Continuous, continuousCount_ > 0,
+             [&] { continuous_->findImpacts(bodies_, h_, settings_); });
     runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
         integratePositions(bodies_, h_);
+        if (continuousCount_ > 0) continuous_->placeBodies(bodies_);  // hit bodies end where their impacts left them
         if (!contacts_.empty())
             for (int i = 0; i < settings_.positionIterations; ++i)
                 solver_->correctPositions(bodies_, contacts_, settings_);

@@ -1,5 +1,7 @@
 #include "physim/framework/RigidBody.hpp"
 
+#include "physim/core/Collide.hpp"
+#include "physim/core/TimeOfImpact.hpp"
 #include "physim/core/Validate.hpp"
 #include "physim/core/World.hpp"
 
@@ -124,6 +126,47 @@ void RigidBody::setKinematic(bool kinematic) {
 }
 bool RigidBody::isKinematic() const {
     return (world_ ? world_->type(id_) : def_.type) == BodyType::Kinematic;
+}
+
+void RigidBody::setCollisionDetectionMode(CollisionDetectionMode mode, ContinuousMethod method, double precision) {
+    checkPrecision(precision);
+    method_ = method;
+    const CollisionDetection core = mode == CollisionDetectionMode::DISCRETE ? CollisionDetection::Discrete
+                                    : method == ContinuousMethod::SAMPLED   ? CollisionDetection::ContinuousSampled
+                                                                            : CollisionDetection::ContinuousExact;
+    if (world_) world_->setCollisionDetection(id_, core, precision);
+    def_.collisionDetection = core;
+    def_.precision = precision;
+}
+
+CollisionDetectionMode RigidBody::collisionDetectionMode() const {
+    const CollisionDetection core = world_ ? world_->collisionDetection(id_) : def_.collisionDetection;
+    return core == CollisionDetection::Discrete ? CollisionDetectionMode::DISCRETE : CollisionDetectionMode::CONTINUOUS;
+}
+ContinuousMethod RigidBody::continuousMethod() const { return method_; }
+double RigidBody::precision() const { return world_ ? world_->collisionPrecision(id_) : def_.precision; }
+
+bool RigidBody::checkDiscreteCollision(const Vec2& position, const RigidBody& other) const {
+    requireFinite("checkDiscreteCollision position", position);
+    const Geometry& mine = world_ ? world_->shape(id_) : def_.shape;
+    const Geometry& theirs = other.world_ ? other.world_->shape(other.id_) : other.def_.shape;
+    const Transform here{position, Rotation::fromAngle(angle())};
+    const Transform there{other.position(), Rotation::fromAngle(other.angle())};
+    return collide(mine, here, theirs, there).pointCount > 0;
+}
+
+std::optional<Vec2> RigidBody::checkContinuousCollision(const Vec2& position, const RigidBody& other) const {
+    requireFinite("checkContinuousCollision position", position);
+    const Geometry& mine = world_ ? world_->shape(id_) : def_.shape;
+    const Geometry& theirs = other.world_ ? other.world_->shape(other.id_) : other.def_.shape;
+    const Sweep path{this->position(), position, angle(), angle()};
+    const Sweep still{other.position(), other.position(), other.angle(), other.angle()};
+    const bool sampled = collisionDetectionMode() == CollisionDetectionMode::CONTINUOUS &&
+                         method_ == ContinuousMethod::SAMPLED;
+    const ToiResult r = sampled ? sampledTimeOfImpact(mine, path, theirs, still, precision())
+                                : timeOfImpact(mine, path, theirs, still);
+    if (r.state == ToiState::Separated) return std::nullopt;
+    return path.at(r.t).p;
 }
 
 void RigidBody::attach(World& world) {

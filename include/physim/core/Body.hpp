@@ -3,6 +3,7 @@
 
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
+#include "physim/core/TimeOfImpact.hpp"
 
 #include <cstdint>
 #include <limits>
@@ -38,6 +39,9 @@ struct BodyDef {
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
     bool useGravity = true;
     bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it
+    /// Discrete, or continuous (sampled or exact time of impact; dynamic bodies only, docs/ccd.md).
+    CollisionDetection collisionDetection = CollisionDetection::Discrete;
+    double precision = kDefaultPrecision;  ///< sampled method's spacing, fraction of the step, in (0, 1]
 };
 
 }  // namespace physim

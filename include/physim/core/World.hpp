@@ -3,8 +3,9 @@
 //
 // One fixed step runs as three phases, so the framework can call the paper's entity hooks between them:
 //   beginStep(dt)  forces -> velocities
-//   collide()      broad phase -> narrow phase -> continuous -> contact solve
-//   finishStep()   velocities -> positions, position correction, sleep
+//   collide()      broad phase -> narrow phase -> contact solve
+//   finishStep()   continuous (time of impact, after the solve) -> velocities -> positions, position
+//                  correction, sleep
 // step(dt) runs all three. Each phase skips the stages the world's content does not call for.
 // With settings().substeps = n > 1 every phase's work is done n times with dt / n: beginStep applies the
 // first substep's forces, collide runs substeps 1 .. n-1 whole and the last one up to its solve, and
@@ -25,6 +26,7 @@ namespace physim {
 
 struct BodyData;       // internal storage, src/core/BodyData.hpp
 class ContactSolver;  // internal, src/core/ContactSolver.hpp
+class ContinuousStage;  // internal, src/core/ContinuousStage.hpp
 
 class World {
 public:
@@ -74,6 +76,12 @@ public:
     void setFixedRotation(BodyId id, bool fixedRotation);
     bool fixedRotation(BodyId id) const;
 
+    /// Discrete or continuous (sampled with `precision`, a fraction of the step in (0, 1], or exact) collision
+    /// detection; continuous detection acts on dynamic bodies. Throws std::invalid_argument for a bad precision.
+    void setCollisionDetection(BodyId id, CollisionDetection mode, double precision = kDefaultPrecision);
+    CollisionDetection collisionDetection(BodyId id) const;
+    double collisionPrecision(BodyId id) const;
+
     /// Force (N) at the centre of mass, accumulated until the end of the current step.
     void applyForce(BodyId id, const Vec2& force);
     /// Force (N) applied at a world point (m): also adds the torque r x F.
@@ -114,10 +122,12 @@ private:
     std::vector<Manifold> contacts_;
     std::vector<Manifold> previousContacts_;  // for warm starting
     std::unique_ptr<ContactSolver> solver_;
+    std::unique_ptr<ContinuousStage> continuous_;
     StepProfile profile_;
     std::size_t liveCount_ = 0;
     std::size_t movableCount_ = 0;  // dynamic + kinematic
     std::size_t dynamicCount_ = 0;
+    std::size_t continuousCount_ = 0;  // bodies whose detection is not Discrete
     Phase phase_ = Phase::Idle;
     double dt_ = 0.0;
     double h_ = 0.0;  // substep, s

@@ -7,6 +7,8 @@
 #include "physim/core/Math.hpp"
 #include "physim/framework/Behavior.hpp"
 
+#include <optional>
+
 namespace physim {
 
 class World;
@@ -15,6 +17,13 @@ class World;
 /// ACCELERATION m/s^2 and FORCE N act over the step (accumulated, cleared after it);
 /// IMPULSE N s and VELOCITY m/s change the velocity at once (VELOCITY ignores mass).
 enum class ForceMode { ACCELERATION, FORCE, IMPULSE, VELOCITY };
+
+/// The paper's collision-detection modes (section 5.1): DISCRETE tests only where the body ends each step;
+/// CONTINUOUS also finds contacts during the step, by the method below (docs/ccd.md).
+enum class CollisionDetectionMode { DISCRETE, CONTINUOUS };
+/// SAMPLED: the paper's loop over positions at steps of `precision` (fraction of the step); EXACT: time of
+/// impact by conservative advancement (cannot miss a contact the sampling finds; gap below 1e-4 m).
+enum class ContinuousMethod { SAMPLED, EXACT };
 
 class RigidBody : public Behavior {
 public:
@@ -54,6 +63,21 @@ public:
     void setKinematic(bool kinematic);
     bool isKinematic() const;
 
+    /// Chooses how this body's collisions are found. precision (SAMPLED only, but always checked) in (0, 1];
+    /// throws std::invalid_argument naming a bad value. Continuous detection acts on dynamic bodies.
+    void setCollisionDetectionMode(CollisionDetectionMode mode, ContinuousMethod method = ContinuousMethod::EXACT,
+                                   double precision = kDefaultPrecision);
+    CollisionDetectionMode collisionDetectionMode() const;
+    ContinuousMethod continuousMethod() const;  ///< EXACT while the mode is DISCRETE and nothing else was set
+    double precision() const;
+    /// The paper's checkDiscreteCollision: would this body, moved to `position` (m, same angle), touch `other`
+    /// where it is now?
+    bool checkDiscreteCollision(const Vec2& position, const RigidBody& other) const;
+    /// The paper's checkContinuousCollision: moving from where it is to `position` (m, same angle), the first
+    /// position where this body touches `other`, found by this body's method (SAMPLED with its precision, or
+    /// EXACT; a DISCRETE body uses EXACT here); nullopt when it passes clear.
+    std::optional<Vec2> checkContinuousCollision(const Vec2& position, const RigidBody& other) const;
+
     /// The world body, once the entity has been added to a simulation; null before.
     BodyId bodyId() const { return id_; }
     bool attached() const { return world_ != nullptr; }
@@ -72,6 +96,7 @@ private:
     BodyId id_;
     BodyDef def_;
     double massOverride_ = -1.0;  // kg set before attach; < 0: from density
+    ContinuousMethod method_ = ContinuousMethod::EXACT;  // kept while DISCRETE, so switching back restores it
 };
 
 }  // namespace physim

@@ -1,0 +1,312 @@
+// Continuous collision detection in the World: tunnelling through a thin wall with each method, a rotating plank,
+// two fast bodies crossing, the stage's skipping and bad input. No gravity unless said, 60 Hz.
+
+#include "physim/core/World.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace physim {
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+// Each step runs the world's substeps, each detecting and moving the bodies over h: discrete detection and the
+// sampled method see positions h apart, not kDt.
+const double kH = kDt / WorldSettings{}.substeps;
+constexpr double kRadius = 0.01;     // the 2 cm circle (diameter)
+constexpr double kHalfWall = 0.005;  // the 1 cm wall
+constexpr double kWallX = 1.0;       // wall centre; its near face is at 0.995
+
+WorldSettings noGravity() {
+    WorldSettings s;
+    s.gravity = Vec2::Zero();
+    return s;
+}
+
+struct Shot {
+    World world{noGravity()};
+    BodyId ball;
+    BodyId wall;
+};
+
+// The circle starts at (x0, 0) moving at `speed` m/s at `angle` rad from +x towards a tall static wall.
+void setUp(Shot& s, CollisionDetection mode, double speed, double angle, double x0 = 0.0,
+           double precision = 0.1, double restitution = 0.0) {
+    BodyDef wall;
+    wall.type = BodyType::Static;
+    wall.shape = makeBox(kHalfWall, 50.0);
+    wall.position = {kWallX, 0.0};
+    wall.restitution = restitution;
+    s.wall = s.world.createBody(wall);
+    BodyDef ball;
+    ball.shape = makeCircle(kRadius);
+    ball.position = {x0, 0.0};
+    ball.velocity = speed * Vec2(std::cos(angle), std::sin(angle));
+    ball.restitution = restitution;
+    ball.collisionDetection = mode;
+    ball.precision = precision;
+    s.ball = s.world.createBody(ball);
+}
+
+// Steps until the ball has had time to travel 2 m (past the wall if nothing stops it); true if it ends beyond.
+bool tunnels(Shot& s, double speed, double angle) {
+    const int steps = static_cast<int>(std::ceil(2.0 / (speed * std::cos(angle) * kDt))) + 1;
+    for (int i = 0; i < steps; ++i) s.world.step(kDt);
+    return s.world.position(s.ball).x() > kWallX;
+}
+
+TEST(ContinuousStage, RunsOnlyWhenABodyAsksForIt) {
+    Shot s;
+    setUp(s, CollisionDetection::Discrete, 10.0, 0.0);
+    s.world.step(kDt);
+    EXPECT_FALSE(s.world.profile().didRun(Stage::Continuous));
+    s.world.setCollisionDetection(s.ball, CollisionDetection::ContinuousExact);
+    s.world.step(kDt);
+    EXPECT_TRUE(s.world.profile().didRun(Stage::Continuous));
+    s.world.setCollisionDetection(s.ball, CollisionDetection::ContinuousSampled, 0.25);
+    EXPECT_EQ(s.world.collisionDetection(s.ball), CollisionDetection::ContinuousSampled);
+    EXPECT_EQ(s.world.collisionPrecision(s.ball), 0.25);
+    s.world.step(kDt);
+    EXPECT_TRUE(s.world.profile().didRun(Stage::Continuous));
+    s.world.setCollisionDetection(s.ball, CollisionDetection::Discrete);
+    s.world.step(kDt);
+    EXPECT_FALSE(s.world.profile().didRun(Stage::Continuous));
+    // Destroying a continuous body stops the stage.
+    s.world.setCollisionDetection(s.ball, CollisionDetection::ContinuousExact);
+    s.world.destroyBody(s.ball);
+    s.world.step(kDt);
+    EXPECT_FALSE(s.world.profile().didRun(Stage::Continuous));
+}
+
+TEST(ContinuousStage, BadPrecisionIsRejectedNamingTheValue) {
+    Shot s;
+    setUp(s, CollisionDetection::Discrete, 1.0, 0.0);
+    for (const double bad : {0.0, -1.0, 1.01, std::nan("")}) {
+        try {
+            s.world.setCollisionDetection(s.ball, CollisionDetection::ContinuousSampled, bad);
+            ADD_FAILURE() << bad;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("precision"), std::string::npos) << e.what();
+        }
+        BodyDef def;
+        def.precision = bad;
+        EXPECT_THROW(s.world.createBody(def), std::invalid_argument) << bad;
+    }
+    EXPECT_EQ(s.world.collisionDetection(s.ball), CollisionDetection::Discrete) << "nothing changed";
+}
+
+// The problem exists: at high speed the discrete circle passes the wall (at 100 m/s it moves 42 cm per substep
+// against an overlap window of 2 r + wall = 3 cm along its path).
+TEST(ContinuousWall, DiscreteTunnelsAtHighSpeed) {
+    for (const double speed : {100.0, 1000.0}) {
+        Shot s;
+        setUp(s, CollisionDetection::Discrete, speed, 0.0);
+        EXPECT_TRUE(tunnels(s, speed, 0.0)) << speed;
+    }
+    // Discrete detection also tunnels when the first overlapping pose has the centre past the wall's middle
+    // (the shortest way out is then forwards): moving 1/60 m per substep from x = 0 the ball lands exactly on
+    // the middle plane x = 1 and goes through. At 0.5 m/s (2.1 mm per substep) the first overlapping pose is at
+    // most 2.1 mm into the 3 cm window, before the middle: it stops.
+    const double onThePlane = (1.0 / 60.0) / kH;  // m/s
+    Shot one;
+    setUp(one, CollisionDetection::Discrete, onThePlane, 0.0);
+    EXPECT_TRUE(tunnels(one, onThePlane, 0.0));
+    Shot slow;
+    setUp(slow, CollisionDetection::Discrete, 0.5, 0.0);
+    EXPECT_FALSE(tunnels(slow, 0.5, 0.0));
+}
+
+// Exact time of impact never tunnels, for speeds 1 to 1000 m/s and angles up to 60 degrees off the normal, and
+// does not stop dead: with restitution 0 the normal speed goes and the tangential speed stays (frictionless
+// impact), so the ball slides on along the wall. It ends within the TOI tolerance (1e-4 m) plus the linear slop
+// (5e-3 m, the overlap the solver leaves alone) of the wall's face, never beyond it.
+TEST(ContinuousWall, ExactNeverTunnelsOverSpeedsAndAngles) {
+    for (const double speed : {1.0, 3.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
+        for (const double degrees : {-60.0, -30.0, 0.0, 15.0, 45.0, 60.0}) {
+            const double angle = degrees * M_PI / 180.0;
+            Shot s;
+            setUp(s, CollisionDetection::ContinuousExact, speed, angle);
+            EXPECT_FALSE(tunnels(s, speed, angle)) << speed << " m/s at " << degrees;
+            const double face = kWallX - kHalfWall - kRadius;  // centre x when touching
+            EXPECT_LE(s.world.position(s.ball).x(), face + 1e-9) << speed << " " << degrees;
+            EXPECT_GE(s.world.position(s.ball).x(), face - 0.005 - 1e-4) << speed << " " << degrees;
+            EXPECT_NEAR(s.world.velocity(s.ball).y(), speed * std::sin(angle), 1e-6 * speed)
+                << "tangential speed kept: " << speed << " " << degrees;
+            EXPECT_LE(std::abs(s.world.velocity(s.ball).x()), 1e-6 * speed) << speed << " " << degrees;
+        }
+}
+
+// Head on, the step of the impact ends with the ball at the contact (the gap is below the 1e-4 m tolerance),
+// and with restitution 1 it leaves at the speed it came.
+TEST(ContinuousWall, ImpactStepEndsAtTheContactAndBounces) {
+    Shot s;
+    setUp(s, CollisionDetection::ContinuousExact, 500.0, 0.0, 0.0, 0.1, 1.0);
+    s.world.step(kDt);
+    s.world.step(kDt);  // 8.3 m of travel in two steps: the impact is in the first
+    const double face = kWallX - kHalfWall - kRadius;
+    EXPECT_LT(s.world.position(s.ball).x(), face);
+    EXPECT_NEAR(s.world.velocity(s.ball).x(), -500.0, 1e-9);
+    // The bounce happens inside the step: the remaining time is spent moving back.
+    Shot once;
+    setUp(once, CollisionDetection::ContinuousExact, 100.0, 0.0, 0.0, 0.1, 1.0);
+    once.world.step(kDt);  // 1.667 m: reaches the face (0.985) and comes back 0.682 m
+    EXPECT_NEAR(once.world.position(once.ball).x(), 2 * face - 100.0 * kDt, 2e-4);
+    Shot stop;
+    setUp(stop, CollisionDetection::ContinuousExact, 100.0, 0.0);
+    stop.world.step(kDt);
+    EXPECT_NEAR(stop.world.position(stop.ball).x(), face, kToiTolerance);
+    EXPECT_LE(stop.world.position(stop.ball).x(), face);
+}
+
+// The sampled method tunnels exactly where its precision predicts. With no gravity the samples of every substep
+// lie on one grid along the path: x0 + k * speed * h * precision' (precision' = 1 / ceil(1 / precision)). The ball
+// is stopped at the first grid point inside the overlap window [0.985, 1.015] (touching counts) if that point is
+// before the wall's middle plane x = 1: past it, the overlap's shortest way out is forwards and the ball goes on
+// (as discrete detection does). So it tunnels exactly when the first grid point at or past 0.985 is beyond 1.0.
+// Cases with that grid point within 1e-9 m of 0.985 or 1.0 (ties) are not counted.
+TEST(ContinuousWall, SampledTunnelsOnlyWherePrecisionPredicts) {
+    const double lo = kWallX - kHalfWall - kRadius;
+    int predictedTunnels = 0, predictedStops = 0;
+    for (const double precision : {1.0, 0.5, 0.25, 0.1, 0.05, 0.01})
+        for (const double speed : {1.0, 10.0, 30.0, 100.0, 300.0, 1000.0})
+            for (const double x0 : {0.0, 0.0013, 0.0071, 0.0239}) {
+                const double n = std::ceil((1.0 - 1e-12) / precision);
+                const double spacing = speed * kH / n;
+                const double firstInside = x0 + std::ceil((lo - x0) / spacing) * spacing;
+                const double below = firstInside - spacing;
+                if (std::abs(firstInside - lo) < 1e-9 || std::abs(firstInside - kWallX) < 1e-9 ||
+                    std::abs(below - lo) < 1e-9)
+                    continue;
+                const bool predicted = firstInside > kWallX;
+                Shot s;
+                setUp(s, CollisionDetection::ContinuousSampled, speed, 0.0, x0, precision);
+                EXPECT_EQ(tunnels(s, speed, 0.0), predicted)
+                    << "precision " << precision << ", " << speed << " m/s, x0 " << x0;
+                (predicted ? predictedTunnels : predictedStops)++;
+            }
+    EXPECT_GT(predictedTunnels, 10);
+    EXPECT_GT(predictedStops, 10);
+}
+
+// A thin plank spinning at 60 rad/s (1 rad per step) sweeps past a ball in one step. Discrete detection misses
+// it. With the exact time of impact the plank hits the ball (restitution 0): the ball is knocked towards -x (a
+// counter-clockwise turn, ball on +y), the plank turns on more slowly for the rest of the step and ends behind
+// the ball, not through it; the impact conserves angular momentum about the origin (an equal and opposite
+// impulse at one point), to rounding (1e-12 relative).
+TEST(ContinuousPlank, RotatingPlankHitsTheBall) {
+    for (const auto mode : {CollisionDetection::Discrete, CollisionDetection::ContinuousExact}) {
+        World world(noGravity());
+        BodyDef plank;
+        plank.shape = makeBox(1.0, 0.005);
+        plank.angle = 0.9;  // the face reaches the ball at acos(0.055 / 0.5) = 1.460 rad, within this step
+        plank.angularVelocity = 60.0;
+        plank.collisionDetection = mode;
+        const BodyId p = world.createBody(plank);
+        BodyDef ball;
+        ball.shape = makeCircle(0.05);
+        ball.position = {0.0, 0.5};
+        const BodyId b = world.createBody(ball);
+        world.step(kDt);
+        const double contact = std::acos(0.055 / 0.5);
+        if (mode == CollisionDetection::Discrete) {
+            EXPECT_EQ(world.velocity(b), Vec2::Zero()) << "the plank passed through the ball";
+            EXPECT_NEAR(world.angle(p), 1.9, 1e-12);
+        } else {
+            EXPECT_LT(world.velocity(b).x(), -1.0) << "the ball was hit";
+            EXPECT_GT(world.angle(p), contact) << "not stopped dead";
+            EXPECT_LT(world.angularVelocity(p), 60.0);
+            const Vec2 ballAt = world.position(b);
+            EXPECT_GT(std::atan2(ballAt.y(), ballAt.x()), world.angle(p)) << "the ball is still ahead of the plank";
+            const double before = world.inertia(p) * 60.0;
+            const double after = world.inertia(p) * world.angularVelocity(p) +
+                                 world.mass(p) * cross(world.position(p), world.velocity(p)) +
+                                 world.mass(b) * cross(ballAt, world.velocity(b));
+            EXPECT_NEAR(after, before, 1e-12 * before);
+        }
+    }
+}
+
+// Two balls 2 m apart closing at 300 m/s each (5 m per step) pass through each other with discrete detection.
+// With both continuous they meet and, with restitution 1 and equal masses, swap velocities. Crossing paths at a
+// right angle, they collide at the crossing instead of passing.
+TEST(ContinuousCrossing, TwoFastBodiesMeetInsteadOfPassing) {
+    for (const auto mode : {CollisionDetection::Discrete, CollisionDetection::ContinuousExact}) {
+        World world(noGravity());
+        BodyDef a;
+        a.shape = makeCircle(0.05);
+        a.position = {-1.0, 0.0};
+        a.velocity = {300.0, 0.0};
+        a.restitution = 1.0;
+        a.collisionDetection = mode;
+        BodyDef b = a;
+        b.position = {1.0, 0.0};
+        b.velocity = {-300.0, 0.0};
+        const BodyId ia = world.createBody(a), ib = world.createBody(b);
+        world.step(kDt);
+        if (mode == CollisionDetection::Discrete) {
+            EXPECT_GT(world.position(ia).x(), world.position(ib).x()) << "passed through each other";
+        } else {
+            EXPECT_LT(world.position(ia).x(), world.position(ib).x());
+            EXPECT_NEAR(world.velocity(ia).x(), -300.0, 1e-9);
+            EXPECT_NEAR(world.velocity(ib).x(), 300.0, 1e-9);
+            // Each spent the rest of the step moving back from the meeting point (x = +-0.05).
+            EXPECT_NEAR(world.position(ia).x(), -0.05 - (300.0 * kDt - 0.95), 1e-3);
+        }
+    }
+    World world(noGravity());
+    BodyDef a;
+    a.shape = makeCircle(0.05);
+    a.position = {-1.0, 0.0};
+    a.velocity = {300.0, 0.0};
+    a.collisionDetection = CollisionDetection::ContinuousExact;
+    BodyDef b = a;
+    b.position = {0.0, -1.0};
+    b.velocity = {0.0, 300.0};
+    const BodyId ia = world.createBody(a), ib = world.createBody(b);
+    world.step(kDt);
+    // Without the impact a would be at (4, 0) and b at (0, 4). Meeting at the crossing, the impulse along the
+    // line of centres (1, 1)/sqrt(2) removes the closing speed: each keeps the other's component.
+    EXPECT_LT(world.position(ia).x(), 3.0);
+    EXPECT_LT(world.position(ib).y(), 3.0);
+    EXPECT_GT(world.velocity(ia).y(), 100.0);
+    EXPECT_GT(world.velocity(ib).x(), 100.0);
+}
+
+// A ball left within the tolerance of the wall (as an impact leaves it) and then fired into it at 1000 m/s: the
+// pair touches at the start of the step, yet the solve saw no contact (a gap, however small, is no contact), so
+// the stage must treat it as an impact at once rather than leave it to the discrete contacts.
+TEST(ContinuousWall, FiredFromTouchingDistanceDoesNotTunnel) {
+    for (const double gap : {0.0, 5e-5}) {
+        Shot s;
+        setUp(s, CollisionDetection::ContinuousExact, 1000.0, 0.0, kWallX - kHalfWall - kRadius - gap);
+        EXPECT_FALSE(tunnels(s, 1000.0, 0.0)) << gap;
+        EXPECT_LE(s.world.position(s.ball).x(), kWallX - kHalfWall - kRadius + 1e-9) << gap;
+    }
+}
+
+// A continuous body resting on the ground (touching at the start of every step) is left to the discrete
+// contacts: it neither sinks nor is frozen, it slides off under a push.
+TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
+    World world;
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.shape = makeBox(50.0, 0.5);
+    ground.position = {0.0, -0.5};
+    world.createBody(ground);
+    BodyDef box;
+    box.shape = makeBox(0.1, 0.1);
+    box.position = {0.0, 0.1};
+    box.collisionDetection = CollisionDetection::ContinuousExact;
+    const BodyId id = world.createBody(box);
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    EXPECT_NEAR(world.position(id).y(), 0.1, 0.006) << "within the linear slop";
+    world.setVelocity(id, {5.0, 0.0});
+    world.step(kDt);
+    EXPECT_GT(world.position(id).x(), 0.05);
+}
+
+}  // namespace
+}  // namespace physim
