@@ -28,6 +28,9 @@ struct BodyData {
     bool useGravity = true;
     bool fixedRotation = false;
     bool alive = false;
+    bool awake = true;              // asleep: skipped by integration, and its pairs by the narrow phase
+    bool allowSleep = true;
+    double sleepTime = 0.0;         // s spent below the sleep tolerances
 
     // Cold: material and shape.
     double mass = 0.0;              // kg, 0 when immovable

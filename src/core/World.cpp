@@ -9,7 +9,9 @@
 #include "physim/core/Collide.hpp"
 #include "physim/core/Validate.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -66,6 +68,9 @@ void validate(const WorldSettings& s) {
                                     std::to_string(s.positionIterations));
     requireNonNegative("linearSlop", s.linearSlop);
     requireNonNegative("restitutionThreshold", s.restitutionThreshold);
+    requireNonNegative("sleepLinearTolerance", s.sleepLinearTolerance);
+    requireNonNegative("sleepAngularTolerance", s.sleepAngularTolerance);
+    requirePositive("timeToSleep", s.timeToSleep);
 }
 
 World::World(const WorldSettings& settings)
@@ -79,6 +84,8 @@ World& World::operator=(World&&) noexcept = default;
 void World::setSettings(const WorldSettings& settings) {
     physim::validate(settings);
     settings_ = settings;
+    if (!settings_.enableSleep)
+        for (BodyData& b : bodies_) b.awake = true, b.sleepTime = 0.0;
 }
 
 // --- bodies ------------------------------------------------------------------------------------------
@@ -109,6 +116,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.dynamicFriction = def.dynamicFriction;
     b.useGravity = def.useGravity;
     b.fixedRotation = def.fixedRotation;
+    b.allowSleep = def.allowSleep;
     b.detection = def.collisionDetection;
     b.precision = def.precision;
     if (def.type != BodyType::Static) {
@@ -133,6 +141,11 @@ void World::destroyBody(BodyId id) {
     if (b.detection != CollisionDetection::Discrete) --continuousCount_;
     b.alive = false;
     freeList_.push_back(id.index);
+    // Bodies that were resting on it must fall: wake everything whose box touches its box.
+    const Aabb gone = computeAabb(b.shape, b.xf).fattened(settings_.linearSlop);
+    for (BodyData& other : bodies_)
+        if (other.alive && !other.awake && computeAabb(other.shape, other.xf).overlaps(gone))
+            other.awake = true, other.sleepTime = 0.0;
     // Contacts that name the destroyed body must not be solved or warm-started again.
     auto names = [&](const Manifold& m) { return m.bodyA == id || m.bodyB == id; };
     contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), names), contacts_.end());
@@ -184,7 +197,7 @@ bool World::useGravity(BodyId id) const { return at(id).useGravity; }
 void World::setTransform(BodyId id, const Vec2& position, double angle) {
     requireFinite("body position", position);
     requireFinite("body angle", angle);
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     b.xf.p = position;
     b.angle = angle;
     b.xf.q = Rotation::fromAngle(angle);
@@ -192,13 +205,13 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
     requireFinite("body velocity", velocity);
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     if (b.movable()) b.v = velocity;
 }
 
 void World::setAngularVelocity(BodyId id, double angularVelocity) {
     requireFinite("body angular velocity", angularVelocity);
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     if (b.movable() && !b.fixedRotation) b.w = angularVelocity;
 }
 
@@ -215,7 +228,7 @@ void World::setMaterial(BodyId id, double restitution, double staticFriction, do
 }
 
 void World::setType(BodyId id, BodyType type) {
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     if (b.type == type) return;
     if (b.movable()) --movableCount_;
     if (b.type == BodyType::Dynamic) --dynamicCount_;
@@ -236,16 +249,40 @@ void World::setType(BodyId id, BodyType type) {
 void World::setMass(BodyId id, double mass) {
     requirePositive("body mass", mass);
     assignMass(requireDynamic(id, "setMass"), mass);
+    wake(id);
 }
 
 void World::setFixedRotation(BodyId id, bool fixedRotation) {
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     b.fixedRotation = fixedRotation;
     if (b.type == BodyType::Dynamic) assignMass(b, b.mass);  // recomputes the inverse inertia
     if (fixedRotation) b.w = 0.0;
 }
 
 bool World::fixedRotation(BodyId id) const { return at(id).fixedRotation; }
+
+BodyData& World::wake(BodyId id) {
+    BodyData& b = at(id);
+    b.awake = true;
+    b.sleepTime = 0.0;
+    return b;
+}
+
+bool World::isAwake(BodyId id) const { return at(id).awake; }
+
+void World::setAwake(BodyId id, bool awake) {
+    BodyData& b = at(id);
+    if (awake || b.type != BodyType::Dynamic || !settings_.enableSleep) {
+        wake(id);
+        return;
+    }
+    b.awake = false;
+    b.v.setZero();
+    b.w = 0.0;
+}
+
+void World::setAllowSleep(BodyId id, bool allowSleep) { wake(id).allowSleep = allowSleep; }
+bool World::allowSleep(BodyId id) const { return at(id).allowSleep; }
 
 void World::setCollisionDetection(BodyId id, CollisionDetection mode, double precision) {
     checkPrecision(precision);
@@ -261,25 +298,25 @@ double World::collisionPrecision(BodyId id) const { return at(id).precision; }
 
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
-    at(id).force += force;
+    wake(id).force += force;
 }
 
 void World::applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint) {
     requireFinite("force", force);
     requireFinite("force application point", worldPoint);
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     b.force += force;
     b.torque += cross(worldPoint - b.xf.p, force);
 }
 
 void World::applyTorque(BodyId id, double torque) {
     requireFinite("torque", torque);
-    at(id).torque += torque;
+    wake(id).torque += torque;
 }
 
 void World::applyLinearImpulse(BodyId id, const Vec2& impulse) {
     requireFinite("impulse", impulse);
-    BodyData& b = at(id);
+    BodyData& b = wake(id);
     b.v += b.invMass * impulse;
 }
 
@@ -320,11 +357,79 @@ void World::collide() {
 void World::finishStep() {
     if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
     integrateAndCorrect();
-    // Sleeping arrives with the dynamics issue; until then every body is always awake.
-    runStage(profile_, Stage::Sleep, false, [] {});
+    runStage(profile_, Stage::Sleep, settings_.enableSleep && dynamicCount_ > 0, [&] { updateSleep(); });
     clearForces(bodies_);
     ++stepCount_;
     phase_ = Phase::Idle;
+}
+
+// An awake body that can move: pairs with one are collided; a sleeping body touched by one wakes. A kinematic
+// body at rest never wakes a sleeper.
+bool World::isActive(const BodyData& b) {
+    if (!b.alive || !b.awake || b.type == BodyType::Static) return false;
+    return b.type == BodyType::Dynamic || b.v != Vec2::Zero() || b.w != 0.0;
+}
+
+// A sleeping island touched by an active body wakes whole: wake each sleeper in contact with an active body,
+// repeated until nothing changes, so the wake travels through a resting pile in one step.
+void World::wakeTouchingSleepers() {
+    for (bool woke = true; woke;) {
+        woke = false;
+        for (const auto& [a, b] : pairs_) {
+            BodyData& A = bodies_[a];
+            BodyData& B = bodies_[b];
+            BodyData* sleeper = (!A.awake && isActive(B)) ? &A : (!B.awake && isActive(A)) ? &B : nullptr;
+            if (!sleeper) continue;
+            if (physim::collide(A.shape, A.xf, B.shape, B.xf).pointCount == 0) continue;
+            sleeper->awake = true;
+            sleeper->sleepTime = 0.0;
+            woke = true;
+        }
+    }
+}
+
+// Islands are the dynamic bodies joined by the last substep's contacts (static and kinematic bodies do not join
+// them). An island sleeps when every body in it has stayed below the speed tolerances for timeToSleep; a body
+// that may not sleep, or a moving kinematic body touching the island, keeps it awake.
+void World::updateSleep() {
+    const std::size_t n = bodies_.size();
+    islandParent_.resize(n);
+    for (std::uint32_t i = 0; i < n; ++i) islandParent_[i] = i;
+    auto find = [&](std::uint32_t i) {
+        while (islandParent_[i] != i) i = islandParent_[i] = islandParent_[islandParent_[i]];
+        return i;
+    };
+    auto canSleep = [](const BodyData& b) { return b.alive && b.awake && b.type == BodyType::Dynamic; };
+
+    for (BodyData& b : bodies_) {
+        if (!canSleep(b)) continue;
+        const bool still = b.v.norm() <= settings_.sleepLinearTolerance &&
+                           std::abs(b.w) <= settings_.sleepAngularTolerance;
+        b.sleepTime = (b.allowSleep && still) ? b.sleepTime + dt_ : 0.0;
+    }
+    for (const Manifold& m : contacts_) {
+        const std::uint32_t a = m.bodyA.index, b = m.bodyB.index;
+        if (bodies_[a].type == BodyType::Dynamic && bodies_[b].type == BodyType::Dynamic)
+            islandParent_[find(a)] = find(b);
+    }
+    // An island's sleep time is its least rested body's; a moving kinematic body touching it resets it.
+    islandSleepTime_.assign(n, INFINITY);
+    for (std::uint32_t i = 0; i < n; ++i)
+        if (canSleep(bodies_[i])) islandSleepTime_[find(i)] = std::min(islandSleepTime_[find(i)], bodies_[i].sleepTime);
+    for (const Manifold& m : contacts_) {
+        const std::uint32_t a = m.bodyA.index, b = m.bodyB.index;
+        const bool kinematicA = bodies_[a].type == BodyType::Kinematic;
+        const bool kinematicB = bodies_[b].type == BodyType::Kinematic;
+        if (kinematicA && isActive(bodies_[a])) islandSleepTime_[find(b)] = 0.0;
+        if (kinematicB && isActive(bodies_[b])) islandSleepTime_[find(a)] = 0.0;
+    }
+    for (std::uint32_t i = 0; i < n; ++i) {
+        BodyData& b = bodies_[i];
+        if (!canSleep(b) || islandSleepTime_[find(i)] < settings_.timeToSleep) continue;
+        b.awake = false;
+        b.v.setZero();
+        b.w = 0.0;
+    }
 }
 
 void World::integrateForces() {
@@ -341,10 +446,12 @@ void World::detectAndSolve() {
              [&] { findCandidatePairs(bodies_, pairs_, sweepOrder_); });
 
     runStage(profile_, Stage::NarrowPhase, !pairs_.empty(), [&] {
+        if (settings_.enableSleep) wakeTouchingSleepers();
         std::size_t previous = 0;  // both lists are sorted by (a, b): match them in one pass
         for (const auto& [a, b] : pairs_) {
             const BodyData& A = bodies_[a];
             const BodyData& B = bodies_[b];
+            if (!isActive(A) && !isActive(B)) continue;  // asleep against asleep or static: nothing happens
             Manifold m = physim::collide(A.shape, A.xf, B.shape, B.xf);
             if (m.pointCount == 0) continue;
             m.bodyA = BodyId{a, A.generation};

@@ -169,6 +169,16 @@ std::optional<Vec2> RigidBody::checkContinuousCollision(const Vec2& position, co
     return path.at(r.t).p;
 }
 
+bool RigidBody::isAwake() const { return world_ ? world_->isAwake(id_) : true; }
+void RigidBody::wakeUp() {
+    if (world_) world_->setAwake(id_, true);
+}
+void RigidBody::setAllowSleep(bool allowSleep) {
+    if (world_) world_->setAllowSleep(id_, allowSleep);
+    def_.allowSleep = allowSleep;
+}
+bool RigidBody::allowSleep() const { return world_ ? world_->allowSleep(id_) : def_.allowSleep; }
+
 void RigidBody::attach(World& world) {
     if (world_) throw std::logic_error("physim: rigid body is already attached to a world");
     id_ = world.createBody(def_);

@@ -157,3 +157,30 @@ TEST(Object, ForceModes) {
 
 }  // namespace
 }  // namespace physim
+
+namespace physim {
+namespace {
+
+TEST(Object, RigidBodySleepControls) {
+    Simulation sim;
+    sim.setPhysicsRate(60.0);
+    auto& ground = sim.spawn<Object>(Vec2(10.0, 1.0));
+    ground.rb.setMass(0.0);
+    ground.setPosition({0.0, -0.5});
+    auto& box = sim.spawn<Object>();
+    box.setPosition({0.0, 0.5});
+    auto& keeper = sim.spawn<Object>();
+    keeper.setPosition({3.0, 0.5});
+    keeper.rb.setAllowSleep(false);
+    EXPECT_FALSE(keeper.rb.allowSleep());
+    for (int i = 0; i < 180; ++i) sim.fixedStep();
+    EXPECT_FALSE(box.rb.isAwake());
+    EXPECT_TRUE(keeper.rb.isAwake());
+    box.rb.wakeUp();
+    EXPECT_TRUE(box.rb.isAwake());
+    box.rb.addForce({0.0, 1.0}, ForceMode::IMPULSE);  // sleeps again later, but this wakes it now
+    EXPECT_TRUE(box.rb.isAwake());
+}
+
+}  // namespace
+}  // namespace physim

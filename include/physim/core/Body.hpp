@@ -39,6 +39,7 @@ struct BodyDef {
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
     bool useGravity = true;
     bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it
+    bool allowSleep = true;            ///< false: this body, and any island it touches, never sleeps
     /// Discrete, or continuous (sampled or exact time of impact; dynamic bodies only, docs/ccd.md).
     CollisionDetection collisionDetection = CollisionDetection::Discrete;
     double precision = kDefaultPrecision;  ///< sampled method's spacing, fraction of the step, in (0, 1]

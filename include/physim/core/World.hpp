@@ -66,6 +66,14 @@ public:
     void setUseGravity(BodyId id, bool useGravity);
     /// Restitution in [0, 1], friction coefficients >= 0 (throws std::invalid_argument naming a bad value).
     void setMaterial(BodyId id, double restitution, double staticFriction, double dynamicFriction);
+    /// Sleeping (WorldSettings::enableSleep): a sleeping body is not simulated until touched by an awake body,
+    /// or until a force, impulse, velocity, pose or type is set on it (each of those wakes it).
+    bool isAwake(BodyId id) const;
+    /// Wakes the body (true), or puts it to sleep now (false: it stops, and stays until something wakes it).
+    void setAwake(BodyId id, bool awake);
+    /// false: the body never sleeps, and neither does any island it touches. Wakes it.
+    void setAllowSleep(BodyId id, bool allowSleep);
+    bool allowSleep(BodyId id) const;
     /// Changes a body's type. Becoming static or kinematic stops it and makes it immovable by contacts;
     /// becoming dynamic gives it the mass of its shape at its density.
     void setType(BodyId id, BodyType type);
@@ -109,6 +117,10 @@ private:
     BodyData& at(BodyId id);
     const BodyData& at(BodyId id) const;
     BodyData& requireDynamic(BodyId id, const char* what);
+    BodyData& wake(BodyId id);  // at(id), woken: used by every setter that changes a body's motion
+    void wakeTouchingSleepers();
+    static bool isActive(const BodyData& b);
+    void updateSleep();
     // One substep's parts (settings_.substeps of them per step, each of h_ seconds).
     void integrateForces();
     void detectAndSolve();
@@ -118,7 +130,9 @@ private:
     std::vector<BodyData> bodies_;            // slot per index; dead slots are on freeList_
     std::vector<std::uint32_t> freeList_;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // broad-phase output: slot index pairs
-    std::vector<std::uint32_t> sweepOrder_;   // broad-phase scratch, kept to avoid per-step allocation
+    std::vector<std::uint32_t> sweepOrder_;
+    std::vector<std::uint32_t> islandParent_;  // sleep stage scratch: union-find over touching bodies
+    std::vector<double> islandSleepTime_;   // broad-phase scratch, kept to avoid per-step allocation
     std::vector<Manifold> contacts_;
     std::vector<Manifold> previousContacts_;  // for warm starting
     std::unique_ptr<ContactSolver> solver_;

@@ -11,7 +11,12 @@ struct WorldSettings {
     int positionIterations = 2;       ///< position-projection passes per substep (no velocity is added)
     double linearSlop = 0.005;        ///< m of overlap left alone, so resting contacts persist between steps
     double restitutionThreshold = 1.0;///< m/s: slower approaches do not bounce, so resting bodies settle
-    bool enableSleep = true;          ///< reserved: sleeping is not implemented yet, every body is simulated
+    /// Sleeping: an island of touching dynamic bodies whose speeds all stay below the tolerances for
+    /// timeToSleep stops being simulated until something wakes it (docs/dynamics.md).
+    bool enableSleep = true;
+    double sleepLinearTolerance = 0.01;   ///< m/s
+    double sleepAngularTolerance = 0.035; ///< rad/s (2 degrees per second)
+    double timeToSleep = 0.5;             ///< s
 };
 
 /// Throws std::invalid_argument naming the first bad field.

@@ -54,6 +54,14 @@ public:
 
     void addForce(const Vec2& value, ForceMode mode = ForceMode::FORCE);
 
+    /// Sleeping (World settings): a body at rest for a while stops being simulated until something touches
+    /// it or sets its motion. True before the entity is added.
+    bool isAwake() const;
+    void wakeUp();
+    /// false: never sleeps (nor does anything resting on it).
+    void setAllowSleep(bool allowSleep);
+    bool allowSleep() const;
+
     /// Locks the rotation (Unity's freezeRotation): contacts and torques no longer turn the body.
     void setFixedRotation(bool fixedRotation);
     bool fixedRotation() const;

@@ -1,0 +1,139 @@
+// Sleeping: islands at rest stop being simulated (and cost no integration or narrow phase), and wake when
+// touched, pushed, given a velocity, or when what they rest on goes away.
+
+#include "physim/core/World.hpp"
+
+#include <gtest/gtest.h>
+
+namespace physim {
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+
+struct Pile {
+    World world;
+    BodyId ground, bottom, top;
+};
+
+// Two 1 m boxes stacked on static ground, settled for `seconds`.
+void build(Pile& p, double seconds, const WorldSettings& settings = {}) {
+    p.world.setSettings(settings);
+    BodyDef g;
+    g.type = BodyType::Static;
+    g.shape = makeBox(10.0, 0.5);
+    g.position = {0.0, -0.5};
+    p.ground = p.world.createBody(g);
+    BodyDef b;
+    b.shape = makeBox(0.5, 0.5);
+    b.position = {0.0, 0.5};
+    p.bottom = p.world.createBody(b);
+    b.position = {0.0, 1.5};
+    p.top = p.world.createBody(b);
+    for (int i = 0; i < static_cast<int>(seconds / kDt); ++i) p.world.step(kDt);
+}
+
+TEST(Sleep, RestingPileFallsAsleepAndCostsNothing) {
+    Pile p;
+    build(p, 3.0);  // settles within a second; then timeToSleep (0.5 s) below the tolerances
+    ASSERT_FALSE(p.world.isAwake(p.bottom));
+    ASSERT_FALSE(p.world.isAwake(p.top));
+    const Vec2 before = p.world.position(p.top);
+    for (int i = 0; i < 600; ++i) p.world.step(kDt);
+    EXPECT_EQ(p.world.position(p.top), before) << "a sleeping body does not move at all";
+    EXPECT_TRUE(p.world.profile().didRun(Stage::Sleep));
+    EXPECT_EQ(p.world.profile().manifolds, 0u) << "sleeping pairs skip the narrow phase";
+    EXPECT_FALSE(p.world.profile().didRun(Stage::Solve));
+}
+
+TEST(Sleep, FallingBodyNeverSleeps) {
+    World world;
+    BodyDef ball;
+    ball.shape = makeCircle(0.1);
+    ball.velocity = {0.0, 10.0};  // up, through its apex (speed ~0 for an instant) and down again
+    const BodyId id = world.createBody(ball);
+    for (int i = 0; i < 180; ++i) {
+        world.step(kDt);
+        ASSERT_TRUE(world.isAwake(id)) << "step " << i;
+    }
+}
+
+TEST(Sleep, TouchWakesTheWholeIsland) {
+    Pile p;
+    build(p, 3.0);
+    ASSERT_FALSE(p.world.isAwake(p.bottom));
+    BodyDef ball;
+    ball.shape = makeCircle(0.2);
+    ball.position = {0.0, 3.0};
+    const BodyId id = p.world.createBody(ball);
+    bool wokeTogether = false;
+    for (int i = 0; i < 60 && !wokeTogether; ++i) {
+        p.world.step(kDt);
+        wokeTogether = p.world.isAwake(p.top) && p.world.isAwake(p.bottom);
+        // The bottom box wakes in the same step as the top one: the wake runs through the pile.
+        ASSERT_EQ(p.world.isAwake(p.top), p.world.isAwake(p.bottom)) << "step " << i;
+    }
+    EXPECT_TRUE(wokeTogether);
+    EXPECT_TRUE(p.world.isAwake(id));
+}
+
+TEST(Sleep, SettingMotionWakesABody) {
+    Pile p;
+    build(p, 3.0);
+    p.world.setVelocity(p.top, {1.0, 0.0});
+    EXPECT_TRUE(p.world.isAwake(p.top));
+    p.world.setAwake(p.top, false);
+    EXPECT_EQ(p.world.velocity(p.top), Vec2::Zero()) << "put to sleep, it stops";
+    p.world.applyForce(p.top, {0.0, 1.0});
+    EXPECT_TRUE(p.world.isAwake(p.top));
+    p.world.setAwake(p.top, false);
+    p.world.applyLinearImpulse(p.top, {0.0, 1.0});
+    EXPECT_TRUE(p.world.isAwake(p.top));
+    p.world.setAwake(p.top, false);
+    p.world.setTransform(p.top, {0.0, 5.0}, 0.0);
+    EXPECT_TRUE(p.world.isAwake(p.top));
+}
+
+TEST(Sleep, RemovingTheSupportWakesWhatRestedOnIt) {
+    Pile p;
+    build(p, 3.0);
+    ASSERT_FALSE(p.world.isAwake(p.top));
+    p.world.destroyBody(p.bottom);
+    EXPECT_TRUE(p.world.isAwake(p.top));
+    for (int i = 0; i < 60; ++i) p.world.step(kDt);
+    EXPECT_NEAR(p.world.position(p.top).y(), 0.5, 0.01) << "fell onto the ground";
+}
+
+TEST(Sleep, DisabledPerWorldAndPerBody) {
+    WorldSettings off;
+    off.enableSleep = false;
+    Pile p;
+    build(p, 3.0, off);
+    EXPECT_TRUE(p.world.isAwake(p.top));
+    EXPECT_TRUE(p.world.isAwake(p.bottom));
+    EXPECT_FALSE(p.world.profile().didRun(Stage::Sleep));
+
+    // A body that may not sleep keeps its whole island awake; once allowed, the island sleeps.
+    Pile q;
+    q.world.setSettings({});
+    build(q, 0.0);
+    q.world.setAllowSleep(q.top, false);
+    for (int i = 0; i < 180; ++i) q.world.step(kDt);
+    EXPECT_TRUE(q.world.isAwake(q.top));
+    EXPECT_TRUE(q.world.isAwake(q.bottom)) << "it touches the top box";
+    q.world.setAllowSleep(q.top, true);
+    for (int i = 0; i < 60; ++i) q.world.step(kDt);
+    EXPECT_FALSE(q.world.isAwake(q.top));
+    EXPECT_FALSE(q.world.isAwake(q.bottom));
+}
+
+TEST(Sleep, BadSettingsAreRejected) {
+    WorldSettings s;
+    s.timeToSleep = 0.0;
+    EXPECT_THROW(World{s}, std::invalid_argument);
+    s = WorldSettings{};
+    s.sleepLinearTolerance = -1.0;
+    EXPECT_THROW(World{s}, std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace physim
