@@ -7,9 +7,12 @@
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Runner.hpp>
 
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
 #include <SFML/Window/Event.hpp>
 
 #include <cmath>
+#include <vector>
 
 namespace {
 
@@ -49,14 +52,38 @@ public:
         const double t = time - launchTime_;
         const double g = -world().settings().gravity.y();
         const double vx = kSpeed * std::cos(kAngle), vy = kSpeed * std::sin(kAngle);
+        trail_.push_back(p);
         graphsManager.addPoint(trajectory_, p.x(), p.y());
         graphsManager.addPoint(trajectoryTheory_, p.x(), p.x() * std::tan(kAngle) - g * p.x() * p.x() / (2 * vx * vx));
         graphsManager.addPoint(speed_, t, ball_->rb.velocity().norm());
         graphsManager.addPoint(speedTheory_, t, std::hypot(vx, vy - g * t));
     }
 
+    // The launch height line, the analytic parabola (grey) and the path flown so far (red), in metres.
+    void onRender(sf::RenderWindow* window) override {
+        const sf::Transform toPixels = view.worldToPixels(window->getSize());
+        const double g = -world().settings().gravity.y();
+        const double vx = kSpeed * std::cos(kAngle), range = kSpeed * kSpeed * std::sin(2 * kAngle) / g;
+        sf::VertexArray ground(sf::Lines, 2);
+        ground[0] = sf::Vertex({-2.f, 0.f}, sf::Color(90, 90, 90));
+        ground[1] = sf::Vertex({float(range + 2.0), 0.f}, sf::Color(90, 90, 90));
+        window->draw(ground, toPixels);
+        sf::VertexArray parabola(sf::LineStrip, 101);
+        for (int i = 0; i <= 100; ++i) {
+            const double x = range * i / 100.0;
+            parabola[i] = sf::Vertex({float(x), float(x * std::tan(kAngle) - g * x * x / (2 * vx * vx))},
+                                     sf::Color(150, 150, 150));
+        }
+        window->draw(parabola, toPixels);
+        sf::VertexArray path(sf::LineStrip, trail_.size());
+        for (std::size_t i = 0; i < trail_.size(); ++i)
+            path[i] = sf::Vertex({float(trail_[i].x()), float(trail_[i].y())}, sf::Color(200, 60, 60));
+        window->draw(path, toPixels);
+    }
+
 private:
     void launch() {
+        trail_.clear();
         ball_->setPosition({0.0, 0.0});
         ball_->rb.setVelocity({kSpeed * std::cos(kAngle), kSpeed * std::sin(kAngle)});
         launchTime_ = time;
@@ -67,6 +94,7 @@ private:
     int trajectoryTheory_ = -1;
     int speedTheory_ = -1;
     double launchTime_ = 0.0;
+    std::vector<physim::Vec2> trail_;  // m, one point per frame of the current flight
 };
 
 }  // namespace
