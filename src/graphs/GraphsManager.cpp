@@ -218,6 +218,15 @@ void GraphsManager::reset() {
         for (auto& tg : root_->graphs) tg->Set(0);
 }
 
+void GraphsManager::setPoints(int i, const std::vector<std::pair<double, double>>& points) {
+    if (!built_) throw std::logic_error("physim: setPoints before GraphsManager::build()");
+    Graph& g = const_cast<Graph&>(graph(i));
+    g.points.clear();
+    g.skipped = 0;
+    root_->graphs[static_cast<std::size_t>(i)]->Set(0);
+    for (const auto& [x, y] : points) addPoint(i, x, y);
+}
+
 std::size_t GraphsManager::graphCount() const { return graphs_.size(); }
 const std::string& GraphsManager::title(int i) const { return graph(i).title; }
 const std::vector<std::pair<double, double>>& GraphsManager::points(int i) const { return graph(i).points; }

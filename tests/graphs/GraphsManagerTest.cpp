@@ -71,6 +71,9 @@ TEST(GraphsManager, NonFinitePointsAreSkippedAndCounted) {
     gm.addPoint(0, 1.0, 1.0);
     EXPECT_EQ(gm.points(0).size(), 1u);
     EXPECT_EQ(gm.skippedPoints(0), 2u);
+    gm.setPoints(0, {{1.0, 2.0}, {NAN, 0.0}, {3.0, 4.0}});
+    EXPECT_EQ(gm.points(0), (std::vector<std::pair<double, double>>{{1.0, 2.0}, {3.0, 4.0}}));
+    EXPECT_EQ(gm.skippedPoints(0), 1u) << "replacing starts the count again";
     gm.reset();
     EXPECT_TRUE(gm.points(0).empty());
     EXPECT_EQ(gm.graphCount(), 1u);

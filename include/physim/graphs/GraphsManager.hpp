@@ -53,6 +53,9 @@ public:
     void render();
     /// Removes every point from every graph; the graphs stay.
     void reset();
+    /// Replaces graph `i`'s points (a histogram recomputed each frame, say). Non-finite points are skipped and
+    /// counted as in addPoint.
+    void setPoints(int i, const std::vector<std::pair<double, double>>& points);
 
     /// Live mode opens a ROOT canvas window at build(); call before build(). Default: off (headless).
     void setLive(bool live, double refreshHz = 10.0);
