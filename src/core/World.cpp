@@ -4,6 +4,7 @@
 #include "BroadPhase.hpp"
 #include "ContactSolver.hpp"
 #include "ContinuousStage.hpp"
+#include "DistanceJoint.hpp"
 #include "Integrator.hpp"
 
 #include "physim/core/Collide.hpp"
@@ -141,6 +142,16 @@ void World::destroyBody(BodyId id) {
     if (b.detection != CollisionDetection::Discrete) --continuousCount_;
     b.alive = false;
     freeList_.push_back(id.index);
+    // Its joints go, and the bodies they held wake.
+    for (std::uint32_t k = 0; k < joints_.size(); ++k) {
+        JointData& j = joints_[k];
+        if (!j.alive || (j.a != id.index && j.b != id.index)) continue;
+        BodyData& other = bodies_[j.a == id.index ? j.b : j.a];
+        other.awake = true, other.sleepTime = 0.0;
+        j.alive = false;
+        jointFreeList_.push_back(k);
+        --jointCount_;
+    }
     // Bodies that were resting on it must fall: wake everything whose box touches its box.
     const Aabb gone = computeAabb(b.shape, b.xf).fattened(settings_.linearSlop);
     for (BodyData& other : bodies_)
@@ -412,6 +423,9 @@ void World::updateSleep() {
         if (bodies_[a].type == BodyType::Dynamic && bodies_[b].type == BodyType::Dynamic)
             islandParent_[find(a)] = find(b);
     }
+    for (const JointData& j : joints_)
+        if (j.alive && bodies_[j.a].type == BodyType::Dynamic && bodies_[j.b].type == BodyType::Dynamic)
+            islandParent_[find(j.a)] = find(j.b);
     // An island's sleep time is its least rested body's; a moving kinematic body touching it resets it.
     islandSleepTime_.assign(n, INFINITY);
     for (std::uint32_t i = 0; i < n; ++i)
@@ -431,6 +445,86 @@ void World::updateSleep() {
         b.w = 0.0;
     }
 }
+
+// A joint is solved while one of its bodies is awake and can move; a sleeper held by an active body wakes
+// (repeated, so the wake runs along a chain in one step).
+void World::activateJoints() {
+    for (bool woke = true; woke;) {
+        woke = false;
+        for (JointData& j : joints_) {
+            if (!j.alive) continue;
+            BodyData& A = bodies_[j.a];
+            BodyData& B = bodies_[j.b];
+            BodyData* sleeper = (!A.awake && isActive(B)) ? &A : (!B.awake && isActive(A)) ? &B : nullptr;
+            if (!sleeper) continue;
+            sleeper->awake = true;
+            sleeper->sleepTime = 0.0;
+            woke = true;
+        }
+    }
+    for (JointData& j : joints_) j.active = j.alive && (isActive(bodies_[j.a]) || isActive(bodies_[j.b]));
+}
+
+// --- joints ------------------------------------------------------------------------------------------
+
+JointId World::createDistanceJoint(const DistanceJointDef& def) {
+    const BodyData& A = at(def.bodyA);
+    const BodyData& B = at(def.bodyB);
+    if (def.bodyA == def.bodyB) throw std::invalid_argument("physim: a distance joint needs two different bodies");
+    if (A.type != BodyType::Dynamic && B.type != BodyType::Dynamic)
+        throw std::invalid_argument("physim: a distance joint needs at least one dynamic body");
+    requireFinite("joint anchor A", def.localAnchorA);
+    requireFinite("joint anchor B", def.localAnchorB);
+    requireFinite("joint length", def.length);
+    double length = def.length;
+    if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
+    if (!(length > 1e-9))
+        throw std::invalid_argument("physim: distance joint length must be > 0 m, got " + std::to_string(length));
+    std::uint32_t index;
+    if (!jointFreeList_.empty()) {
+        index = jointFreeList_.back();
+        jointFreeList_.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(joints_.size());
+        joints_.emplace_back();
+    }
+    JointData& j = joints_[index];
+    const std::uint32_t generation = j.generation + 1;
+    j = JointData{};
+    j.generation = generation;
+    j.alive = true;
+    j.a = def.bodyA.index;
+    j.b = def.bodyB.index;
+    j.localA = def.localAnchorA;
+    j.localB = def.localAnchorB;
+    j.length = length;
+    ++jointCount_;
+    wake(def.bodyA);
+    wake(def.bodyB);
+    return JointId{index, generation};
+}
+
+bool World::contains(JointId id) const {
+    return !id.isNull() && id.index < joints_.size() && joints_[id.index].alive &&
+           joints_[id.index].generation == id.generation;
+}
+
+const JointData& World::joint(JointId id) const {
+    if (!contains(id))
+        throw std::invalid_argument("physim: joint id (index " + std::to_string(id.index) +
+                                    ") is not a live joint of this world");
+    return joints_[id.index];
+}
+
+void World::destroyJoint(JointId id) {
+    const JointData& j = joint(id);
+    bodies_[j.a].awake = bodies_[j.b].awake = true;
+    joints_[id.index].alive = false;
+    jointFreeList_.push_back(id.index);
+    --jointCount_;
+}
+
+double World::jointLength(JointId id) const { return joint(id).length; }
 
 void World::integrateForces() {
     runStage(profile_, Stage::Forces, dynamicCount_ > 0,
@@ -477,9 +571,16 @@ void World::detectAndSolve() {
     profile_.candidatePairs = pairs_.size();
     profile_.manifolds = contacts_.size();
 
-    runStage(profile_, Stage::Solve, !contacts_.empty(), [&] {
-        solver_->prepare(bodies_, contacts_, settings_);
-        for (int i = 0; i < settings_.velocityIterations; ++i) solver_->solveVelocities(bodies_, contacts_);
+    runStage(profile_, Stage::Solve, !contacts_.empty() || jointCount_ > 0, [&] {
+        if (jointCount_ > 0) {
+            activateJoints();
+            prepareJoints(bodies_, joints_, h_);
+        }
+        if (!contacts_.empty()) solver_->prepare(bodies_, contacts_, settings_);
+        for (int i = 0; i < settings_.velocityIterations; ++i) {
+            if (jointCount_ > 0) solveJointVelocities(bodies_, joints_);
+            if (!contacts_.empty()) solver_->solveVelocities(bodies_, contacts_);
+        }
     });
 }
 
@@ -491,9 +592,10 @@ void World::integrateAndCorrect() {
     runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
         integratePositions(bodies_, h_);
         if (continuousCount_ > 0) continuous_->placeBodies(bodies_);  // hit bodies end where their impacts left them
-        if (!contacts_.empty())
-            for (int i = 0; i < settings_.positionIterations; ++i)
-                solver_->correctPositions(bodies_, contacts_, settings_);
+        for (int i = 0; i < settings_.positionIterations; ++i) {
+            if (jointCount_ > 0) correctJointPositions(bodies_, joints_);
+            if (!contacts_.empty()) solver_->correctPositions(bodies_, contacts_, settings_);
+        }
     });
 }
 

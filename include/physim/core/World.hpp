@@ -13,6 +13,7 @@
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
+#include "physim/core/Joint.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
 
@@ -25,6 +26,7 @@
 namespace physim {
 
 struct BodyData;       // internal storage, src/core/BodyData.hpp
+struct JointData;      // internal, src/core/DistanceJoint.hpp
 class ContactSolver;  // internal, src/core/ContactSolver.hpp
 class ContinuousStage;  // internal, src/core/ContinuousStage.hpp
 
@@ -98,6 +100,16 @@ public:
     /// Instant change of momentum (N s) at the centre of mass.
     void applyLinearImpulse(BodyId id, const Vec2& impulse);
 
+    // --- joints -------------------------------------------------------------------------------------
+    /// A rigid rod between two anchors. Throws std::invalid_argument for an unknown or repeated body, two
+    /// immovable bodies, non-finite anchors or length, or a zero length. Destroying either body removes it.
+    JointId createDistanceJoint(const DistanceJointDef& def);
+    void destroyJoint(JointId id);
+    bool contains(JointId id) const;
+    std::size_t jointCount() const { return jointCount_; }
+    /// The joint's rod length, m.
+    double jointLength(JointId id) const;
+
     // --- stepping -----------------------------------------------------------------------------------
     void step(double dt);
     void beginStep(double dt);
@@ -119,6 +131,8 @@ private:
     BodyData& requireDynamic(BodyId id, const char* what);
     BodyData& wake(BodyId id);  // at(id), woken: used by every setter that changes a body's motion
     void wakeTouchingSleepers();
+    void activateJoints();
+    const JointData& joint(JointId id) const;
     static bool isActive(const BodyData& b);
     void updateSleep();
     // One substep's parts (settings_.substeps of them per step, each of h_ seconds).
@@ -136,6 +150,9 @@ private:
     std::vector<Manifold> contacts_;
     std::vector<Manifold> previousContacts_;  // for warm starting
     std::unique_ptr<ContactSolver> solver_;
+    std::vector<JointData> joints_;          // slot per index; dead slots are on jointFreeList_
+    std::vector<std::uint32_t> jointFreeList_;
+    std::size_t jointCount_ = 0;
     std::unique_ptr<ContinuousStage> continuous_;
     StepProfile profile_;
     std::size_t liveCount_ = 0;
