@@ -31,7 +31,7 @@ TEST(Incline, AccelerationFollowsCoulombsLaw) {
             // would be sliding. 1e-3 m/s^2 (a 0.5 mm displacement in 1 s) is that bound's order.
             EXPECT_LT(std::abs(a), 1e-3) << degrees << " degrees";
         }
-        RecordProperty("a_" + std::to_string(static_cast<int>(degrees)) + "deg", std::to_string(a));
+        RecordProperty("a_" + std::to_string(std::lround(degrees)) + "deg", std::to_string(a));
     }
     EXPECT_EQ(sliding, 3) << "35, 40 and 45 degrees are above the angle of repose (31 degrees)";
     std::filesystem::remove_all(dir);
