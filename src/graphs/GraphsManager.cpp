@@ -77,7 +77,15 @@ void GraphsManager::drawPad(TCanvas& canvas, int pad) const {
         root_->graphs[i]->Draw(drawOption(graphs_[i].mode, series == 0));
         ++series;
     }
-    if (series > 1) gPad->BuildLegend(0.65, 0.75, 0.95, 0.92);  // the pad owns the legend
+    if (series > 1) {
+        gPad->BuildLegend(0.65, 0.75, 0.95, 0.92);  // the pad owns the legend
+        // The first graph (the simulated points, usually) again on top of the series drawn after it.
+        for (std::size_t i = 0; i < graphs_.size(); ++i)
+            if (graphs_[i].pad == pad) {
+                root_->graphs[i]->Draw(drawOption(graphs_[i].mode, false));
+                break;
+            }
+    }
     fitAxes(pad);
 }
 
