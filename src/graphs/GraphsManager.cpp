@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <stdexcept>
 
 namespace physim {
@@ -190,7 +191,9 @@ void GraphsManager::addPoint(int i, double x, double y) {
     if (!built_) throw std::logic_error("physim: addPoint before GraphsManager::build()");
     Graph& g = const_cast<Graph&>(graph(i));
     if (!std::isfinite(x) || !std::isfinite(y)) {
-        ++g.skipped;
+        if (g.skipped++ == 0)  // once per graph: a NaN every frame must not flood the terminal
+            std::cerr << "physim: graph " << i << " (\"" << g.title << "\"): skipping a non-finite point (" << x
+                      << ", " << y << "); skippedPoints(" << i << ") counts them\n";
         return;
     }
     g.points.emplace_back(x, y);

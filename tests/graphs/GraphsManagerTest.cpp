@@ -66,8 +66,12 @@ TEST(GraphsManager, NonFinitePointsAreSkippedAndCounted) {
     GraphsManager gm;
     gm.addGraph("g");
     gm.build();
+    testing::internal::CaptureStderr();
     gm.addPoint(0, 1.0, NAN);
     gm.addPoint(0, INFINITY, 1.0);
+    const std::string warning = testing::internal::GetCapturedStderr();
+    EXPECT_NE(warning.find("non-finite"), std::string::npos) << warning;
+    EXPECT_EQ(warning.find("non-finite"), warning.rfind("non-finite")) << "warned once, not per point";
     gm.addPoint(0, 1.0, 1.0);
     EXPECT_EQ(gm.points(0).size(), 1u);
     EXPECT_EQ(gm.skippedPoints(0), 2u);

@@ -46,7 +46,8 @@ public:
                   GraphMode mode = GraphMode::WITH_LINES);
     /// Creates one ROOT graph per addGraph/addSeries call (each its own object) laid out on pads of one canvas.
     void build();
-    /// Appends a point to graph `i` (0-based, in addGraph/addSeries order). Non-finite points are skipped and counted.
+    /// Appends a point to graph `i` (0-based, in addGraph/addSeries order). Non-finite points are skipped, counted
+    /// and warned about on stderr (once per graph).
     /// Throws std::out_of_range for an unknown index, std::logic_error before build().
     void addPoint(int i, double x, double y);
     /// Live mode: refreshes the canvas, at most `refreshHz` times a second. Headless: does nothing.
