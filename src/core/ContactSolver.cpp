@@ -1,5 +1,7 @@
 #include "ContactSolver.hpp"
 
+#include "Impulse.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -11,24 +13,6 @@ constexpr double kMaxPositionCorrection = 0.2;  // m per pass, so deep overlaps 
 // Largest condition number (k11^2 / det K) of a two-point manifold's normal mass matrix solved as a block;
 // beyond it the two points are nearly the same constraint and K^-1 would amplify rounding.
 constexpr double kMaxConditionNumber = 1000.0;
-
-double effectiveMass(const BodyData& A, const BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& dir) {
-    const double ra = cross(rA, dir), rb = cross(rB, dir);
-    const double k = A.invMass + B.invMass + A.invInertia * ra * ra + B.invInertia * rb * rb;
-    return k > 0.0 ? 1.0 / k : 0.0;
-}
-
-Vec2 relativeVelocity(const BodyData& A, const BodyData& B, const Vec2& rA, const Vec2& rB) {
-    return B.v + cross(B.w, rB) - A.v - cross(A.w, rA);
-}
-
-// Impulse P acts on B, -P on A (Newton's third law), at the given lever arms.
-void applyImpulse(BodyData& A, BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& P) {
-    A.v -= A.invMass * P;
-    A.w -= A.invInertia * cross(rA, P);
-    B.v += B.invMass * P;
-    B.w += B.invInertia * cross(rB, P);
-}
 
 }  // namespace
 
@@ -198,13 +182,7 @@ void ContactSolver::correctPositions(std::vector<BodyData>& bodies, const std::v
             const Vec2 rA = pA - A.xf.p;
             const Vec2 rB = pB - B.xf.p;
             const double mass = effectiveMass(A, B, rA, rB, n);
-            const Vec2 P = (-C * mass) * n;
-            A.xf.p -= A.invMass * P;
-            A.angle -= A.invInertia * cross(rA, P);
-            A.xf.q = Rotation::fromAngle(A.angle);
-            B.xf.p += B.invMass * P;
-            B.angle += B.invInertia * cross(rB, P);
-            B.xf.q = Rotation::fromAngle(B.angle);
+            applyPositionImpulse(A, B, rA, rB, (-C * mass) * n);
         }
     }
 }

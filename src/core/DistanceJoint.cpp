@@ -1,5 +1,7 @@
 #include "DistanceJoint.hpp"
 
+#include "Impulse.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -8,19 +10,6 @@ namespace {
 
 constexpr double kBaumgarte = 0.2;        // fraction of the length error removed per position pass
 constexpr double kMaxCorrection = 0.2;    // m per pass
-
-void apply(BodyData& A, BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& P) {
-    A.v -= A.invMass * P;
-    A.w -= A.invInertia * cross(rA, P);
-    B.v += B.invMass * P;
-    B.w += B.invInertia * cross(rB, P);
-}
-
-double effectiveMass(const BodyData& A, const BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& u) {
-    const double ra = cross(rA, u), rb = cross(rB, u);
-    const double k = A.invMass + B.invMass + A.invInertia * ra * ra + B.invInertia * rb * rb;
-    return k > 0.0 ? 1.0 / k : 0.0;
-}
 
 }  // namespace
 
@@ -38,10 +27,10 @@ void prepareJoints(std::vector<BodyData>& bodies, std::vector<JointData>& joints
         // Moving along the tangent at speed vt for h lengthens the rod by vt^2 h^2 / (2 L). Aiming the rod-wise
         // speed at -vt^2 h / (2 L) keeps the length after the position update to second order, so the
         // position pass has (almost) nothing to pull back: without it a swinging pendulum loses energy fast.
-        const Vec2 dv = B.v + cross(B.w, j.rB) - A.v - cross(A.w, j.rA);
+        const Vec2 dv = relativeVelocity(A, B, j.rA, j.rB);
         const Vec2 tangential = dv - j.u.dot(dv) * j.u;
         j.bias = len > 1e-12 ? -tangential.squaredNorm() * h / (2.0 * len) : 0.0;
-        apply(A, B, j.rA, j.rB, j.impulse * j.u);  // warm start
+        applyImpulse(A, B, j.rA, j.rB, j.impulse * j.u);  // warm start
     }
 }
 
@@ -50,10 +39,10 @@ void solveJointVelocities(std::vector<BodyData>& bodies, std::vector<JointData>&
         if (!j.alive || !j.active) continue;
         BodyData& A = bodies[j.a];
         BodyData& B = bodies[j.b];
-        const Vec2 dv = B.v + cross(B.w, j.rB) - A.v - cross(A.w, j.rA);
+        const Vec2 dv = relativeVelocity(A, B, j.rA, j.rB);
         const double lambda = -j.mass * (j.u.dot(dv) - j.bias);
         j.impulse += lambda;
-        apply(A, B, j.rA, j.rB, lambda * j.u);
+        applyImpulse(A, B, j.rA, j.rB, lambda * j.u);
     }
 }
 
@@ -68,13 +57,7 @@ void correctJointPositions(std::vector<BodyData>& bodies, std::vector<JointData>
         if (len < 1e-12) continue;
         const Vec2 u = d / len;
         const double C = std::clamp(len - j.length, -kMaxCorrection, kMaxCorrection);
-        const Vec2 P = (-kBaumgarte * C * effectiveMass(A, B, rA, rB, u)) * u;
-        A.xf.p -= A.invMass * P;
-        A.angle -= A.invInertia * cross(rA, P);
-        A.xf.q = Rotation::fromAngle(A.angle);
-        B.xf.p += B.invMass * P;
-        B.angle += B.invInertia * cross(rB, P);
-        B.xf.q = Rotation::fromAngle(B.angle);
+        applyPositionImpulse(A, B, rA, rB, (-kBaumgarte * C * effectiveMass(A, B, rA, rB, u)) * u);
     }
 }
 
