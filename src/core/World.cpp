@@ -55,6 +55,25 @@ void assignMass(BodyData& b, double mass) {
     b.invInertia = (b.fixedRotation || b.inertia <= 0.0) ? 0.0 : 1.0 / b.inertia;
 }
 
+// Takes a slot for a new element: a freed one if any, else a new one at the end. The slot is reset to a fresh,
+// live element whose generation is one past the slot's last, so handles to what lived there before go stale.
+template <class Data>
+std::uint32_t takeSlot(std::vector<Data>& slots, std::vector<std::uint32_t>& freeList) {
+    std::uint32_t index;
+    if (!freeList.empty()) {
+        index = freeList.back();
+        freeList.pop_back();
+    } else {
+        index = static_cast<std::uint32_t>(slots.size());
+        slots.emplace_back();
+    }
+    const std::uint32_t generation = slots[index].generation + 1;
+    slots[index] = Data{};
+    slots[index].generation = generation;
+    slots[index].alive = true;
+    return index;
+}
+
 }  // namespace
 
 void validate(const WorldSettings& s) {
@@ -93,19 +112,8 @@ void World::setSettings(const WorldSettings& settings) {
 
 BodyId World::createBody(const BodyDef& def) {
     validate(def);
-    std::uint32_t index;
-    if (!freeList_.empty()) {
-        index = freeList_.back();
-        freeList_.pop_back();
-    } else {
-        index = static_cast<std::uint32_t>(bodies_.size());
-        bodies_.emplace_back();
-    }
+    const std::uint32_t index = takeSlot(bodies_, freeList_);
     BodyData& b = bodies_[index];
-    const std::uint32_t generation = b.generation + 1;
-    b = BodyData{};
-    b.generation = generation;
-    b.alive = true;
     b.type = def.type;
     b.xf.p = def.position;
     b.angle = def.angle;
@@ -131,7 +139,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (b.movable()) ++movableCount_;
     if (b.type == BodyType::Dynamic) ++dynamicCount_;
     if (b.detection != CollisionDetection::Discrete) ++continuousCount_;
-    return BodyId{index, generation};
+    return BodyId{index, b.generation};
 }
 
 void World::destroyBody(BodyId id) {
@@ -480,19 +488,8 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
     if (!(length > 1e-9))
         throw std::invalid_argument("physim: distance joint length must be > 0 m, got " + std::to_string(length));
-    std::uint32_t index;
-    if (!jointFreeList_.empty()) {
-        index = jointFreeList_.back();
-        jointFreeList_.pop_back();
-    } else {
-        index = static_cast<std::uint32_t>(joints_.size());
-        joints_.emplace_back();
-    }
+    const std::uint32_t index = takeSlot(joints_, jointFreeList_);
     JointData& j = joints_[index];
-    const std::uint32_t generation = j.generation + 1;
-    j = JointData{};
-    j.generation = generation;
-    j.alive = true;
     j.a = def.bodyA.index;
     j.b = def.bodyB.index;
     j.localA = def.localAnchorA;
@@ -501,7 +498,7 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     ++jointCount_;
     wake(def.bodyA);
     wake(def.bodyB);
-    return JointId{index, generation};
+    return JointId{index, j.generation};
 }
 
 bool World::contains(JointId id) const {
