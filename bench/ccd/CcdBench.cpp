@@ -2,10 +2,22 @@
 // method (discrete, the paper's sampled method at several precisions, exact time of impact) over one fixed
 // random set of fast moving pairs. The paper's trade-off (section 5.1.4) made visible. Table in docs/ccd.md.
 //
+// Batch mode (--batch): the exact method over batches of N = 1e2 .. 1e6 pairs, on the CPU (one thread, all
+// threads) and on the GPU (kernel alone, and with the copies), with the CPU-GPU agreement and the crossover N where
+// the GPU wins. Table in docs/cuda.md. GPU rows need the `cuda` preset and a GPU; without them the table says why.
+//
 // Usage: ccd_bench [pairs (default 20000)] [seed (default 5)]
+//        ccd_bench --batch [largest N (default 1000000)] [seed (default 5)]
 
 #include "physim/core/Collide.hpp"
+#include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/TimeOfImpact.hpp"
+#ifdef PHYSIM_WITH_CUDA
+#include "physim/cuda/ContinuousSolver.hpp"
+#include "physim/cuda/Device.hpp"
+#endif
+
+#include "support/RandomBatch.hpp"  // the tests' fast pairs: one generator for the tests and this table
 
 #include <algorithm>
 #include <chrono>
@@ -14,55 +26,14 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace physim;
 
 namespace {
 
-struct Pair {
-    Geometry a, b;
-    Sweep sa, sb;
-};
-
-// A small fast shape (1 to 10 cm) crossing an obstacle at the origin: a thin plank (1 cm thick), a small circle
-// or a polygon. It starts 0.5 to 5 m away, travels 1 to 20 m in the step (60 to 1200 m/s at 60 Hz), aimed
-// within 0.3 m of the centre, turning up to 2 rad in the step. About 2/3 of the pairs collide.
-std::vector<Pair> makePairs(int count, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-    std::vector<Pair> pairs;
-    for (int i = 0; i < count; ++i) {
-        Pair p;
-        const double size = in(0.01, 0.1);
-        switch (i % 3) {
-            case 0: p.a = makeCircle(size); break;
-            case 1: p.a = makeBox(size, in(0.3, 1.0) * size); break;
-            default: p.a = makePolygon({{-size, -0.5 * size}, {size, -0.8 * size}, {0.7 * size, 0.6 * size},
-                                        {-0.2 * size, size}});
-        }
-        switch ((i / 3) % 3) {
-            case 0: p.b = makeBox(0.005, in(0.2, 1.0)); break;
-            case 1: p.b = makeCircle(in(0.01, 0.1)); break;
-            default: p.b = makePolygon({{-0.1, -0.05}, {0.12, -0.08}, {0.15, 0.06}, {-0.02, 0.12}});
-        }
-        const double heading = in(0.0, 2.0 * M_PI);
-        const Vec2 dir(std::cos(heading), std::sin(heading));
-        const Vec2 side(-dir.y(), dir.x());
-        const Vec2 start = -in(0.5, 5.0) * dir + in(-0.3, 0.3) * side;
-        const double a0 = in(-M_PI, M_PI);
-        p.sa = Sweep{start, start + in(1.0, 20.0) * dir, a0, a0 + in(-2.0, 2.0)};
-        const double b0 = in(-M_PI, M_PI);
-        p.sb = Sweep{Vec2::Zero(), Vec2::Zero(), b0, b0};
-        if (collide(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).pointCount > 0) {
-            --i;  // start apart
-            continue;
-        }
-        pairs.push_back(p);
-    }
-    return pairs;
-}
+using Pair = testing::FastPair;
 
 struct Method {
     std::string name;
@@ -81,12 +52,107 @@ ToiResult run(const Method& m, const Pair& p) {
     return timeOfImpact(p.a, p.sa, p.b, p.sb);
 }
 
+// Best wall time (s) of `reps` calls (a shared machine: the minimum is the least disturbed).
+template <typename F>
+double bestOf(int reps, F&& f) {
+    double best = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        const auto start = std::chrono::steady_clock::now();
+        f();
+        best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    }
+    return best;
+}
+
+// The first n pairs of one fixed stream (built in chunks so a million pairs never exist as Geometry at once).
+ContinuousBatch batchOf(int n, unsigned seed) {
+    ContinuousBatch batch;
+    for (int done = 0, chunk = 0; done < n; ++chunk) {
+        const int take = std::min(10000, n - done);
+        for (const Pair& p : testing::randomPairs(take, seed + 7919u * static_cast<unsigned>(chunk)))
+            testing::appendPair(batch, p);
+        done += take;
+    }
+    return batch;
+}
+
+int batchTable(int largest, unsigned seed) {
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    CpuContinuousSolver single(1), all(cores);
+    std::string noGpu;
+#ifdef PHYSIM_WITH_CUDA
+    const cuda::DeviceStatus status = cuda::queryDevices();
+    if (status.deviceCount == 0) noGpu = status.message;
+    cuda::GpuSolverOptions options;
+    options.minPairs = 0;  // every batch on the GPU: this table is where the crossover is measured
+    cuda::GpuContinuousSolver gpu(options);
+    std::printf("GPU: %s\n", status.deviceCount ? status.message.c_str() : "none");
+#else
+    noGpu = "this ccd_bench was built without CUDA (configure the `cuda` preset)";
+#endif
+    std::printf("CPU: %u hardware threads. Exact method (conservative advancement, tolerance %.0e m), random fast "
+                "pairs (seed %u), each body its own shape, as the World sends them.\n\n",
+                cores, kToiTolerance, seed);
+    std::printf("| pairs | CPU 1 thread (ms) | CPU %u threads (ms) | GPU kernel (ms) | GPU with copies (ms) | "
+                "pairs/s CPU 1 | pairs/s CPU %u | pairs/s GPU with copies | GPU vs CPU %u | identical | within "
+                "tolerance | disagreements |\n",
+                cores, cores, cores);
+    std::printf("| ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
+    long crossoverSingle = -1, crossoverAll = -1;
+    for (long n = 100; n <= largest; n *= 10) {
+        const ContinuousBatch batch = batchOf(static_cast<int>(n), seed);
+        ContinuousBatchResult cpu, cpuAll;
+        // Repeat small batches so each timing spans at least ~0.2 s of work at ~1 us a pair.
+        const int reps = static_cast<int>(std::clamp(200000L / n, 3L, 200L));
+        const double tSingle = bestOf(reps, [&] { single.solve(batch, cpu); });
+        const double tAll = bestOf(reps, [&] { all.solve(batch, cpuAll); });
+        std::printf("| %ld | %.3f | %.3f |", n, 1e3 * tSingle, 1e3 * tAll);
+        if (!noGpu.empty()) {
+            std::printf(" - | - | %.3g | %.3g | - | - | - | - | - |\n", n / tSingle, n / tAll);
+            continue;
+        }
+#ifdef PHYSIM_WITH_CUDA
+        ContinuousBatchResult onGpu;
+        gpu.solve(batch, onGpu);  // warm: device buffers grown, kernel loaded
+        double kernelMs = 1e300, bestTotal = 1e300;
+        cuda::GpuTimings best;  // the fastest run's parts
+        const double tGpu = bestOf(reps, [&] {
+            gpu.solve(batch, onGpu);
+            kernelMs = std::min(kernelMs, gpu.lastTimings().kernelMs);
+            if (gpu.lastTimings().totalMs < bestTotal) best = gpu.lastTimings(), bestTotal = best.totalMs;
+        });
+        if (!gpu.lastRanOnGpu()) {
+            std::printf(" GPU failed: %s |\n", gpu.error().c_str());
+            return 1;
+        }
+        const testing::Agreement a = testing::compareResults(batch, onGpu, cpu);
+        std::printf(" %.3f | %.3f (in %.3f, out %.3f) | %.3g | %.3g | %.3g | %.1fx | %d | %d | %d |\n", kernelMs,
+                    1e3 * tGpu, best.uploadMs, best.downloadMs, n / tSingle, n / tAll, n / tGpu, tAll / tGpu,
+                    a.identical, a.within, a.disagree);
+        if (crossoverSingle < 0 && tGpu < tSingle) crossoverSingle = n;
+        if (crossoverAll < 0 && tGpu < tAll) crossoverAll = n;
+#endif
+    }
+    if (!noGpu.empty()) {
+        std::printf("\nGPU rows missing: %s.\n", noGpu.c_str());
+        return 0;
+    }
+    auto say = [](long n) { return n < 0 ? std::string("not reached") : "N = " + std::to_string(n); };
+    std::printf("\nCrossover (first N where the GPU with copies is faster): against 1 CPU thread %s, against %u "
+                "threads %s.\n",
+                say(crossoverSingle).c_str(), cores, say(crossoverAll).c_str());
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]) == "--batch")
+        return batchTable(argc > 2 ? std::atoi(argv[2]) : 1000000,
+                          argc > 3 ? static_cast<unsigned>(std::atoi(argv[3])) : 5u);
     const int count = argc > 1 ? std::atoi(argv[1]) : 20000;
     const unsigned seed = argc > 2 ? static_cast<unsigned>(std::atoi(argv[2])) : 5u;
-    const std::vector<Pair> pairs = makePairs(count, seed);
+    const std::vector<Pair> pairs = testing::randomPairs(count, seed);
 
     // Reference: conservative advancement to 1e-9 m with a generous iteration budget. It never passes a
     // contact, so a pair it calls separated does not collide and its time is the true contact time to 1e-9 m.

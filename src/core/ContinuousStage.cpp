@@ -53,7 +53,43 @@ double closingSpeed(const BodyData& a, const BodyData& b, const Vec2& n, const V
     return -relative.dot(n);
 }
 
+bool exactContinuous(const BodyData& b) {
+    return b.alive && b.type == BodyType::Dynamic && b.detection == CollisionDetection::ContinuousExact;
+}
+
 }  // namespace
+
+void ContinuousStage::batchFirstSweeps(const std::vector<BodyData>& bodies) {
+    batch_.clear();
+    pairPartner_.clear();
+    batchBody_.assign(bodies.size(), -1);
+    firstPair_.assign(bodies.size(), 0);
+    endPair_.assign(bodies.size(), 0);
+    auto inBatch = [&](std::size_t k) {
+        if (batchBody_[k] < 0) {
+            const Motion& m = motion_[k];
+            batchBody_[k] = batch_.addBody(batch_.addShape(bodies[k].shape),
+                                           Sweep{m.p, m.p + m.dp, m.angle, m.angle + m.da});
+        }
+        return batchBody_[k];
+    };
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        if (!exactContinuous(bodies[i])) continue;
+        firstPair_[i] = static_cast<std::uint32_t>(pairPartner_.size());
+        for (std::size_t j = 0; j < bodies.size(); ++j) {
+            if (j == i || !bodies[j].alive || !motion_[i].swept.overlaps(motion_[j].swept)) continue;
+            batch_.addPair(inBatch(i), inBatch(j));
+            pairPartner_.push_back(static_cast<std::uint32_t>(j));
+        }
+        endPair_[i] = static_cast<std::uint32_t>(pairPartner_.size());
+    }
+    if (batch_.pairCount() == 0) return;
+    // The World built the batch from validated bodies, so every pair passes the kernel's checks.
+    if (solver_)
+        solver_->solve(batch_, batchResult_);
+    else
+        solveOnCpu(batch_, batchResult_, 1);
+}
 
 void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, const WorldSettings& settings) {
     placements_.clear();
@@ -69,6 +105,7 @@ void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, cons
         m.da = b.movable() ? dt * b.w : 0.0;
         m.swept = sweptAabb(b.shape, Sweep{m.p, m.p + m.dp, m.angle, m.angle + m.da});
     }
+    batchFirstSweeps(bodies);
 
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         BodyData& body = bodies[i];
@@ -84,18 +121,13 @@ void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, cons
         for (;;) {
             const double rest = 1.0 - t;
             const Sweep mine{p, p + rest * dp, angle, angle + rest * da};  // u in [0, 1] is time t + u * rest
-            const Aabb box = sweptAabb(body.shape, mine);
+            auto theirs = [&](std::size_t j) {
+                const Motion& o = motion_[j];
+                return Sweep{o.p + t * o.dp, o.p + o.dp, o.angle + t * o.da, o.angle + o.da};
+            };
             double first = std::numeric_limits<double>::infinity();
             std::size_t partner = bodies.size();
-            for (std::size_t j = 0; j < bodies.size(); ++j) {
-                if (j == i || !bodies[j].alive) continue;
-                const Motion& o = motion_[j];
-                if (!box.overlaps(o.swept)) continue;  // swept-volume pre-check: no costly test
-                const Sweep theirs{o.p + t * o.dp, o.p + o.dp, o.angle + t * o.da, o.angle + o.da};
-                const ToiResult r = body.detection == CollisionDetection::ContinuousExact
-                                        ? timeOfImpact(body.shape, mine, bodies[j].shape, theirs)
-                                        : sampledTimeOfImpact(body.shape, mine, bodies[j].shape, theirs,
-                                                              body.precision);
+            auto consider = [&](std::size_t j, const ToiResult& r) {
                 if (r.state == ToiState::Hit && r.t < first) {
                     first = r.t;
                     partner = j;
@@ -104,12 +136,25 @@ void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, cons
                     // it, unless the bodies would close by more than the tolerance over the rest of the step
                     // (the solve saw no contact within that hair's gap): then it is an impact now.
                     Vec2 n, c;
-                    const Transform there = theirs.at(0.0);
+                    const Transform there = theirs(j).at(0.0);
                     if (contactAt(body.shape, mine.at(0.0), bodies[j].shape, there, n, c) &&
                         closingSpeed(body, bodies[j], n, c, mine.at(0.0), there) * rest * dt > kToiTolerance) {
                         first = 0.0;
                         partner = j;
                     }
+                }
+            };
+            if (impacts == 0 && body.detection == CollisionDetection::ContinuousExact) {
+                for (std::uint32_t k = firstPair_[i]; k < endPair_[i]; ++k) consider(pairPartner_[k], batchResult_.toi(k));
+            } else {
+                const Aabb box = sweptAabb(body.shape, mine);
+                for (std::size_t j = 0; j < bodies.size(); ++j) {
+                    if (j == i || !bodies[j].alive) continue;
+                    if (!box.overlaps(motion_[j].swept)) continue;  // swept-volume pre-check: no costly test
+                    consider(j, body.detection == CollisionDetection::ContinuousExact
+                                    ? timeOfImpact(body.shape, mine, bodies[j].shape, theirs(j))
+                                    : sampledTimeOfImpact(body.shape, mine, bodies[j].shape, theirs(j),
+                                                          body.precision));
                 }
             }
             if (partner == bodies.size()) {  // free for the rest of the step

@@ -1,10 +1,12 @@
 #pragma once
 // The World's Continuous stage: time of impact for bodies that ask for continuous detection. Internal.
 //
-// It runs in finishStep, after the contact solve and before positions are integrated, so each body's motion
-// over the step (pose to pose + v dt, angle + w dt) is final. For every dynamic continuous body it:
+// It runs in every substep, after the contact solve and before positions are integrated, so each body's motion
+// over the (sub)step (pose to pose + v dt, angle + w dt) is final. For every dynamic continuous body it:
 //   1. tests its swept box against every other body's swept box (the paper's swept volume, 5.1.5), and runs the
-//      costly test (exact or sampled, per body) only for the pairs whose boxes overlap;
+//      costly test (exact or sampled, per body) only for the pairs whose boxes overlap. The first sweep of every
+//      exact body is independent of the others' (each sweeps against the others' snapshot), so those pairs go to
+//      the ContinuousSolver as one batch (the CPU, or the GPU through the CUDA layer);
 //   2. at the earliest impact, moves the body there and applies a contact impulse (restitution as the solver:
 //      min of the pair, none below the restitution threshold; no friction) to it and its partner;
 //   3. sweeps the rest of the step with the new velocity in the same way (up to kMaxImpacts impacts), so the
@@ -15,10 +17,12 @@
 
 #include "BodyData.hpp"
 
+#include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/WorldSettings.hpp"
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace physim {
@@ -36,6 +40,9 @@ public:
     void placeBodies(std::vector<BodyData>& bodies);
     /// Impacts found by the last findImpacts (for tests and profiles).
     std::size_t impactCount() const { return impacts_; }
+    /// Who solves the first-sweep batch; null: this thread, on the CPU.
+    void setSolver(std::shared_ptr<ContinuousSolver> solver) { solver_ = std::move(solver); }
+    const std::shared_ptr<ContinuousSolver>& solver() const { return solver_; }
 
 private:
     struct Motion {  // a body's snapshot at the start of the stage; dp, da are the whole step's motion
@@ -50,9 +57,19 @@ private:
         Vec2 p = Vec2::Zero();
         double angle = 0.0;
     };
+    // Step 1's batch: every exact body's first sweep against the bodies its swept box overlaps.
+    void batchFirstSweeps(const std::vector<BodyData>& bodies);
+
     std::vector<Motion> motion_;
     std::vector<Placement> placements_;
     std::size_t impacts_ = 0;
+    std::shared_ptr<ContinuousSolver> solver_;
+    ContinuousBatch batch_;
+    ContinuousBatchResult batchResult_;
+    std::vector<std::int32_t> batchBody_;      // per body slot: its index in batch_, or -1
+    std::vector<std::uint32_t> pairPartner_;   // per batch pair: the other body's slot
+    std::vector<std::uint32_t> firstPair_;     // per body slot: its pairs are [firstPair_[i], endPair_[i])
+    std::vector<std::uint32_t> endPair_;
 };
 
 }  // namespace physim

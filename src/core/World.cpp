@@ -98,6 +98,10 @@ World::World(const WorldSettings& settings)
     setSettings(settings);
 }
 World::~World() = default;
+
+void World::setContinuousSolver(std::shared_ptr<ContinuousSolver> solver) { continuous_->setSolver(std::move(solver)); }
+
+const std::shared_ptr<ContinuousSolver>& World::continuousSolver() const { return continuous_->solver(); }
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 

@@ -1,8 +1,9 @@
 #pragma once
 // Continuous collision detection (the paper's sections 5.1.2-5.1.5): the distance between two placed convex
 // shapes, and the first time two moving shapes touch, found either by the paper's sampling or exactly by
-// conservative advancement. Plain functions over plain data: no allocation, no exceptions (callers validate at
-// the API boundary, see checkPrecision), so a device build can compile the same code later.
+// conservative advancement. No allocation, no exceptions (callers validate at the API boundary, see
+// checkPrecision). shapeDistance and timeOfImpact are thin wrappers over ContinuousKernel.hpp, the one copy of
+// that math which the CUDA layer compiles for the GPU; ContinuousBatch.hpp runs many queries at once.
 // SI units: metres, radians; time is the fraction t in [0, 1] of the motion (of one step in the World).
 
 #include "physim/core/Geometry.hpp"

@@ -29,6 +29,7 @@ struct BodyData;       // internal storage, src/core/BodyData.hpp
 struct JointData;      // internal, src/core/DistanceJoint.hpp
 class ContactSolver;  // internal, src/core/ContactSolver.hpp
 class ContinuousStage;  // internal, src/core/ContinuousStage.hpp
+class ContinuousSolver;  // physim/core/ContinuousBatch.hpp
 
 class World {
 public:
@@ -91,6 +92,11 @@ public:
     void setCollisionDetection(BodyId id, CollisionDetection mode, double precision = kDefaultPrecision);
     CollisionDetection collisionDetection(BodyId id) const;
     double collisionPrecision(BodyId id) const;
+    /// Who solves the continuous stage's exact time-of-impact pairs, batched per substep (ContinuousBatch.hpp):
+    /// null (the default) solves them on this thread; physim::cuda::makeContinuousSolver gives the GPU's.
+    /// Every solver runs the same kernel code, so the choice changes speed, not results (docs/cuda.md).
+    void setContinuousSolver(std::shared_ptr<ContinuousSolver> solver);
+    const std::shared_ptr<ContinuousSolver>& continuousSolver() const;
 
     /// Force (N) at the centre of mass, accumulated until the end of the current step.
     void applyForce(BodyId id, const Vec2& force);

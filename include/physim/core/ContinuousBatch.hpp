@@ -1,0 +1,121 @@
+#pragma once
+// Many exact time-of-impact queries at once (the paper's section 5.2.4 made to pay off: one launch for all pairs
+// instead of one per pair). The data is a structure of arrays, so the GPU threads of a warp read neighbouring
+// memory and the whole batch moves to the device in a few copies; the CPU solves the same arrays with the same
+// code (ContinuousKernel.hpp). docs/cuda.md has the design and the measurements.
+//
+//   shapes: one entry per distinct shape; a polygon's vertices and normals sit in the flat vertex arrays from
+//           firstVertex, a circle's centre is its one vertex.
+//   bodies: a shape and a motion (pose at t = 0 and at t = 1, linear in between).
+//   pairs:  two bodies each; result i belongs to pair i.
+
+#include "physim/core/ContinuousKernel.hpp"
+#include "physim/core/Geometry.hpp"
+#include "physim/core/TimeOfImpact.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace physim {
+
+struct ContinuousBatch {
+    struct Shapes {
+        std::vector<std::int32_t> kind;         ///< kernel::kCircle (0) or kernel::kPolygon (1)
+        std::vector<std::int32_t> firstVertex;  ///< index into the vertex arrays
+        std::vector<std::int32_t> vertexCount;  ///< circle 1, polygon 3 to 8
+        std::vector<double> radius;             ///< m; circle > 0, polygon 0
+        std::vector<double> boundingRadius;     ///< m, farthest point from the body origin
+        std::vector<double> vertexX, vertexY;   ///< m, body frame
+        std::vector<double> normalX, normalY;   ///< unit outward edge normals (polygons; 0 for circles)
+    } shapes;
+    struct Bodies {
+        std::vector<std::int32_t> shape;              ///< index into shapes
+        std::vector<double> x0, y0, angle0;           ///< m, rad at t = 0
+        std::vector<double> x1, y1, angle1;           ///< m, rad at t = 1
+    } bodies;
+    struct Pairs {
+        std::vector<std::int32_t> a, b;  ///< body indices; the normal in the result points from a to b
+    } pairs;
+    double tolerance = kToiTolerance;  ///< m, > 0: the gap at which a hit is reported
+    std::int32_t maxIterations = 100;  ///< >= 1, conservative-advancement steps per pair
+
+    /// Appends a shape (already valid: built by makeCircle, makeBox, makePolygon) and returns its index.
+    std::int32_t addShape(const Geometry& g);
+    /// Appends a body with the given shape and motion and returns its index.
+    std::int32_t addBody(std::int32_t shape, const Sweep& motion);
+    void addPair(std::int32_t a, std::int32_t b);
+    /// Empties every array and keeps their capacity, so a batch refilled every step does not allocate.
+    void clear();
+    std::size_t pairCount() const { return pairs.a.size(); }
+};
+
+/// One entry per pair: state is a ToiState (Separated, Hit, Touching); at a Hit or Touching, t is the time of
+/// impact (fraction of the motion), gap the distance then (m, < tolerance), normal (a to b) and point (m, world)
+/// the contact's; normal and point are zero when the shapes overlap at t. Separated pairs have t = 1.
+struct ContinuousBatchResult {
+    std::vector<std::int32_t> state;
+    std::vector<std::int32_t> iterations;
+    std::vector<double> t, gap, normalX, normalY, pointX, pointY;
+
+    void resize(std::size_t pairs);
+    std::size_t size() const { return state.size(); }
+    ToiResult toi(std::size_t i) const {
+        return {static_cast<ToiState>(state[i]), t[i], iterations[i]};
+    }
+};
+
+/// Throws std::invalid_argument naming the array or the value when the batch is not one the kernel can read:
+/// arrays of one group with different sizes, a shape kind other than circle or polygon, a vertex count or range
+/// that does not fit, a polygon that is not strictly convex and counter-clockwise with its outward unit normals
+/// (validate(Geometry) names the problem), a bounding radius that does not bound its shape, a non-finite
+/// coordinate or pose, a body or pair index out of range, a pair of one body with itself, tolerance <= 0 or
+/// maxIterations < 1, or more entries than 32-bit indices hold.
+void validate(const ContinuousBatch& batch);
+
+/// The part of validate() that costs O(1) and makes the arrays safe to index: the groups' sizes, tolerance and
+/// maxIterations. Solvers call it before any work; the kernel checks every pair's entries as it solves it
+/// (kernel::pairHolds), and reportInvalidPairs turns a failed pair into validate()'s named error.
+void checkLayout(const ContinuousBatch& batch);
+void reportInvalidPairs(const ContinuousBatch& batch, const ContinuousBatchResult& result);
+
+/// Raw pointers into the batch's and the result's arrays (result must already be resized), for a kernel.
+kernel::BatchView viewOf(const ContinuousBatch& batch);
+kernel::ResultView viewOf(ContinuousBatchResult& result);
+
+/// The kernel's plain structs from the core's types.
+kernel::Shape toKernel(const Geometry& g);
+kernel::Motion toKernel(const Sweep& s);
+kernel::Xf toKernel(const Transform& xf);
+
+/// Who solves a continuous batch. The World hands its continuous stage's pairs to one (World::setContinuousSolver);
+/// the CUDA layer provides a GPU one (physim/cuda/ContinuousSolver.hpp).
+class ContinuousSolver {
+public:
+    virtual ~ContinuousSolver() = default;
+    /// Fills result, resized to the pair count; throws std::invalid_argument as validate() would for a bad batch
+    /// (checkLayout before any work; each pair's own entries as it is solved, see checkLayout).
+    virtual void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) = 0;
+    /// What solves it, for log lines and bench tables ("cpu, 1 thread", "gpu NVIDIA H100 ...").
+    virtual std::string name() const = 0;
+};
+
+/// The batch on the CPU: `threads` worker threads over contiguous ranges of pairs (0: one per hardware thread;
+/// batches under a few thousand pairs use one thread, where starting threads would cost more than it saves).
+class CpuContinuousSolver final : public ContinuousSolver {
+public:
+    explicit CpuContinuousSolver(unsigned threads = 1);
+    void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override;
+    std::string name() const override;
+    unsigned threads() const { return threads_; }
+
+private:
+    unsigned threads_;
+};
+
+/// Solves a batch that passed checkLayout on the CPU with `threads` threads (>= 1); pairs that fail their checks
+/// come back kInvalid (reportInvalidPairs). The CPU solver's work; also the GPU solver's fallback.
+void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, unsigned threads);
+
+}  // namespace physim

@@ -1,0 +1,408 @@
+#pragma once
+// The geometry of continuous collision detection, written once for the CPU and the GPU: shape distance and
+// time of impact by conservative advancement as __host__ __device__ functions over plain structs. g++ compiles
+// it into the core (TimeOfImpact.cpp, ContinuousBatch.cpp), nvcc into the CUDA kernel (cuda/ContinuousSolver.cu),
+// so both run the same arithmetic in the same order. The CUDA layer is built with --fmad=false (no fused
+// multiply-add the host does not do); the only remaining difference is the last bit of cos and sin, which
+// docs/cuda.md measures.
+//
+// Rules for this file: no Eigen, no std:: types or algorithms, no exceptions, no allocation, no globals. Inputs are
+// valid (ContinuousBatch validate() or the Geometry factories checked them). SI units: metres, radians; time is
+// the fraction t in [0, 1] of the motion.
+
+#include <cmath>
+#include <cstdint>
+
+#if defined(__CUDACC__)
+#define PHYSIM_HOST_DEVICE __host__ __device__
+#else
+#define PHYSIM_HOST_DEVICE
+#endif
+
+namespace physim::kernel {
+
+struct Vec {
+    double x;
+    double y;
+};
+
+PHYSIM_HOST_DEVICE inline Vec operator+(Vec a, Vec b) { return {a.x + b.x, a.y + b.y}; }
+PHYSIM_HOST_DEVICE inline Vec operator-(Vec a, Vec b) { return {a.x - b.x, a.y - b.y}; }
+PHYSIM_HOST_DEVICE inline Vec operator-(Vec a) { return {-a.x, -a.y}; }
+PHYSIM_HOST_DEVICE inline Vec operator*(double s, Vec a) { return {s * a.x, s * a.y}; }
+PHYSIM_HOST_DEVICE inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
+PHYSIM_HOST_DEVICE inline double lengthSquared(Vec a) { return a.x * a.x + a.y * a.y; }
+PHYSIM_HOST_DEVICE inline double minOf(double a, double b) { return b < a ? b : a; }
+PHYSIM_HOST_DEVICE inline double clamp01(double s) { return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s); }
+
+/// Rotation as cosine and sine (the core's Rotation without Eigen).
+struct Rot {
+    double c;
+    double s;
+    PHYSIM_HOST_DEVICE Vec apply(Vec v) const { return {c * v.x - s * v.y, s * v.x + c * v.y}; }
+    PHYSIM_HOST_DEVICE Vec applyInverse(Vec v) const { return {c * v.x + s * v.y, -s * v.x + c * v.y}; }
+};
+
+PHYSIM_HOST_DEVICE inline Rot rotation(double angle) { return {::cos(angle), ::sin(angle)}; }
+
+struct Xf {
+    Vec p;
+    Rot q;
+    PHYSIM_HOST_DEVICE Vec apply(Vec local) const { return q.apply(local) + p; }
+    PHYSIM_HOST_DEVICE Vec applyInverse(Vec world) const { return q.applyInverse(world - p); }
+};
+
+enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1 };
+constexpr int kMaxVertices = 8;
+
+/// One shape in its body's frame. Circle: vertices[0] is the centre, count 1, radius > 0. Polygon: 3 to 8
+/// counter-clockwise vertices with outward unit normals (normals[i] for the edge i -> i + 1), radius 0.
+/// boundingRadius: the farthest point of the shape from the body origin (m), which bounds how fast rotation moves
+/// any of its points.
+struct Shape {
+    std::int32_t kind;
+    std::int32_t count;
+    double radius;
+    double boundingRadius;
+    Vec vertices[kMaxVertices];
+    Vec normals[kMaxVertices];
+};
+
+/// A body's motion over the interval: position and angle move linearly from (p0, a0) to (p1, a1).
+struct Motion {
+    Vec p0;
+    Vec p1;
+    double a0;
+    double a1;
+    PHYSIM_HOST_DEVICE Xf at(double t) const { return {p0 + t * (p1 - p0), rotation(a0 + t * (a1 - a0))}; }
+};
+
+/// Closest points of two placed shapes; distance 0 (and the rest zero) when they touch or overlap.
+struct Distance {
+    double distance;
+    Vec normal;  ///< unit, from a to b
+    Vec pointA;  ///< world
+    Vec pointB;  ///< world
+};
+
+PHYSIM_HOST_DEVICE inline Distance noDistance() { return {0.0, {0.0, 0.0}, {0.0, 0.0}, {0.0, 0.0}}; }
+
+PHYSIM_HOST_DEVICE inline Vec closestOnSegment(Vec point, Vec a, Vec b) {
+    const Vec e = b - a;  // |e| > 0: valid polygons have no coincident vertices
+    return a + clamp01(dot(point - a, e) / lengthSquared(e)) * e;
+}
+
+PHYSIM_HOST_DEVICE inline Distance fromPoints(Vec pa, Vec pb) {
+    const Vec d = pb - pa;
+    const double length = ::sqrt(lengthSquared(d));
+    if (!(length > 0.0)) return noDistance();
+    return {length, (1.0 / length) * d, pa, pb};
+}
+
+PHYSIM_HOST_DEVICE inline Distance circleCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    const Vec ca = xa.apply(a.vertices[0]);
+    const Vec cb = xb.apply(b.vertices[0]);
+    const Vec d = cb - ca;
+    const double centres = ::sqrt(lengthSquared(d));
+    if (!(centres > a.radius + b.radius)) return noDistance();
+    const Vec n = (1.0 / centres) * d;
+    return {centres - a.radius - b.radius, n, ca + a.radius * n, cb - b.radius * n};
+}
+
+// In the polygon's frame: the centre is inside when no face has it in front; otherwise the closest boundary point
+// is the nearest of the edges' closest points.
+PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    const Vec c = xa.applyInverse(xb.apply(b.vertices[0]));
+    double bestSq = INFINITY;
+    Vec surface{0.0, 0.0};
+    bool outside = false;
+    for (int i = 0; i < a.count; ++i) {
+        if (dot(a.normals[i], c - a.vertices[i]) > 0.0) outside = true;
+        const Vec q = closestOnSegment(c, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
+        const double sq = lengthSquared(c - q);
+        if (sq < bestSq) {
+            bestSq = sq;
+            surface = q;
+        }
+    }
+    if (!outside) return noDistance();
+    const double toCentre = ::sqrt(bestSq);
+    if (!(toCentre > b.radius)) return noDistance();
+    const Vec n = (1.0 / toCentre) * (c - surface);
+    return {toCentre - b.radius, xa.q.apply(n), xa.apply(surface), xa.apply(c - b.radius * n)};
+}
+
+// In a's frame. Disjoint convex polygons (some face separates them: SAT over both polygons' faces) have their
+// closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge pairs
+// (at most 2 * 8 * 8) is the exact distance. b's vertices and normals are moved into a's frame where they are used
+// rather than stored in local arrays: the same arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such
+// arrays (docs/cuda.md).
+PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
+    const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
+    bool separated = false;
+    for (int i = 0; i < a.count && !separated; ++i) {
+        double s = INFINITY;
+        for (int j = 0; j < b.count; ++j) s = minOf(s, dot(a.normals[i], relative.apply(b.vertices[j]) - a.vertices[i]));
+        separated = s > 0.0;
+    }
+    for (int j = 0; j < b.count && !separated; ++j) {
+        const Vec nb = q.apply(b.normals[j]);
+        const Vec vb = relative.apply(b.vertices[j]);
+        double s = INFINITY;
+        for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb, a.vertices[i] - vb));
+        separated = s > 0.0;
+    }
+    if (!separated) return noDistance();
+
+    double bestSq = INFINITY;
+    Vec pa{0.0, 0.0}, pb{0.0, 0.0};
+    for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
+        const Vec vb = relative.apply(b.vertices[j]);
+        for (int i = 0; i < a.count; ++i) {
+            const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
+            const double sq = lengthSquared(vb - on);
+            if (sq < bestSq) {
+                bestSq = sq;
+                pa = on;
+                pb = vb;
+            }
+        }
+    }
+    for (int j = 0; j < b.count; ++j) {  // a's vertices against b's edges
+        const Vec from = relative.apply(b.vertices[j]);
+        const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
+        for (int i = 0; i < a.count; ++i) {
+            const Vec on = closestOnSegment(a.vertices[i], from, to);
+            const double sq = lengthSquared(a.vertices[i] - on);
+            if (sq < bestSq) {
+                bestSq = sq;
+                pa = a.vertices[i];
+                pb = on;
+            }
+        }
+    }
+    return fromPoints(xa.apply(pa), xa.apply(pb));
+}
+
+/// Exact Euclidean distance between two placed convex shapes.
+PHYSIM_HOST_DEVICE inline Distance shapeDistance(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    if (a.kind == kCircle && b.kind == kCircle) return circleCircle(a, xa, b, xb);
+    if (b.kind == kCircle) return polygonCircle(a, xa, b, xb);
+    if (a.kind == kCircle) {
+        Distance d = polygonCircle(b, xb, a, xa);
+        const Vec swap = d.pointA;
+        d.pointA = d.pointB;
+        d.pointB = swap;
+        d.normal = -d.normal;
+        return d;
+    }
+    return polygonPolygon(a, xa, b, xb);
+}
+
+/// kInvalid: the pair's entries failed the batch's checks (pairHolds) and were not solved.
+enum ToiState : std::int32_t { kInvalid = -1, kSeparated = 0, kHit = 1, kTouching = 2 };
+
+/// First contact of two moving shapes. At a hit, gap/normal/point describe the two shapes at time t: the gap
+/// (m, in [0, tolerance)), the normal from a to b and the midpoint of the closest points; all zero when the
+/// shapes already overlap (gap 0 gives no direction).
+struct Toi {
+    std::int32_t state;
+    std::int32_t iterations;
+    double t;
+    double gap;
+    Vec normal;
+    Vec point;
+};
+
+/// Conservative advancement: at time t with gap d along the closest-point direction n, no point can close that
+/// gap faster than M = (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t (R: boundingRadius), so
+/// advancing by d / M never passes the contact. Stops when d < tolerance (m, > 0). After maxIterations without
+/// reaching it, returns a hit at the safe t reached (an early stop, never a miss).
+PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb,
+                                           double tolerance, int maxIterations) {
+    const Vec relativeMotion = (ma.p1 - ma.p0) - (mb.p1 - mb.p0);  // m per unit t
+    const double turning = ::fabs(ma.a1 - ma.a0) * a.boundingRadius + ::fabs(mb.a1 - mb.a0) * b.boundingRadius;
+    Toi r{kSeparated, 0, 1.0, 0.0, {0.0, 0.0}, {0.0, 0.0}};
+    double t = 0.0;
+    Distance d = noDistance();
+    for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
+        d = shapeDistance(a, ma.at(t), b, mb.at(t));
+        if (d.distance < tolerance) {
+            r.state = t == 0.0 ? kTouching : kHit;
+            r.t = t;
+            r.gap = d.distance;
+            r.normal = d.normal;
+            r.point = 0.5 * (d.pointA + d.pointB);
+            return r;
+        }
+        // The gap along the fixed axis d.normal bounds the distance from below and shrinks at most this fast.
+        const double closing = dot(relativeMotion, d.normal) + turning;
+        if (!(closing > 0.0)) break;  // the gap along this axis never shrinks: no contact
+        // Aim half a tolerance short of contact, so rounding cannot carry the pose into overlap and the loop ends
+        // with a gap in [tolerance / 2, tolerance).
+        t += (d.distance - 0.5 * tolerance) / closing;
+        if (t >= 1.0) break;
+    }
+    if (r.iterations > maxIterations) {  // not converged: t is still a safe (early) contact time
+        r.iterations = maxIterations;
+        r.state = kHit;
+        r.t = t;
+        r.gap = d.distance;
+        r.normal = d.normal;
+        r.point = 0.5 * (d.pointA + d.pointB);
+    }
+    return r;
+}
+
+/// Raw views of a ContinuousBatch's arrays (structure of arrays; see ContinuousBatch.hpp), host or device memory.
+struct BatchView {
+    // shapes
+    const std::int32_t* kind;
+    const std::int32_t* firstVertex;
+    const std::int32_t* vertexCount;
+    const double* radius;
+    const double* boundingRadius;
+    const double* vertexX;
+    const double* vertexY;
+    const double* normalX;
+    const double* normalY;
+    // bodies
+    const std::int32_t* shape;
+    const double* x0;
+    const double* y0;
+    const double* angle0;
+    const double* x1;
+    const double* y1;
+    const double* angle1;
+    // pairs
+    const std::int32_t* pairA;
+    const std::int32_t* pairB;
+    std::int32_t pairCount;
+    double tolerance;
+    std::int32_t maxIterations;
+    // entries in the shape, vertex and body arrays (each group's arrays have one size: checked on the host)
+    std::int32_t shapeCount;
+    std::int32_t vertexTotal;
+    std::int32_t bodyCount;
+};
+
+/// Raw views of a ContinuousBatchResult's arrays, one entry per pair.
+struct ResultView {
+    std::int32_t* state;
+    std::int32_t* iterations;
+    double* t;
+    double* gap;
+    double* normalX;
+    double* normalY;
+    double* pointX;
+    double* pointY;
+};
+
+PHYSIM_HOST_DEVICE inline Shape loadShape(const BatchView& v, std::int32_t s) {
+    Shape shape;
+    shape.kind = v.kind[s];
+    shape.count = v.vertexCount[s];
+    shape.radius = v.radius[s];
+    shape.boundingRadius = v.boundingRadius[s];
+    const std::int32_t first = v.firstVertex[s];
+    for (int k = 0; k < shape.count; ++k) {
+        shape.vertices[k] = {v.vertexX[first + k], v.vertexY[first + k]};
+        shape.normals[k] = {v.normalX[first + k], v.normalY[first + k]};
+    }
+    return shape;
+}
+
+PHYSIM_HOST_DEVICE inline Motion loadMotion(const BatchView& v, std::int32_t body) {
+    return {{v.x0[body], v.y0[body]}, {v.x1[body], v.y1[body]}, v.angle0[body], v.angle1[body]};
+}
+
+// --- The batch's checks, run for every pair where it is solved (so they cost a GPU batch no host time). Their
+// failure is reported, not solved: ContinuousBatch.cpp's validate() then names the bad entry.
+
+/// False for infinities and NaN (x - x is NaN for both).
+PHYSIM_HOST_DEVICE inline bool finite(double x) { return x - x == 0.0; }
+
+/// Each normal is its edge's outward unit normal (unit to 2e-9, square to the edge to 1e-9 rad, the bounds
+/// validate(Geometry) allows) and every other vertex lies strictly inside every edge's line. Together these hold
+/// exactly for strictly convex, counter-clockwise, simple polygons (a star, or a repeated, coincident or collinear
+/// vertex, breaks the second). O(count^2) multiplications, no square roots or divisions.
+PHYSIM_HOST_DEVICE inline bool polygonHolds(const BatchView& v, std::int32_t first, std::int32_t count) {
+    for (std::int32_t i = 0; i < count; ++i) {
+        const std::int32_t a = first + i, next = i + 1 == count ? 0 : i + 1, b = first + next;
+        const double ex = v.vertexX[b] - v.vertexX[a], ey = v.vertexY[b] - v.vertexY[a];
+        const double nx = v.normalX[a], ny = v.normalY[a];
+        const double lengthSq = ex * ex + ey * ey, unit = nx * nx + ny * ny - 1.0, along = nx * ex + ny * ey;
+        if (!(lengthSq > 0.0 && finite(lengthSq))) return false;
+        if (!(unit <= 4e-9 && unit >= -4e-9 && along * along <= 1e-18 * lengthSq && nx * ey - ny * ex > 0.0))
+            return false;  // false for NaN too
+        for (std::int32_t k = 0; k < count; ++k) {
+            if (k == i || k == next) continue;
+            const double inside = nx * (v.vertexX[first + k] - v.vertexX[a]) + ny * (v.vertexY[first + k] - v.vertexY[a]);
+            if (!(inside < 0.0)) return false;
+        }
+    }
+    return true;
+}
+
+/// boundingRadius[s] reaches every point of shape s (to 1e-12 relative: the host computes it with hypot).
+PHYSIM_HOST_DEVICE inline bool radiusBounds(const BatchView& v, std::int32_t s) {
+    const double reach = v.boundingRadius[s] - v.radius[s];  // what the vertices (a circle's centre) may reach
+    if (!(reach >= 0.0 && finite(reach))) return false;
+    const std::int32_t first = v.firstVertex[s];
+    for (std::int32_t k = 0; k < v.vertexCount[s]; ++k) {
+        const double x = v.vertexX[first + k], y = v.vertexY[first + k];
+        if (!(x * x + y * y <= reach * reach * (1.0 + 4e-12))) return false;
+    }
+    return true;
+}
+
+/// Shape s is one the kernel can read and trust: a known kind, a vertex range inside the arrays, the geometry of
+/// its kind, and a bounding radius that bounds it.
+PHYSIM_HOST_DEVICE inline bool shapeHolds(const BatchView& v, std::int32_t s) {
+    if (s < 0 || s >= v.shapeCount) return false;
+    const std::int32_t kind = v.kind[s], first = v.firstVertex[s], count = v.vertexCount[s];
+    const bool circle = kind == kCircle;
+    if (!circle && kind != kPolygon) return false;
+    if (count < (circle ? 1 : 3) || count > (circle ? 1 : kMaxVertices)) return false;
+    if (first < 0 || first > v.vertexTotal - count) return false;
+    const bool geometry = circle ? finite(v.vertexX[first]) && finite(v.vertexY[first]) && v.radius[s] > 0.0 &&
+                                       finite(v.radius[s])
+                                 : v.radius[s] == 0.0 && polygonHolds(v, first, count);
+    return geometry && radiusBounds(v, s);
+}
+
+PHYSIM_HOST_DEVICE inline bool bodyHolds(const BatchView& v, std::int32_t body) {
+    return body >= 0 && body < v.bodyCount && shapeHolds(v, v.shape[body]) && finite(v.x0[body]) &&
+           finite(v.y0[body]) && finite(v.angle0[body]) && finite(v.x1[body]) && finite(v.y1[body]) &&
+           finite(v.angle1[body]);
+}
+
+PHYSIM_HOST_DEVICE inline bool pairHolds(const BatchView& v, std::int32_t i) {
+    return v.pairA[i] != v.pairB[i] && bodyHolds(v, v.pairA[i]) && bodyHolds(v, v.pairB[i]);
+}
+
+/// Pair i of the batch: the unit of work of one CPU loop iteration or one GPU thread. A pair that fails its checks
+/// gets state kInvalid and is not solved.
+PHYSIM_HOST_DEVICE inline void solvePair(const BatchView& v, const ResultView& out, std::int32_t i) {
+    if (!pairHolds(v, i)) {
+        out.state[i] = kInvalid;
+        out.iterations[i] = 0;
+        out.t[i] = out.gap[i] = out.normalX[i] = out.normalY[i] = out.pointX[i] = out.pointY[i] = 0.0;
+        return;
+    }
+    const std::int32_t a = v.pairA[i], b = v.pairB[i];
+    const Shape sa = loadShape(v, v.shape[a]);
+    const Shape sb = loadShape(v, v.shape[b]);
+    const Toi r = timeOfImpact(sa, loadMotion(v, a), sb, loadMotion(v, b), v.tolerance, v.maxIterations);
+    out.state[i] = r.state;
+    out.iterations[i] = r.iterations;
+    out.t[i] = r.t;
+    out.gap[i] = r.gap;
+    out.normalX[i] = r.normal.x;
+    out.normalY[i] = r.normal.y;
+    out.pointX[i] = r.point.x;
+    out.pointY[i] = r.point.y;
+}
+
+}  // namespace physim::kernel

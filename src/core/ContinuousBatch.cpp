@@ -1,0 +1,287 @@
+// Continuous batches: filling, validation at the API boundary, and the CPU solve over the shared kernel.
+
+#include "physim/core/ContinuousBatch.hpp"
+
+#include "physim/core/Validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+namespace physim {
+
+static_assert(static_cast<int>(ToiState::Separated) == kernel::kSeparated && static_cast<int>(ToiState::Hit) == kernel::kHit &&
+                  static_cast<int>(ToiState::Touching) == kernel::kTouching,
+              "the batch's state codes are ToiState's");
+static_assert(Polygon::maxVertices == kernel::kMaxVertices, "the kernel holds every polygon the core makes");
+
+namespace {
+
+[[noreturn]] void reject(const std::string& what) {
+    throw std::invalid_argument("physim: continuous batch: " + what);
+}
+
+std::string at(const char* array, std::size_t i) { return std::string(array) + "[" + std::to_string(i) + "]"; }
+
+// Every array of a group has the size of the first one.
+template <typename First, typename... Rest>
+std::size_t sameSizes(const char* group, const char* firstName, const First& first, const Rest&... rest) {
+    const std::size_t n = first.size();
+    auto check = [&](const auto& named) {
+        if (named.second->size() != n) {
+            std::ostringstream os;
+            os << group << "." << named.first << " has " << named.second->size() << " entries but " << group << "."
+               << firstName << " has " << n;
+            reject(os.str());
+        }
+    };
+    (check(rest), ...);
+    if (n > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+        reject(std::string(group) + " has " + std::to_string(n) + " entries, more than 32-bit indices hold");
+    return n;
+}
+
+template <typename T>
+std::pair<const char*, const std::vector<T>*> named(const char* name, const std::vector<T>& v) {
+    return {name, &v};
+}
+
+void requireFiniteAt(const char* array, const std::vector<double>& v, std::size_t i) {
+    if (!std::isfinite(v[i])) requireFinite("continuous batch " + at(array, i), v[i]);
+}
+
+void requireIndex(const char* array, std::size_t i, std::int32_t value, std::size_t count, const char* what) {
+    if (value < 0 || static_cast<std::size_t>(value) >= count) {
+        std::ostringstream os;
+        os << at(array, i) << " = " << value << " is not a " << what << " index (there are " << count << ")";
+        reject(os.str());
+    }
+}
+
+// Shape i failed kernel::shapeHolds: say which entry is wrong and why.
+[[noreturn]] void explainShape(const ContinuousBatch::Shapes& s, std::size_t i, std::size_t vertices) {
+    const std::int32_t kind = s.kind[i];
+    if (kind != kernel::kCircle && kind != kernel::kPolygon)
+        reject("unsupported shape kind " + std::to_string(kind) + " at " + at("shapes.kind", i) +
+               " (0 circle, 1 polygon)");
+    const std::int32_t first = s.firstVertex[i], count = s.vertexCount[i];
+    const bool circle = kind == kernel::kCircle;
+    if (count < (circle ? 1 : 3) || count > (circle ? 1 : kernel::kMaxVertices))
+        reject(at("shapes.vertexCount", i) + " = " + std::to_string(count) + ", but a " +
+               (circle ? "circle has 1 (its centre)" : "polygon has 3 to 8"));
+    if (first < 0 || static_cast<std::size_t>(first) + static_cast<std::size_t>(count) > vertices)
+        reject(at("shapes.firstVertex", i) + " = " + std::to_string(first) + " with " + std::to_string(count) +
+               " vertices runs past the " + std::to_string(vertices) + " vertex entries");
+    if (!circle && s.radius[i] != 0.0)
+        reject(at("shapes.radius", i) + " = " + std::to_string(s.radius[i]) + ", but a polygon has radius 0");
+    // The geometry through the core's own checks, which name the problem (non-convex, bad normal, ...).
+    Geometry g;
+    if (circle) {
+        g = Circle{{s.vertexX[first], s.vertexY[first]}, s.radius[i]};
+    } else {
+        Polygon p;
+        p.count = count;
+        for (int k = 0; k < count; ++k) {
+            p.vertices[k] = {s.vertexX[first + k], s.vertexY[first + k]};
+            p.normals[k] = {s.normalX[first + k], s.normalY[first + k]};
+        }
+        g = p;
+    }
+    try {
+        validate(g);
+    } catch (const std::invalid_argument& e) {
+        reject("shape " + std::to_string(i) + ": " + e.what());
+    }
+    if (!circle) {  // validate(Geometry) allows normals 1e-9 off; the kernel's inside test may still refuse them
+        ContinuousBatch one;
+        one.addShape(g);
+        if (!kernel::shapeHolds(viewOf(one), 0))
+            reject("shape " + std::to_string(i) + ": a vertex lies on or outside another edge's line");
+    }
+    reject(at("shapes.boundingRadius", i) + " = " + std::to_string(s.boundingRadius[i]) +
+           " does not bound the shape (at least " + std::to_string(boundingRadius(g)) + " m)");
+}
+
+}  // namespace
+
+std::int32_t ContinuousBatch::addShape(const Geometry& g) {
+    const kernel::Shape k = toKernel(g);
+    const auto index = static_cast<std::int32_t>(shapes.kind.size());
+    shapes.kind.push_back(k.kind);
+    shapes.firstVertex.push_back(static_cast<std::int32_t>(shapes.vertexX.size()));
+    shapes.vertexCount.push_back(k.count);
+    shapes.radius.push_back(k.radius);
+    shapes.boundingRadius.push_back(k.boundingRadius);
+    for (int i = 0; i < k.count; ++i) {
+        shapes.vertexX.push_back(k.vertices[i].x);
+        shapes.vertexY.push_back(k.vertices[i].y);
+        shapes.normalX.push_back(k.normals[i].x);
+        shapes.normalY.push_back(k.normals[i].y);
+    }
+    return index;
+}
+
+std::int32_t ContinuousBatch::addBody(std::int32_t shape, const Sweep& motion) {
+    const auto index = static_cast<std::int32_t>(bodies.shape.size());
+    bodies.shape.push_back(shape);
+    bodies.x0.push_back(motion.p0.x());
+    bodies.y0.push_back(motion.p0.y());
+    bodies.angle0.push_back(motion.a0);
+    bodies.x1.push_back(motion.p1.x());
+    bodies.y1.push_back(motion.p1.y());
+    bodies.angle1.push_back(motion.a1);
+    return index;
+}
+
+void ContinuousBatch::addPair(std::int32_t a, std::int32_t b) {
+    pairs.a.push_back(a);
+    pairs.b.push_back(b);
+}
+
+void ContinuousBatch::clear() {
+    for (auto* v : {&shapes.kind, &shapes.firstVertex, &shapes.vertexCount, &bodies.shape, &pairs.a, &pairs.b})
+        v->clear();
+    for (auto* v : {&shapes.radius, &shapes.boundingRadius, &shapes.vertexX, &shapes.vertexY, &shapes.normalX,
+                    &shapes.normalY, &bodies.x0, &bodies.y0, &bodies.angle0, &bodies.x1, &bodies.y1, &bodies.angle1})
+        v->clear();
+}
+
+void ContinuousBatchResult::resize(std::size_t pairs) {
+    state.resize(pairs);
+    iterations.resize(pairs);
+    for (auto* v : {&t, &gap, &normalX, &normalY, &pointX, &pointY}) v->resize(pairs);
+}
+
+void checkLayout(const ContinuousBatch& batch) {
+    if (!(std::isfinite(batch.tolerance) && batch.tolerance > 0.0))
+        requirePositive("continuous batch tolerance (m)", batch.tolerance);
+    if (batch.maxIterations < 1)
+        reject("maxIterations must be >= 1, got " + std::to_string(batch.maxIterations));
+    const auto& s = batch.shapes;
+    sameSizes("shapes", "kind", s.kind, named("firstVertex", s.firstVertex), named("vertexCount", s.vertexCount),
+              named("radius", s.radius), named("boundingRadius", s.boundingRadius));
+    sameSizes("shapes", "vertexX", s.vertexX, named("vertexY", s.vertexY), named("normalX", s.normalX),
+              named("normalY", s.normalY));
+    const auto& b = batch.bodies;
+    sameSizes("bodies", "shape", b.shape, named("x0", b.x0), named("y0", b.y0), named("angle0", b.angle0),
+              named("x1", b.x1), named("y1", b.y1), named("angle1", b.angle1));
+    sameSizes("pairs", "a", batch.pairs.a, named("b", batch.pairs.b));
+}
+
+void validate(const ContinuousBatch& batch) {
+    checkLayout(batch);
+    const kernel::BatchView view = viewOf(batch);
+    const auto& s = batch.shapes;
+    for (std::int32_t i = 0; i < view.shapeCount; ++i)
+        if (!kernel::shapeHolds(view, i)) explainShape(s, static_cast<std::size_t>(i), s.vertexX.size());
+
+    const auto& b = batch.bodies;
+    for (std::size_t i = 0; i < b.shape.size(); ++i) {
+        requireIndex("bodies.shape", i, b.shape[i], s.kind.size(), "shape");
+        requireFiniteAt("bodies.x0", b.x0, i);
+        requireFiniteAt("bodies.y0", b.y0, i);
+        requireFiniteAt("bodies.angle0", b.angle0, i);
+        requireFiniteAt("bodies.x1", b.x1, i);
+        requireFiniteAt("bodies.y1", b.y1, i);
+        requireFiniteAt("bodies.angle1", b.angle1, i);
+    }
+
+    const auto& p = batch.pairs;
+    for (std::size_t i = 0; i < p.a.size(); ++i) {
+        requireIndex("pairs.a", i, p.a[i], b.shape.size(), "body");
+        requireIndex("pairs.b", i, p.b[i], b.shape.size(), "body");
+        if (p.a[i] == p.b[i]) reject("pair " + std::to_string(i) + " names body " + std::to_string(p.a[i]) + " twice");
+    }
+}
+
+void reportInvalidPairs(const ContinuousBatch& batch, const ContinuousBatchResult& result) {
+    const auto bad = std::find(result.state.begin(), result.state.end(), kernel::kInvalid);
+    if (bad == result.state.end()) return;
+    validate(batch);  // names the entry
+    reject("pair " + std::to_string(bad - result.state.begin()) + " failed the kernel's checks");
+}
+
+kernel::BatchView viewOf(const ContinuousBatch& batch) {
+    const auto& s = batch.shapes;
+    const auto& b = batch.bodies;
+    return {s.kind.data(),    s.firstVertex.data(), s.vertexCount.data(), s.radius.data(), s.boundingRadius.data(),
+            s.vertexX.data(), s.vertexY.data(),     s.normalX.data(),     s.normalY.data(), b.shape.data(),
+            b.x0.data(),      b.y0.data(),          b.angle0.data(),      b.x1.data(),      b.y1.data(),
+            b.angle1.data(),  batch.pairs.a.data(), batch.pairs.b.data(),
+            static_cast<std::int32_t>(batch.pairCount()), batch.tolerance, batch.maxIterations,
+            static_cast<std::int32_t>(s.kind.size()), static_cast<std::int32_t>(s.vertexX.size()),
+            static_cast<std::int32_t>(b.shape.size())};
+}
+
+kernel::ResultView viewOf(ContinuousBatchResult& r) {
+    return {r.state.data(),   r.iterations.data(), r.t.data(),      r.gap.data(),
+            r.normalX.data(), r.normalY.data(),    r.pointX.data(), r.pointY.data()};
+}
+
+kernel::Shape toKernel(const Geometry& g) {
+    kernel::Shape k{};
+    k.boundingRadius = boundingRadius(g);
+    if (const auto* c = std::get_if<Circle>(&g)) {
+        k.kind = kernel::kCircle;
+        k.count = 1;
+        k.radius = c->radius;
+        k.vertices[0] = {c->center.x(), c->center.y()};
+        return k;
+    }
+    const auto& p = std::get<Polygon>(g);
+    k.kind = kernel::kPolygon;
+    k.count = p.count;
+    k.radius = 0.0;
+    for (int i = 0; i < p.count; ++i) {
+        k.vertices[i] = {p.vertices[i].x(), p.vertices[i].y()};
+        k.normals[i] = {p.normals[i].x(), p.normals[i].y()};
+    }
+    return k;
+}
+
+kernel::Motion toKernel(const Sweep& s) { return {{s.p0.x(), s.p0.y()}, {s.p1.x(), s.p1.y()}, s.a0, s.a1}; }
+
+kernel::Xf toKernel(const Transform& xf) { return {{xf.p.x(), xf.p.y()}, {xf.q.c, xf.q.s}}; }
+
+void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, unsigned threads) {
+    result.resize(batch.pairCount());
+    const kernel::BatchView in = viewOf(batch);
+    const kernel::ResultView out = viewOf(result);
+    auto solveRange = [&](std::int64_t begin, std::int64_t end) {
+        for (auto i = static_cast<std::int32_t>(begin); i < end; ++i) kernel::solvePair(in, out, i);
+    };
+    // Below about 2000 pairs per thread, starting a thread costs a noticeable share of the work (~1 us a pair).
+    constexpr std::int64_t kMinPairsPerThread = 2048;
+    const std::int64_t n = in.pairCount;
+    const std::int64_t workers =
+        std::max<std::int64_t>(1, std::min<std::int64_t>(threads, (n + kMinPairsPerThread - 1) / kMinPairsPerThread));
+    if (workers <= 1) {
+        solveRange(0, n);
+        return;
+    }
+    std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(workers - 1));
+    const std::int64_t chunk = (n + workers - 1) / workers;
+    for (std::int64_t w = 1; w < workers; ++w)
+        pool.emplace_back(solveRange, std::min(n, w * chunk), std::min(n, (w + 1) * chunk));
+    solveRange(0, std::min(n, chunk));
+    for (std::thread& t : pool) t.join();
+}
+
+CpuContinuousSolver::CpuContinuousSolver(unsigned threads)
+    : threads_(threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads) {}
+
+void CpuContinuousSolver::solve(const ContinuousBatch& batch, ContinuousBatchResult& result) {
+    checkLayout(batch);
+    solveOnCpu(batch, result, threads_);
+    reportInvalidPairs(batch, result);
+}
+
+std::string CpuContinuousSolver::name() const {
+    return "cpu, " + std::to_string(threads_) + (threads_ == 1 ? " thread" : " threads");
+}
+
+}  // namespace physim

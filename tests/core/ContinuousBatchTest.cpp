@@ -1,0 +1,198 @@
+// Continuous batches on the CPU: the batch answers exactly what the one-pair functions answer (they are one piece
+// of code, ContinuousKernel.hpp, so equality is to the last bit), a closed-form time of impact, threads that
+// change nothing, bad input named at the boundary, and a World whose continuous stage goes through the solver.
+
+#include "physim/core/ContinuousBatch.hpp"
+#include "physim/core/World.hpp"
+
+#include "support/RandomBatch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace physim {
+namespace {
+
+Sweep sweepOf(const ContinuousBatch& b, std::int32_t body) {
+    return {{b.bodies.x0[body], b.bodies.y0[body]}, {b.bodies.x1[body], b.bodies.y1[body]}, b.bodies.angle0[body],
+            b.bodies.angle1[body]};
+}
+
+Geometry shapeOf(const ContinuousBatch& b, std::int32_t body) {
+    const std::int32_t s = b.bodies.shape[body];
+    const std::int32_t first = b.shapes.firstVertex[s];
+    if (b.shapes.kind[s] == kernel::kCircle)
+        return Circle{{b.shapes.vertexX[first], b.shapes.vertexY[first]}, b.shapes.radius[s]};
+    Polygon p;
+    p.count = b.shapes.vertexCount[s];
+    for (int k = 0; k < p.count; ++k) {
+        p.vertices[k] = {b.shapes.vertexX[first + k], b.shapes.vertexY[first + k]};
+        p.normals[k] = {b.shapes.normalX[first + k], b.shapes.normalY[first + k]};
+    }
+    return p;
+}
+
+TEST(ContinuousBatch, AnswersWhatTheOnePairFunctionsAnswer) {
+    const ContinuousBatch batch = testing::randomBatch(3000, 11);
+    ContinuousBatchResult result;
+    CpuContinuousSolver().solve(batch, result);
+    ASSERT_EQ(result.size(), batch.pairCount());
+    int hits = 0;
+    for (std::size_t i = 0; i < batch.pairCount(); ++i) {
+        const Geometry a = shapeOf(batch, batch.pairs.a[i]), b = shapeOf(batch, batch.pairs.b[i]);
+        const Sweep sa = sweepOf(batch, batch.pairs.a[i]), sb = sweepOf(batch, batch.pairs.b[i]);
+        const ToiResult one = timeOfImpact(a, sa, b, sb, batch.tolerance, batch.maxIterations);
+        const ToiResult many = result.toi(i);
+        ASSERT_EQ(many.state, one.state) << "pair " << i;
+        ASSERT_EQ(many.t, one.t) << "pair " << i;  // same code, same inputs: the same bits
+        ASSERT_EQ(many.iterations, one.iterations) << "pair " << i;
+        if (many.state != ToiState::Hit) continue;
+        ++hits;
+        // The contact data describes the shapes at t: the gap the distance function measures there, a unit
+        // normal, and a point between the two surfaces.
+        const DistanceOutput d = shapeDistance(a, sa.at(many.t), b, sb.at(many.t));
+        EXPECT_EQ(result.gap[i], d.distance);
+        EXPECT_LT(result.gap[i], batch.tolerance);
+        EXPECT_NEAR(std::hypot(result.normalX[i], result.normalY[i]), 1.0, 1e-12);
+        EXPECT_EQ(result.pointX[i], 0.5 * (d.pointA.x() + d.pointB.x()));
+    }
+    // The generator's design: about half the pairs collide; far fewer would mean a broken generator.
+    EXPECT_GT(hits, 1000);
+}
+
+TEST(ContinuousBatch, CircleAgainstAPlankMatchesTheClosedForm) {
+    // A 10 cm circle moves 10 m along x from x = -5 towards a static plank 1 cm thick at the origin: contact when
+    // its centre reaches -0.105, at t = 4.895 / 10. Conservative advancement stops within the tolerance before
+    // that, never after: t in (t* - tol / 10, t*], the gap below the tolerance.
+    ContinuousBatch batch;
+    const auto ball = batch.addBody(batch.addShape(makeCircle(0.1)), Sweep{{-5, 0}, {5, 0}, 0, 0});
+    const auto plank = batch.addBody(batch.addShape(makeBox(0.005, 1.0)), Sweep{{0, 0}, {0, 0}, 0, 0});
+    batch.addPair(ball, plank);
+    batch.addPair(plank, ball);  // the other way round: same time, normal reversed
+    ContinuousBatchResult r;
+    CpuContinuousSolver().solve(batch, r);
+    const double exact = 4.895 / 10.0;
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(r.toi(i).state, ToiState::Hit);
+        EXPECT_LE(r.t[i], exact + 1e-15);
+        EXPECT_GT(r.t[i], exact - batch.tolerance / 10.0);
+        EXPECT_NEAR(r.pointX[i], -0.005 - 0.5 * r.gap[i], 1e-12);
+        EXPECT_NEAR(r.pointY[i], 0.0, 1e-12);
+    }
+    EXPECT_NEAR(r.normalX[0], 1.0, 1e-12);
+    EXPECT_NEAR(r.normalX[1], -1.0, 1e-12);
+}
+
+TEST(ContinuousBatch, ThreadsChangeNothing) {
+    const ContinuousBatch batch = testing::randomBatch(10000, 3);
+    ContinuousBatchResult one, four;
+    CpuContinuousSolver(1).solve(batch, one);
+    CpuContinuousSolver(4).solve(batch, four);
+    EXPECT_EQ(one.state, four.state);
+    EXPECT_EQ(one.t, four.t);
+    EXPECT_EQ(one.normalX, four.normalX);
+    EXPECT_EQ(CpuContinuousSolver(4).name(), "cpu, 4 threads");
+}
+
+TEST(ContinuousBatch, AnEmptyBatchGivesAnEmptyResult) {
+    ContinuousBatchResult r;
+    r.resize(5);
+    CpuContinuousSolver().solve(ContinuousBatch{}, r);
+    EXPECT_EQ(r.size(), 0u);
+}
+
+// Each bad batch is rejected with a message that names the array or value.
+void expectRejected(const ContinuousBatch& batch, const std::string& expected) {
+    ContinuousBatchResult r;
+    try {
+        CpuContinuousSolver().solve(batch, r);
+        ADD_FAILURE() << "accepted; expected: " << expected;
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+}
+
+TEST(ContinuousBatch, BadInputIsNamed) {
+    const ContinuousBatch good = testing::randomBatch(6, 1);
+    ContinuousBatch b = good;
+    b.bodies.x1.pop_back();
+    expectRejected(b, "bodies.x1 has 11 entries but bodies.shape has 12");
+    b = good;
+    b.shapes.kind[2] = 7;
+    expectRejected(b, "unsupported shape kind 7 at shapes.kind[2]");
+    b = good;
+    b.shapes.vertexCount[0] = 2;  // shape 0 is a circle
+    expectRejected(b, "shapes.vertexCount[0] = 2, but a circle has 1");
+    b = good;
+    b.shapes.firstVertex[1] = static_cast<std::int32_t>(b.shapes.vertexX.size()) - 1;
+    expectRejected(b, "shapes.firstVertex[1]");
+    b = good;
+    b.shapes.vertexX[b.shapes.firstVertex[2] + 1] *= -3.0;  // shape 2 (a box) made non-convex
+    expectRejected(b, "shape 2:");
+    b = good;
+    b.shapes.boundingRadius[2] = 0.0;
+    expectRejected(b, "shapes.boundingRadius[2]");
+    b = good;
+    b.bodies.y0[3] = std::nan("");
+    expectRejected(b, "bodies.y0[3] must be finite, got nan");
+    b = good;
+    b.bodies.angle1[0] = INFINITY;
+    expectRejected(b, "bodies.angle1[0]");
+    b = good;
+    b.pairs.b[4] = 99;
+    expectRejected(b, "pairs.b[4] = 99 is not a body index");
+    b = good;
+    b.pairs.b[0] = b.pairs.a[0];
+    expectRejected(b, "pair 0 names body 0 twice");
+    b = good;
+    b.bodies.shape[5] = -1;
+    expectRejected(b, "bodies.shape[5] = -1");
+    b = good;
+    b.tolerance = 0.0;
+    expectRejected(b, "tolerance");
+    b = good;
+    b.maxIterations = 0;
+    expectRejected(b, "maxIterations must be >= 1, got 0");
+}
+
+// A solver that counts what the World hands it and solves on the CPU.
+class CountingSolver final : public ContinuousSolver {
+public:
+    void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override {
+        ++batches;
+        pairs += batch.pairCount();
+        cpu.solve(batch, result);
+    }
+    std::string name() const override { return "counting"; }
+    int batches = 0;
+    std::size_t pairs = 0;
+    CpuContinuousSolver cpu;
+};
+
+TEST(ContinuousBatch, TheWorldsContinuousStageGoesThroughItsSolver) {
+    WorldSettings s;
+    s.gravity = Vec2::Zero();
+    World plain(s), counted(s);
+    const auto bulletsA = testing::fillBulletBox(plain, 40, 9);
+    const auto bulletsB = testing::fillBulletBox(counted, 40, 9);
+    auto solver = std::make_shared<CountingSolver>();
+    counted.setContinuousSolver(solver);
+    EXPECT_EQ(counted.continuousSolver(), solver);
+    EXPECT_EQ(plain.continuousSolver(), nullptr);
+    for (int i = 0; i < 60; ++i) {
+        plain.step(1.0 / 60.0);
+        counted.step(1.0 / 60.0);
+    }
+    EXPECT_EQ(solver->batches, 60 * s.substeps);  // every substep has a bullet near a wall
+    EXPECT_GT(solver->pairs, 0u);
+    // The same kernel on the same thread: the two worlds are the same to the last bit.
+    for (std::size_t i = 0; i < bulletsA.size(); ++i)
+        EXPECT_EQ(plain.position(bulletsA[i]), counted.position(bulletsB[i]));
+}
+
+}  // namespace
+}  // namespace physim
