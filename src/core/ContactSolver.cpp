@@ -166,10 +166,11 @@ void ContactSolver::solveNormalBlock(BodyData& A, BodyData& B, Manifold& m, cons
 }
 
 void ContactSolver::correctPositions(std::vector<BodyData>& bodies, const std::vector<Manifold>& manifolds,
-                                     const WorldSettings& s) {
+                                     const WorldSettings& s, const std::vector<std::uint8_t>* moved) {
     for (std::size_t k = 0; k < manifolds.size(); ++k) {
         const Manifold& m = manifolds[k];
         const PairState& ps = pairs_[k];
+        if (moved && ((*moved)[ps.a] || (*moved)[ps.b])) continue;
         BodyData& A = bodies[ps.a];
         BodyData& B = bodies[ps.b];
         const Vec2 n = m.normal;

@@ -8,6 +8,7 @@
 #include "physim/core/Contact.hpp"
 #include "physim/core/WorldSettings.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace physim {
@@ -18,9 +19,10 @@ public:
     /// the manifolds' points.
     void prepare(std::vector<BodyData>& bodies, std::vector<Manifold>& manifolds, const WorldSettings& s);
     void solveVelocities(std::vector<BodyData>& bodies, std::vector<Manifold>& manifolds);
-    /// After positions were integrated: push overlapping bodies apart by position changes only.
+    /// After positions were integrated: push overlapping bodies apart by position changes only. Contacts of a
+    /// body marked in `moved` (the continuous stage put it elsewhere: its anchors are stale) are left alone.
     void correctPositions(std::vector<BodyData>& bodies, const std::vector<Manifold>& manifolds,
-                          const WorldSettings& s);
+                          const WorldSettings& s, const std::vector<std::uint8_t>* moved = nullptr);
 
 private:
     struct PointState {

@@ -53,35 +53,113 @@ double closingSpeed(const BodyData& a, const BodyData& b, const Vec2& n, const V
     return -relative.dot(n);
 }
 
-bool exactContinuous(const BodyData& b) {
-    return b.alive && b.type == BodyType::Dynamic && b.detection == CollisionDetection::ContinuousExact;
+bool sweeps(const BodyData& b) {
+    return b.alive && b.type == BodyType::Dynamic && b.detection != CollisionDetection::Discrete;
 }
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
-void ContinuousStage::batchFirstSweeps(const std::vector<BodyData>& bodies) {
+Sweep ContinuousStage::sweepFrom(std::size_t k, double t) const {
+    const Segment& s = segments_[k];
+    return {s.positionAt(t), s.positionAt(1.0), s.angleAt(t), s.angleAt(1.0)};
+}
+
+void ContinuousStage::restartSegment(std::size_t k, const BodyData& b, double t, double dt) {
+    Segment& s = segments_[k];
+    s.p = s.positionAt(t);
+    s.angle = s.angleAt(t);
+    s.t0 = t;
+    const bool stays = s.impacts >= kMaxImpacts;  // the last impact it may meet: it stays here
+    s.dp = stays ? Vec2::Zero() : Vec2(dt * b.v);
+    s.da = stays ? 0.0 : dt * b.w;
+    s.swept = sweptAabb(b.shape, sweepFrom(k, t));
+    s.changed = true;
+}
+
+ToiResult ContinuousStage::test(const std::vector<BodyData>& bodies, std::size_t k, std::size_t other,
+                                double t) const {
+    const BodyData& body = bodies[k];
+    const Sweep mine = sweepFrom(k, t), theirs = sweepFrom(other, t);
+    return body.detection == CollisionDetection::ContinuousExact
+               ? timeOfImpact(body.shape, mine, bodies[other].shape, theirs)
+               : sampledTimeOfImpact(body.shape, mine, bodies[other].shape, theirs, body.precision);
+}
+
+void ContinuousStage::consider(const std::vector<BodyData>& bodies, std::size_t k, std::size_t other, double t,
+                               const ToiResult& r, double dt, Impact& best) const {
+    const double rest = 1.0 - t;
+    if (r.state == ToiState::Hit) {
+        const double at = t + r.t * rest;
+        if (at < best.t) best = {at, other};
+    } else if (r.state == ToiState::Touching && best.t > t) {
+        // Touching at the segment's start (the contact just met, or a resting one): the discrete contacts own it,
+        // unless the bodies would close by more than the tolerance over the rest of the substep (the solve saw no
+        // contact within that hair's gap): then it is an impact now.
+        const Sweep mine = sweepFrom(k, t), theirs = sweepFrom(other, t);
+        const Transform here = mine.at(0.0), there = theirs.at(0.0);
+        Vec2 n, c;
+        if (contactAt(bodies[k].shape, here, bodies[other].shape, there, n, c) &&
+            closingSpeed(bodies[k], bodies[other], n, c, here, there) * rest * dt > kToiTolerance) {
+            best = {t, other};
+            return;
+        }
+        // Not closing where they touch, but turning can still carry another part through (a spinning plank that
+        // just hit something). Then the impact is where they last overlapped by no more than the linear slop.
+        const double deeper = deepening(bodies[k].shape, mine, bodies[other].shape, theirs, n, slop_);
+        if (deeper < 1.0 && t + deeper * rest < best.t) best = {t + deeper * rest, other};
+    }
+}
+
+double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb,
+                                  const Vec2& n, double slop) {
+    // Touching convex shapes are separated by the line through the contact across n: sliding along it cannot
+    // make them overlap, so only the approach along n and the turning (a point at R from its origin moves R per
+    // radian) can, and no overlap grows faster than `reach` over the sweep. Sampling at half the slop's spacing
+    // in that measure cannot step over an overlap deeper than the slop.
+    const double approach = ((sa.p1 - sa.p0) - (sb.p1 - sb.p0)).dot(n);
+    const double reach = std::max(0.0, approach) + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
+                         std::abs(sb.a1 - sb.a0) * boundingRadius(b);
+    if (!(reach > slop)) return 1.0;  // cannot overlap by more than the slop: the discrete contacts' business
+    const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
+    for (int s = 1; s <= samples; ++s) {
+        const double u = static_cast<double>(s) / samples;
+        const Manifold m = collide(a, sa.at(u), b, sb.at(u));
+        for (int p = 0; p < m.pointCount; ++p)
+            if (m.points[p].separation < -slop) return static_cast<double>(s - 1) / samples;
+    }
+    return 1.0;
+}
+
+ContinuousStage::Impact ContinuousStage::earliestImpact(const std::vector<BodyData>& bodies, std::size_t k, double t,
+                                                        double dt) const {
+    Impact best{kNever, bodies.size()};
+    const Aabb& box = segments_[k].swept;  // covers [t0, 1], so [t, 1] too
+    for (std::size_t m = 0; m < bodies.size(); ++m) {
+        if (m == k || !bodies[m].alive || !box.overlaps(segments_[m].swept)) continue;  // swept-volume pre-check
+        consider(bodies, k, m, t, test(bodies, k, m, t), dt, best);
+    }
+    return best;
+}
+
+void ContinuousStage::batchFirstImpacts(const std::vector<BodyData>& bodies, double dt) {
     batch_.clear();
+    pairOwner_.clear();
     pairPartner_.clear();
     batchBody_.assign(bodies.size(), -1);
-    firstPair_.assign(bodies.size(), 0);
-    endPair_.assign(bodies.size(), 0);
     auto inBatch = [&](std::size_t k) {
-        if (batchBody_[k] < 0) {
-            const Motion& m = motion_[k];
-            batchBody_[k] = batch_.addBody(batch_.addShape(bodies[k].shape),
-                                           Sweep{m.p, m.p + m.dp, m.angle, m.angle + m.da});
-        }
+        if (batchBody_[k] < 0) batchBody_[k] = batch_.addBody(batch_.addShape(bodies[k].shape), sweepFrom(k, 0.0));
         return batchBody_[k];
     };
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        if (!exactContinuous(bodies[i])) continue;
-        firstPair_[i] = static_cast<std::uint32_t>(pairPartner_.size());
+    for (const std::uint32_t i : sweepers_) {
+        if (bodies[i].detection != CollisionDetection::ContinuousExact) continue;
         for (std::size_t j = 0; j < bodies.size(); ++j) {
-            if (j == i || !bodies[j].alive || !motion_[i].swept.overlaps(motion_[j].swept)) continue;
+            if (j == i || !bodies[j].alive || !segments_[i].swept.overlaps(segments_[j].swept)) continue;
             batch_.addPair(inBatch(i), inBatch(j));
+            pairOwner_.push_back(i);
             pairPartner_.push_back(static_cast<std::uint32_t>(j));
         }
-        endPair_[i] = static_cast<std::uint32_t>(pairPartner_.size());
     }
     if (batch_.pairCount() == 0) return;
     // The World built the batch from validated bodies, so every pair passes the kernel's checks.
@@ -89,110 +167,88 @@ void ContinuousStage::batchFirstSweeps(const std::vector<BodyData>& bodies) {
         solver_->solve(batch_, batchResult_);
     else
         solveOnCpu(batch_, batchResult_, 1);
+    for (std::size_t k = 0; k < pairOwner_.size(); ++k)
+        consider(bodies, pairOwner_[k], pairPartner_[k], 0.0, batchResult_.toi(k), dt, next_[pairOwner_[k]]);
+}
+
+void ContinuousStage::answer(std::vector<BodyData>& bodies, std::size_t i, std::size_t j, double t, double dt,
+                             const WorldSettings& settings) {
+    ++impacts_;
+    BodyData& a = bodies[i];
+    BodyData& b = bodies[j];
+    const Transform here{segments_[i].positionAt(t), Rotation::fromAngle(segments_[i].angleAt(t))};
+    const Transform there{segments_[j].positionAt(t), Rotation::fromAngle(segments_[j].angleAt(t))};
+    // The impulse's lever arms need the poses at the impact; the bodies' own poses are put back after it (the
+    // integrator still moves them from the start of the substep, and placeBodies corrects the changed ones).
+    const Transform aStart = a.xf, bStart = b.xf;
+    a.xf = here;
+    b.xf = there;
+    Vec2 n, c;
+    // Sampled hits overlap: contactAt then takes the narrow phase's normal and point.
+    if (contactAt(a.shape, here, b.shape, there, n, c)) applyImpulse(a, b, n, c, settings);
+    a.xf = aStart;
+    b.xf = bStart;
+    ++segments_[i].impacts;
+    restartSegment(i, a, t, dt);
+    if (b.type == BodyType::Dynamic) {  // its velocity changed: it goes on from here, swept like the rest
+        ++segments_[j].impacts;
+        restartSegment(j, b, t, dt);
+    }
 }
 
 void ContinuousStage::findImpacts(std::vector<BodyData>& bodies, double dt, const WorldSettings& settings) {
+    slop_ = settings.linearSlop;
     placements_.clear();
     impacts_ = 0;
-    motion_.resize(bodies.size());
+    segments_.resize(bodies.size());
+    next_.assign(bodies.size(), Impact{kNever, bodies.size()});
+    sweepers_.clear();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const BodyData& b = bodies[i];
         if (!b.alive) continue;
-        Motion& m = motion_[i];
-        m.p = b.xf.p;
-        m.angle = b.angle;
-        m.dp = b.movable() ? Vec2(dt * b.v) : Vec2::Zero();
-        m.da = b.movable() ? dt * b.w : 0.0;
-        m.swept = sweptAabb(b.shape, Sweep{m.p, m.p + m.dp, m.angle, m.angle + m.da});
+        Segment& s = segments_[i];
+        s = Segment{};
+        s.p = b.xf.p;
+        s.angle = b.angle;
+        s.dp = b.movable() ? Vec2(dt * b.v) : Vec2::Zero();
+        s.da = b.movable() ? dt * b.w : 0.0;
+        s.swept = sweptAabb(b.shape, sweepFrom(i, 0.0));
+        if (sweeps(b)) sweepers_.push_back(static_cast<std::uint32_t>(i));
     }
-    batchFirstSweeps(bodies);
+    batchFirstImpacts(bodies, dt);
+    for (const std::uint32_t i : sweepers_)
+        if (bodies[i].detection != CollisionDetection::ContinuousExact) next_[i] = earliestImpact(bodies, i, 0.0, dt);
 
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        BodyData& body = bodies[i];
-        if (!body.alive || body.type != BodyType::Dynamic || body.detection == CollisionDetection::Discrete)
-            continue;
-        // The body's state on the step's clock: at time t (fraction of the step) it is at (p, angle) and moves
-        // by (dp, da) per whole step.
-        double t = 0.0;
-        Vec2 p = motion_[i].p, dp = motion_[i].dp;
-        double angle = motion_[i].angle, da = motion_[i].da;
-        int impacts = 0;
-        bool hitSomething = false;
-        for (;;) {
-            const double rest = 1.0 - t;
-            const Sweep mine{p, p + rest * dp, angle, angle + rest * da};  // u in [0, 1] is time t + u * rest
-            auto theirs = [&](std::size_t j) {
-                const Motion& o = motion_[j];
-                return Sweep{o.p + t * o.dp, o.p + o.dp, o.angle + t * o.da, o.angle + o.da};
-            };
-            double first = std::numeric_limits<double>::infinity();
-            std::size_t partner = bodies.size();
-            auto consider = [&](std::size_t j, const ToiResult& r) {
-                if (r.state == ToiState::Hit && r.t < first) {
-                    first = r.t;
-                    partner = j;
-                } else if (r.state == ToiState::Touching && first > 0.0) {
-                    // Touching at the start (the contact just met, or a resting one): the discrete contacts own
-                    // it, unless the bodies would close by more than the tolerance over the rest of the step
-                    // (the solve saw no contact within that hair's gap): then it is an impact now.
-                    Vec2 n, c;
-                    const Transform there = theirs(j).at(0.0);
-                    if (contactAt(body.shape, mine.at(0.0), bodies[j].shape, there, n, c) &&
-                        closingSpeed(body, bodies[j], n, c, mine.at(0.0), there) * rest * dt > kToiTolerance) {
-                        first = 0.0;
-                        partner = j;
-                    }
-                }
-            };
-            if (impacts == 0 && body.detection == CollisionDetection::ContinuousExact) {
-                for (std::uint32_t k = firstPair_[i]; k < endPair_[i]; ++k) consider(pairPartner_[k], batchResult_.toi(k));
+    // Every impact gives its sweeper one more impact, and a sweeper with kMaxImpacts has no more: this ends.
+    for (;;) {
+        std::size_t i = bodies.size();
+        for (const std::uint32_t k : sweepers_)
+            if (next_[k].t < kNever && (i == bodies.size() || next_[k].t < next_[i].t)) i = k;
+        if (i == bodies.size()) break;
+        const Impact impact = next_[i];
+        const std::size_t j = impact.partner;
+        answer(bodies, i, j, impact.t, dt, settings);
+        for (const std::uint32_t k : sweepers_) {
+            if (segments_[k].impacts >= kMaxImpacts) {
+                next_[k] = Impact{kNever, bodies.size()};
+            } else if (k == i || k == j || next_[k].partner == i || next_[k].partner == j) {
+                next_[k] = earliestImpact(bodies, k, impact.t, dt);
             } else {
-                const Aabb box = sweptAabb(body.shape, mine);
-                for (std::size_t j = 0; j < bodies.size(); ++j) {
-                    if (j == i || !bodies[j].alive) continue;
-                    if (!box.overlaps(motion_[j].swept)) continue;  // swept-volume pre-check: no costly test
-                    consider(j, body.detection == CollisionDetection::ContinuousExact
-                                    ? timeOfImpact(body.shape, mine, bodies[j].shape, theirs(j))
-                                    : sampledTimeOfImpact(body.shape, mine, bodies[j].shape, theirs(j),
-                                                          body.precision));
-                }
+                for (const std::size_t moved : {i, j})  // an earlier impact with a new segment?
+                    if (segments_[moved].changed && segments_[k].swept.overlaps(segments_[moved].swept))
+                        consider(bodies, k, moved, impact.t, test(bodies, k, moved, impact.t), dt, next_[k]);
             }
-            if (partner == bodies.size()) {  // free for the rest of the step
-                p += rest * dp;
-                angle += rest * da;
-                break;
-            }
-            // Move to the impact and answer it with an impulse.
-            hitSomething = true;
-            ++impacts;
-            ++impacts_;
-            const Transform here = mine.at(first);
-            angle = mine.angleAt(first);
-            p = here.p;
-            t += first * rest;
-            BodyData& other = bodies[partner];
-            const Motion& o = motion_[partner];
-            const Transform there{o.p + t * o.dp, Rotation::fromAngle(o.angle + t * o.da)};
-            // The impulse's lever arms need the poses at the impact time; the bodies' own poses are put back
-            // after it (the integrator still moves them from the start of the step).
-            const Transform bodyStart = body.xf, otherStart = other.xf;
-            body.xf = here;
-            other.xf = there;
-            // Sampled hits overlap: contactAt then takes the narrow phase's normal and point.
-            Vec2 n, c;
-            if (contactAt(body.shape, here, other.shape, there, n, c)) applyImpulse(body, other, n, c, settings);
-            body.xf = bodyStart;
-            other.xf = otherStart;
-            dp = dt * body.v;
-            da = dt * body.w;
-            if (impacts == kMaxImpacts || t >= 1.0) break;  // stay at the last impact for the rest of the step
         }
-        if (hitSomething) placements_.push_back({static_cast<std::uint32_t>(i), p, angle});
     }
+    for (std::size_t k = 0; k < bodies.size(); ++k)
+        if (bodies[k].alive && segments_[k].changed)
+            placements_.push_back({static_cast<std::uint32_t>(k), segments_[k].positionAt(1.0), segments_[k].angleAt(1.0)});
 }
 
 void ContinuousStage::placeBodies(std::vector<BodyData>& bodies) {
+    placed_.assign(bodies.size(), 0);
     for (const Placement& pl : placements_) {
+        placed_[pl.body] = 1;
         BodyData& b = bodies[pl.body];
         b.xf.p = pl.p;
         b.angle = pl.angle;

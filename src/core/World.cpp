@@ -595,7 +595,9 @@ void World::integrateAndCorrect() {
         if (continuousCount_ > 0) continuous_->placeBodies(bodies_);  // hit bodies end where their impacts left them
         for (int i = 0; i < settings_.positionIterations; ++i) {
             if (jointCount_ > 0) correctJointPositions(bodies_, joints_);
-            if (!contacts_.empty()) solver_->correctPositions(bodies_, contacts_, settings_);
+            if (!contacts_.empty())
+                solver_->correctPositions(bodies_, contacts_, settings_,
+                                          continuousCount_ > 0 ? &continuous_->placed() : nullptr);
         }
     });
 }

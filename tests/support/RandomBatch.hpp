@@ -1,8 +1,9 @@
 #pragma once
 // Test inputs for continuous batches, shared by the core's and the CUDA layer's tests:
 //   randomPairs / randomBatch: fast small shapes fired across obstacles (ccd_bench uses them too).
-//   fillBulletBox: a closed box of thin walls with exact-continuous bullets fired across it at 150 to 600 m/s, so
-//     every step has impacts and, without continuous detection, the bullets would leave the box.
+//   fillBulletBox: a closed box of thin walls with exact-continuous bullets (small circles and thin spinning boxes)
+//     fired across it at 150 to 600 m/s, so every step has impacts and, without continuous detection, the bullets
+//     would leave the box.
 
 #include "physim/core/Collide.hpp"
 #include "physim/core/ContinuousBatch.hpp"
@@ -129,7 +130,7 @@ inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned see
     std::vector<BodyId> ids;
     for (int i = 0; i < bullets; ++i) {
         BodyDef d;
-        d.shape = makeCircle(0.01 + 0.01 * u(rng));
+        d.shape = i % 2 ? Geometry(makeCircle(0.01 + 0.01 * u(rng))) : Geometry(makeBox(0.015, 0.005));
         d.position = {(2.0 * u(rng) - 1.0) * (half - 0.2), (2.0 * u(rng) - 1.0) * (half - 0.2)};
         const double heading = 2.0 * M_PI * u(rng), speed = 150.0 + 450.0 * u(rng);
         d.velocity = speed * Vec2(std::cos(heading), std::sin(heading));
