@@ -14,4 +14,9 @@ for preset in "${presets[@]}"; do
   cmake --preset "$preset" >/dev/null
   cmake --build --preset "$preset" -j "$(physim_jobs)"
   ctest --preset "$preset" -j "$(physim_jobs)"
+  # ctest shows a skipped test's name only; say why (each skip message starts "needs ...").
+  log="build/$preset/Testing/Temporary/LastTest.log"
+  if [ -f "$log" ] && grep -q "^needs " "$log"; then
+    physim_log "preset '$preset': skipped tests, and why: $(grep "^needs " "$log" | sort -u | tr '\n' ' ')"
+  fi
 done

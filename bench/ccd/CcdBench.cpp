@@ -12,6 +12,7 @@
 #include "physim/core/Collide.hpp"
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/TimeOfImpact.hpp"
+#include "physim/core/World.hpp"
 #ifdef PHYSIM_WITH_CUDA
 #include "physim/cuda/ContinuousSolver.hpp"
 #include "physim/cuda/Device.hpp"
@@ -76,6 +77,61 @@ ContinuousBatch batchOf(int n, unsigned seed) {
     return batch;
 }
 
+// Times a solver and counts what it is given (the World's continuous stage hands it each substep's batch).
+class TimedSolver final : public ContinuousSolver {
+public:
+    explicit TimedSolver(std::shared_ptr<ContinuousSolver> inner) : inner_(std::move(inner)) {}
+    void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override {
+        const auto start = std::chrono::steady_clock::now();
+        inner_->solve(batch, result);
+        seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        pairs += batch.pairCount();
+    }
+    std::string name() const override { return inner_->name(); }
+    double seconds = 0.0;
+    std::size_t pairs = 0;
+
+private:
+    std::shared_ptr<ContinuousSolver> inner_;
+};
+
+// Bullets in a box (the tests' scene) stepped with each solver: what the batch is worth inside a World, where the
+// first sweeps are batched and the impacts that follow are answered one by one on the CPU.
+void worldTable(const std::string& noGpu) {
+    std::printf("\nWorld: exact-continuous bullets in a closed 4 m box (tests/support/RandomBatch.hpp), 30 steps at "
+                "60 Hz, 4 substeps\n\n| bullets | solver | ms per step | continuous stage ms per step | in the "
+                "batch solver ms per step | batch pairs per substep |\n| ---: | --- | ---: | ---: | ---: | ---: |\n");
+    std::vector<std::shared_ptr<ContinuousSolver>> solvers{std::make_shared<CpuContinuousSolver>(1)};
+#ifdef PHYSIM_WITH_CUDA
+    if (noGpu.empty()) {
+        cuda::GpuSolverOptions options;
+        options.minPairs = 0;
+        solvers.push_back(std::make_shared<cuda::GpuContinuousSolver>(options));
+    }
+#endif
+    for (const int bullets : {50, 200}) {
+        for (const auto& inner : solvers) {
+            WorldSettings settings;
+            settings.gravity = Vec2::Zero();
+            World world(settings);
+            testing::fillBulletBox(world, bullets, 7);
+            auto timed = std::make_shared<TimedSolver>(inner);
+            world.setContinuousSolver(timed);
+            const int steps = 30;
+            double stage = 0.0;
+            const auto start = std::chrono::steady_clock::now();
+            for (int i = 0; i < steps; ++i) {
+                world.step(1.0 / 60.0);
+                stage += world.profile().secondsOf(Stage::Continuous);
+            }
+            const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            std::printf("| %d | %s | %.2f | %.2f | %.3f | %.0f |\n", bullets, inner->name().c_str(), 1e3 * total / steps,
+                        1e3 * stage / steps, 1e3 * timed->seconds / steps,
+                        static_cast<double>(timed->pairs) / (steps * settings.substeps));
+        }
+    }
+}
+
 int batchTable(int largest, unsigned seed) {
     const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
     CpuContinuousSolver single(1), all(cores);
@@ -133,6 +189,7 @@ int batchTable(int largest, unsigned seed) {
         if (crossoverAll < 0 && tGpu < tAll) crossoverAll = n;
 #endif
     }
+    worldTable(noGpu);
     if (!noGpu.empty()) {
         std::printf("\nGPU rows missing: %s.\n", noGpu.c_str());
         return 0;

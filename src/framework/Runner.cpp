@@ -1,6 +1,9 @@
 #include "physim/framework/Runner.hpp"
 
 #include "physim/framework/Summary.hpp"
+#ifdef PHYSIM_WITH_CUDA
+#include "physim/cuda/ContinuousSolver.hpp"
+#endif
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/Font.hpp>
@@ -22,6 +25,10 @@ namespace physim {
 Runner::Runner(SimulationFactory factory, RunOptions options)
     : factory_(std::move(factory)), options_(std::move(options)), accumulator_(1.0 / 40.0, options_.maxStepsPerFrame) {
     if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
+#ifdef PHYSIM_WITH_CUDA
+    // Built with the CUDA layer: large continuous batches go to the GPU, or a line says why they stay on the CPU.
+    continuousSolver_ = cuda::makeContinuousSolver(std::clog);
+#endif
 }
 
 Runner::~Runner() = default;
@@ -36,6 +43,7 @@ void Runner::restart() {
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
     Simulation& sim = *simulation_;
+    if (continuousSolver_) sim.world().setContinuousSolver(continuousSolver_);
     sim.graphsManager.setLive(!options_.headless);
     if (options_.hz) sim.setPhysicsRate(*options_.hz);
     sim.onCreate();

@@ -3,7 +3,7 @@
 // Runs everywhere: bad input named without faulting the device, small batches kept on the CPU, the choice of solver
 // with its log line, and the fallback after a CUDA error (no device at all, or a launch CUDA refuses).
 // Needs a GPU (skipped, saying so, without one): the GPU's answers against the CPU's over 20 000 random pairs, and a
-// World whose continuous stage runs on the GPU against one on the CPU.
+// World whose continuous stage runs on the GPU keeping a crowd of bullets in their box.
 //
 // Agreement: with --fmad=false the two differ only where the device's cos/sin round differently from glibc's
 // (a few units in the last place). Conservative advancement stops at the first pose with a gap under the tolerance,
@@ -18,6 +18,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <sstream>
@@ -162,29 +163,40 @@ TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnRandomPairs) {
     EXPECT_GE(solver.lastTimings().totalMs, solver.lastTimings().kernelMs);
 }
 
-TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuMatchesAWorldOnTheCpu) {
+// A World whose continuous batches all run on the GPU keeps the CPU World's guarantees in the tests' hardest scene
+// (ContinuousCrowd.BulletsNeverLeaveTheBox): no bullet leaves the box, kinetic energy never runs away. The two
+// Worlds are not compared pose by pose: the crowd is chaotic, so the last-bit differences of cos and sin on the
+// device (4% of pairs, within the tolerance) grow into different trajectories within a few steps.
+TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
     PHYSIM_NEEDS_GPU();
     WorldSettings s;
     s.gravity = Vec2::Zero();
-    World onCpu(s), onGpu(s);
-    const auto a = testing::fillBulletBox(onCpu, 60, 5);
-    const auto b = testing::fillBulletBox(onGpu, 60, 5);
+    World world(s);
+    const auto bullets = testing::fillBulletBox(world, 60, 5);
     GpuSolverOptions options;
     options.minPairs = 0;  // every batch on the GPU, however small
     auto gpu = std::make_shared<GpuContinuousSolver>(options);
-    onGpu.setContinuousSolver(gpu);
-    double worst = 0.0;
-    for (int step = 0; step < 30; ++step) {
-        onCpu.step(1.0 / 60.0);
-        onGpu.step(1.0 / 60.0);
+    world.setContinuousSolver(gpu);
+    auto energy = [&] {
+        double e = 0.0;
+        for (const BodyId b : bullets)
+            e += 0.5 * world.mass(b) * world.velocity(b).squaredNorm() +
+                 0.5 * world.inertia(b) * world.angularVelocity(b) * world.angularVelocity(b);
+        return e;
+    };
+    const double start = energy();
+    double highest = start;
+    int onGpu = 0;
+    for (int step = 0; step < 60; ++step) {
+        world.step(1.0 / 60.0);
         ASSERT_TRUE(gpu->gpuEnabled()) << gpu->error();
-        for (std::size_t i = 0; i < a.size(); ++i)
-            worst = std::max(worst, (onCpu.position(a[i]) - onGpu.position(b[i])).norm());
+        onGpu += gpu->lastRanOnGpu();
+        for (const BodyId b : bullets)
+            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 2.0) << "a bullet left the box in step " << step;
+        highest = std::max(highest, energy());
     }
-    std::cout << "largest position difference over 30 steps: " << worst << " m\n";
-    // Each impact can land up to the tolerance apart (see the file comment); 30 steps of bullets at up to 600 m/s
-    // meet walls and each other a few times each, so allow 10 tolerances.
-    EXPECT_LE(worst, 10 * kToiTolerance);
+    EXPECT_EQ(onGpu, 60) << "every step's last batch ran on the GPU";
+    EXPECT_LE(highest, 1.01 * start);  // the CPU test's bound, same reason
 }
 
 }  // namespace

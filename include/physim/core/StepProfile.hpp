@@ -30,6 +30,7 @@ struct StepProfile {
     std::size_t manifolds = 0;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
+    double secondsOf(Stage s) const { return seconds[static_cast<std::size_t>(s)]; }
     bool didRun(Stage s) const { return ran[static_cast<std::size_t>(s)]; }
     double total() const;
 };

@@ -54,6 +54,7 @@ private:
     SimulationFactory factory_;
     RunOptions options_;
     std::unique_ptr<Simulation> simulation_;
+    std::shared_ptr<ContinuousSolver> continuousSolver_;  // the CUDA layer's, in a `cuda` build; else null (CPU)
     FixedStepAccumulator accumulator_;
     bool quit_ = false;
     std::unique_ptr<sf::Font> overlayFont_;  // null when no font file is found: no overlay then
