@@ -97,7 +97,7 @@ private:
 
 // Bullets in a box (the tests' scene) stepped with each solver: what the batch is worth inside a World, where the
 // first sweeps are batched and the impacts that follow are answered one by one on the CPU.
-void worldTable(const std::string& noGpu) {
+void worldTable([[maybe_unused]] const std::string& noGpu) {
     std::printf("\nWorld: exact-continuous bullets in a closed 4 m box (tests/support/RandomBatch.hpp), 30 steps at "
                 "60 Hz, 4 substeps\n\n| bullets | solver | ms per step | continuous stage ms per step | in the "
                 "batch solver ms per step | batch pairs per substep |\n| ---: | --- | ---: | ---: | ---: | ---: |\n");

@@ -99,9 +99,9 @@ void ContinuousStage::consider(const std::vector<BodyData>& bodies, std::size_t 
         // contact within that hair's gap): then it is an impact now.
         const Sweep mine = sweepFrom(k, t), theirs = sweepFrom(other, t);
         const Transform here = mine.at(0.0), there = theirs.at(0.0);
-        Vec2 n, c;
-        if (contactAt(bodies[k].shape, here, bodies[other].shape, there, n, c) &&
-            closingSpeed(bodies[k], bodies[other], n, c, here, there) * rest * dt > kToiTolerance) {
+        Vec2 n = Vec2::Zero(), c = Vec2::Zero();
+        const bool contact = contactAt(bodies[k].shape, here, bodies[other].shape, there, n, c);
+        if (contact && closingSpeed(bodies[k], bodies[other], n, c, here, there) * rest * dt > kToiTolerance) {
             best = {t, other};
             return;
         }
@@ -118,7 +118,9 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
     // make them overlap, so only the approach along n and the turning (a point at R from its origin moves R per
     // radian) can, and no overlap grows faster than `reach` over the sweep. Sampling at half the slop's spacing
     // in that measure cannot step over an overlap deeper than the slop.
-    const double approach = ((sa.p1 - sa.p0) - (sb.p1 - sb.p0)).dot(n);
+    // n zero (no contact normal was found): any approach counts.
+    const Vec2 motion = (sa.p1 - sa.p0) - (sb.p1 - sb.p0);
+    const double approach = n.isZero() ? motion.norm() : motion.dot(n);
     const double reach = std::max(0.0, approach) + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
                          std::abs(sb.a1 - sb.a0) * boundingRadius(b);
     if (!(reach > slop)) return 1.0;  // cannot overlap by more than the slop: the discrete contacts' business

@@ -83,9 +83,9 @@ private:
     // Folds the result of body k's test against `other` from time t (r: over the rest of the substep) into best.
     void consider(const std::vector<BodyData>& bodies, std::size_t k, std::size_t other, double t, const ToiResult& r,
                   double dt, Impact& best) const;
-    // First sample time (fraction of the sweeps) before the shapes, touching at the start with normal n (a to b),
-    // overlap by more than `slop` (m); 1 when they never do. Samples so dense that no overlap grows by more than
-    // slop / 2 between them.
+    // First sample time (fraction of the sweeps) before the shapes, touching at the start with normal n (a to b;
+    // zero if none was found), overlap by more than `slop` (m); 1 when they never do. Samples so dense that no
+    // overlap grows by more than slop / 2 between them (at most 4096: past that, a little more).
     static double deepening(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb, const Vec2& n,
                             double slop);
     ToiResult test(const std::vector<BodyData>& bodies, std::size_t k, std::size_t other, double t) const;

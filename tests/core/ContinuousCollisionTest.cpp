@@ -329,13 +329,7 @@ TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
 TEST(ContinuousCrowd, BulletsNeverLeaveTheBox) {
     World world(noGravity());
     const std::vector<BodyId> bullets = testing::fillBulletBox(world, 40, 3);
-    auto energy = [&] {
-        double e = 0.0;
-        for (const BodyId b : bullets)
-            e += 0.5 * world.mass(b) * world.velocity(b).squaredNorm() +
-                 0.5 * world.inertia(b) * world.angularVelocity(b) * world.angularVelocity(b);
-        return e;
-    };
+    auto energy = [&] { return testing::kineticEnergy(world, bullets); };
     const double start = energy();
     double highest = start;
     for (int step = 0; step < 60; ++step) {

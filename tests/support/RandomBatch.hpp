@@ -143,4 +143,13 @@ inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned see
     return ids;
 }
 
+/// Kinetic energy of the bodies, translational and rotational (J).
+inline double kineticEnergy(const World& world, const std::vector<BodyId>& bodies) {
+    double e = 0.0;
+    for (const BodyId b : bodies)
+        e += 0.5 * world.mass(b) * world.velocity(b).squaredNorm() +
+             0.5 * world.inertia(b) * world.angularVelocity(b) * world.angularVelocity(b);
+    return e;
+}
+
 }  // namespace physim::testing

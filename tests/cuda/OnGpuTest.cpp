@@ -1,0 +1,84 @@
+// Tests that need a GPU: the GPU's answers against the CPU's, and a World whose continuous batches run on the
+// GPU. GpuTestMain.cpp skips the whole program, saying why, on a machine without one.
+//
+// Agreement: with --fmad=false the two differ only where the device's cos/sin round differently from glibc's
+// (a unit in the last place). Conservative advancement stops at the first pose with a gap under the tolerance,
+// so such a difference can at most move the stop by one advancement step, which changes the reported contact
+// position by less than the tolerance (1e-4 m): testing::compareResults's bound, per pair.
+
+#include <physim/cuda/ContinuousSolver.hpp>
+
+#include "support/RandomBatch.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <memory>
+
+namespace physim::cuda {
+namespace {
+
+TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnRandomPairs) {
+    GpuSolverOptions options;
+    options.minPairs = 0;
+    GpuContinuousSolver solver(options);
+    const ContinuousBatch batch = testing::randomBatch(20000, 21);
+    ContinuousBatchResult gpu, cpu;
+    solver.solve(batch, gpu);
+    ASSERT_TRUE(solver.lastRanOnGpu()) << solver.error();
+    CpuContinuousSolver(0).solve(batch, cpu);
+    const testing::Agreement a = testing::compareResults(batch, gpu, cpu);
+    std::cout << "identical " << a.identical << ", within tolerance " << a.within << ", disagreeing " << a.disagree
+              << " of " << batch.pairCount() << "; kernel " << solver.lastTimings().kernelMs << " ms, total "
+              << solver.lastTimings().totalMs << " ms\n";
+    EXPECT_EQ(a.disagree, 0);
+    for (std::size_t i = 0, shown = 0; i < batch.pairCount() && shown < 8 && a.disagree > 0; ++i) {
+        if (gpu.state[i] == cpu.state[i] && gpu.t[i] == cpu.t[i]) continue;
+        ++shown;
+        const std::int32_t sa = batch.bodies.shape[batch.pairs.a[i]], sb = batch.bodies.shape[batch.pairs.b[i]];
+        std::cout << "pair " << i << " kinds " << batch.shapes.kind[sa] << "/" << batch.shapes.kind[sb] << " gpu "
+                  << gpu.state[i] << " t " << gpu.t[i] << " it " << gpu.iterations[i] << " gap " << gpu.gap[i]
+                  << " | cpu " << cpu.state[i] << " t " << cpu.t[i] << " it " << cpu.iterations[i] << " gap "
+                  << cpu.gap[i] << "\n";
+    }
+    // Hits report a gap under the tolerance on the GPU too.
+    for (std::size_t i = 0; i < batch.pairCount(); ++i)
+        if (gpu.state[i] == kernel::kHit) {
+            ASSERT_LT(gpu.gap[i], batch.tolerance) << "pair " << i;
+        }
+    EXPECT_GT(solver.lastTimings().kernelMs, 0.0);
+    EXPECT_GE(solver.lastTimings().totalMs, solver.lastTimings().kernelMs);
+}
+
+// A World whose continuous batches all run on the GPU keeps the CPU World's guarantees in the tests' hardest scene
+// (ContinuousCrowd.BulletsNeverLeaveTheBox): no bullet leaves the box, kinetic energy never runs away. The two
+// Worlds are not compared pose by pose: the crowd is chaotic, so the last-bit differences of cos and sin on the
+// device (4% of pairs, within the tolerance) grow into different trajectories within a few steps.
+TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
+    WorldSettings s;
+    s.gravity = Vec2::Zero();
+    World world(s);
+    const auto bullets = testing::fillBulletBox(world, 60, 5);
+    GpuSolverOptions options;
+    options.minPairs = 0;  // every batch on the GPU, however small
+    auto gpu = std::make_shared<GpuContinuousSolver>(options);
+    world.setContinuousSolver(gpu);
+    auto energy = [&] { return testing::kineticEnergy(world, bullets); };
+    const double start = energy();
+    double highest = start;
+    int onGpu = 0;
+    for (int step = 0; step < 60; ++step) {
+        world.step(1.0 / 60.0);
+        ASSERT_TRUE(gpu->gpuEnabled()) << gpu->error();
+        onGpu += gpu->lastRanOnGpu();
+        for (const BodyId b : bullets)
+            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 2.0) << "a bullet left the box in step " << step;
+        highest = std::max(highest, energy());
+    }
+    EXPECT_EQ(onGpu, 60) << "every step's last batch ran on the GPU";
+    EXPECT_LE(highest, 1.01 * start);  // the CPU test's bound, same reason
+}
+
+}  // namespace
+}  // namespace physim::cuda
