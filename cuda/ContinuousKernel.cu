@@ -49,6 +49,7 @@ public:
         if (count > 0) check(cudaMemcpy(device, host, count * sizeof(T), cudaMemcpyHostToDevice), "upload");
         return device;
     }
+    const T* data() const { return ptr_; }
     void download(T* host, std::size_t count) const {
         if (count > 0) check(cudaMemcpy(host, ptr_, count * sizeof(T), cudaMemcpyDeviceToHost), "download");
     }
@@ -99,19 +100,31 @@ std::string DeviceBatch::deviceName() {
 }
 
 GpuTimings DeviceBatch::run(const kernel::BatchView& in, const BatchSizes& n, const kernel::ResultView& out,
-                            int blockSize) {
+                            int blockSize, bool shapesOnDevice) {
     Impl& d = *impl_;
     d.start.record();
     kernel::BatchView dev = in;  // same counts and settings, device pointers
-    dev.kind = d.kind.upload(in.kind, n.shapes);
-    dev.firstVertex = d.firstVertex.upload(in.firstVertex, n.shapes);
-    dev.vertexCount = d.vertexCount.upload(in.vertexCount, n.shapes);
-    dev.radius = d.radius.upload(in.radius, n.shapes);
-    dev.boundingRadius = d.boundingRadius.upload(in.boundingRadius, n.shapes);
-    dev.vertexX = d.vertexX.upload(in.vertexX, n.vertices);
-    dev.vertexY = d.vertexY.upload(in.vertexY, n.vertices);
-    dev.normalX = d.normalX.upload(in.normalX, n.vertices);
-    dev.normalY = d.normalY.upload(in.normalY, n.vertices);
+    if (shapesOnDevice) {
+        dev.kind = d.kind.data();
+        dev.firstVertex = d.firstVertex.data();
+        dev.vertexCount = d.vertexCount.data();
+        dev.radius = d.radius.data();
+        dev.boundingRadius = d.boundingRadius.data();
+        dev.vertexX = d.vertexX.data();
+        dev.vertexY = d.vertexY.data();
+        dev.normalX = d.normalX.data();
+        dev.normalY = d.normalY.data();
+    } else {
+        dev.kind = d.kind.upload(in.kind, n.shapes);
+        dev.firstVertex = d.firstVertex.upload(in.firstVertex, n.shapes);
+        dev.vertexCount = d.vertexCount.upload(in.vertexCount, n.shapes);
+        dev.radius = d.radius.upload(in.radius, n.shapes);
+        dev.boundingRadius = d.boundingRadius.upload(in.boundingRadius, n.shapes);
+        dev.vertexX = d.vertexX.upload(in.vertexX, n.vertices);
+        dev.vertexY = d.vertexY.upload(in.vertexY, n.vertices);
+        dev.normalX = d.normalX.upload(in.normalX, n.vertices);
+        dev.normalY = d.normalY.upload(in.normalY, n.vertices);
+    }
     dev.shape = d.shape.upload(in.shape, n.bodies);
     dev.x0 = d.x0.upload(in.x0, n.bodies);
     dev.y0 = d.y0.upload(in.y0, n.bodies);

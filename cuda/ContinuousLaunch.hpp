@@ -31,8 +31,9 @@ public:
     /// Copies the batch (host arrays) to the device, runs one thread per pair (blockSize threads a block) and
     /// copies the results into `out` (host arrays). Throws std::runtime_error with CUDA's message on any CUDA
     /// error; `out` is then incomplete.
+    /// shapesOnDevice: the device already holds these shape arrays (the last run's), so they are not copied.
     GpuTimings run(const kernel::BatchView& in, const BatchSizes& sizes, const kernel::ResultView& out,
-                   int blockSize);
+                   int blockSize, bool shapesOnDevice);
 
     /// Name of the current device ("NVIDIA H100 80GB HBM3"); throws std::runtime_error with CUDA's message.
     static std::string deviceName();

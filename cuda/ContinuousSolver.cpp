@@ -35,11 +35,19 @@ void GpuContinuousSolver::solve(const ContinuousBatch& batch, ContinuousBatchRes
             }
             const detail::BatchSizes sizes{batch.shapes.kind.size(), batch.shapes.vertexX.size(),
                                            batch.bodies.shape.size(), batch.pairCount()};
-            timings_ = device_->run(viewOf(batch), sizes, viewOf(result), options_.blockSize);
+            // Shapes stay on the device while the owner keeps their revision (and, as a guard, their sizes).
+            const bool shapesOnDevice = batch.shapesRevision != 0 && batch.shapesRevision == shapesRevision_ &&
+                                        sizes.shapes == shapeCount_ && sizes.vertices == vertexCount_;
+            shapesRevision_ = 0;  // unknown until this run has copied them
+            timings_ = device_->run(viewOf(batch), sizes, viewOf(result), options_.blockSize, shapesOnDevice);
+            shapesRevision_ = batch.shapesRevision;
+            shapeCount_ = sizes.shapes;
+            vertexCount_ = sizes.vertices;
             lastRanOnGpu_ = true;
         } catch (const std::runtime_error& e) {
             error_ = e.what();
             device_.reset();
+            shapesRevision_ = 0;
             timings_ = {};
             std::ostream& log = options_.log ? *options_.log : std::clog;
             log << "physim: the GPU continuous solver stopped: " << error_

@@ -80,5 +80,39 @@ TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
     EXPECT_LE(highest, 1.01 * start);  // the CPU test's bound, same reason
 }
 
+// A batch whose owner keeps shapesRevision: the second solve keeps the shapes on the device (its copy in is
+// smaller) and answers the same bits; new motions with the same shapes are answered as the CPU answers them; a new
+// revision copies changed shapes.
+TEST(GpuContinuousSolverOnGpu, ShapesKeptOnTheDeviceGiveTheSameAnswers) {
+    GpuSolverOptions options;
+    options.minPairs = 0;
+    GpuContinuousSolver gpu(options);
+    ContinuousBatch batch = testing::randomBatch(20000, 33);
+    batch.shapesRevision = 7;
+    ContinuousBatchResult first, second, cpu;
+    gpu.solve(batch, first);
+    const double copiedIn = gpu.lastTimings().uploadMs;
+    gpu.solve(batch, second);
+    ASSERT_TRUE(gpu.lastRanOnGpu()) << gpu.error();
+    EXPECT_EQ(second.t, first.t);
+    EXPECT_EQ(second.state, first.state);
+    EXPECT_LT(gpu.lastTimings().uploadMs, copiedIn);
+    std::cout << "copy in: " << copiedIn << " ms with shapes, " << gpu.lastTimings().uploadMs << " ms without\n";
+
+    for (double& x : batch.bodies.x1) x += 0.5;  // new motions, same shapes
+    gpu.solve(batch, second);
+    CpuContinuousSolver().solve(batch, cpu);
+    EXPECT_EQ(testing::compareResults(batch, second, cpu).disagree, 0);
+
+    for (double& r : batch.shapes.radius)
+        if (r > 0.0) r *= 2.0;  // circles twice as big, and the boundingRadius to match
+    for (std::size_t i = 0; i < batch.shapes.radius.size(); ++i)
+        batch.shapes.boundingRadius[i] += batch.shapes.radius[i] / 2.0;
+    batch.shapesRevision = 8;
+    gpu.solve(batch, second);
+    CpuContinuousSolver().solve(batch, cpu);
+    EXPECT_EQ(testing::compareResults(batch, second, cpu).disagree, 0);
+}
+
 }  // namespace
 }  // namespace physim::cuda

@@ -40,6 +40,11 @@ struct ContinuousBatch {
     } pairs;
     double tolerance = kToiTolerance;  ///< m, > 0: the gap at which a hit is reported
     std::int32_t maxIterations = 100;  ///< >= 1, conservative-advancement steps per pair
+    /// 0 (the default): the shape arrays may differ from the last batch's, and a GPU solver copies them. Any other
+    /// value is the owner's promise that the shape arrays are exactly those of the last batch it solved with this
+    /// value, so a GPU solver may keep them on the device (shapes rarely change between steps; they are most of
+    /// the bytes). Bodies and pairs are always copied.
+    std::uint64_t shapesRevision = 0;
 
     /// Appends a shape (already valid: built by makeCircle, makeBox, makePolygon) and returns its index.
     std::int32_t addShape(const Geometry& g);

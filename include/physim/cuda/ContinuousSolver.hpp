@@ -11,6 +11,7 @@
 #include "physim/cuda/GpuTimings.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <iosfwd>
 #include <memory>
 #include <string>
@@ -21,8 +22,8 @@ namespace detail {
 class DeviceBatch;
 }
 
-/// Batches of fewer pairs run on the CPU. Measured on an H100 (docs/cuda.md), copies included: at 100 pairs the
-/// CPU is 3.5x faster, at 1000 the GPU is 3.5x faster than one CPU thread and than 16.
+/// Batches of fewer pairs run on the CPU. Measured on an H100 (docs/cuda.md), copies included: at 100 pairs one
+/// CPU thread is 3.5x faster, at 1000 the GPU is 2.9x faster than one CPU thread and than 16.
 constexpr std::size_t kDefaultGpuMinPairs = 1000;
 
 struct GpuSolverOptions {
@@ -58,6 +59,8 @@ public:
 private:
     GpuSolverOptions options_;
     std::unique_ptr<detail::DeviceBatch> device_;
+    std::uint64_t shapesRevision_ = 0;  // of the shapes on the device; 0: none known
+    std::size_t shapeCount_ = 0, vertexCount_ = 0;  // of the shapes on the device
     std::string deviceName_;
     std::string error_;
     bool lastRanOnGpu_ = false;
