@@ -158,8 +158,8 @@ void ContinuousBatchResult::resize(std::size_t pairs) {
 void checkLayout(const ContinuousBatch& batch) {
     if (!(std::isfinite(batch.tolerance) && batch.tolerance > 0.0))
         requirePositive("continuous batch tolerance (m)", batch.tolerance);
-    if (batch.maxIterations < 1)
-        reject("maxIterations must be >= 1, got " + std::to_string(batch.maxIterations));
+    if (batch.maxIterations < 1 || batch.maxIterations > 1000000)
+        reject("maxIterations must be in [1, 1000000], got " + std::to_string(batch.maxIterations));
     const auto& s = batch.shapes;
     sameSizes("shapes", "kind", s.kind, named("firstVertex", s.firstVertex), named("vertexCount", s.vertexCount),
               named("radius", s.radius), named("boundingRadius", s.boundingRadius));
@@ -265,8 +265,13 @@ void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, uns
     std::vector<std::thread> pool;
     pool.reserve(static_cast<std::size_t>(workers - 1));
     const std::int64_t chunk = (n + workers - 1) / workers;
-    for (std::int64_t w = 1; w < workers; ++w)
-        pool.emplace_back(solveRange, std::min(n, w * chunk), std::min(n, (w + 1) * chunk));
+    try {
+        for (std::int64_t w = 1; w < workers; ++w)
+            pool.emplace_back(solveRange, std::min(n, w * chunk), std::min(n, (w + 1) * chunk));
+    } catch (...) {  // a thread that could not start: join those that did, then report it
+        for (std::thread& t : pool) t.join();
+        throw;
+    }
     solveRange(0, std::min(n, chunk));
     for (std::thread& t : pool) t.join();
 }

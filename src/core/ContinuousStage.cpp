@@ -124,13 +124,19 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
     const double reach = std::max(0.0, approach) + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
                          std::abs(sb.a1 - sb.a0) * boundingRadius(b);
     if (!(reach > slop)) return 1.0;  // cannot overlap by more than the slop: the discrete contacts' business
-    const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
-    for (int s = 1; s <= samples; ++s) {
-        const double u = static_cast<double>(s) / samples;
+    // Deeper than the slop; or, for a pair that already starts deeper (spawned so, or pressed in: the position
+    // correction's business), half a slop deeper than it starts, so its own overlap never counts as an impact.
+    auto deepest = [&](double u) {
         const Manifold m = collide(a, sa.at(u), b, sb.at(u));
-        for (int p = 0; p < m.pointCount; ++p)
-            if (m.points[p].separation < -slop) return static_cast<double>(s - 1) / samples;
-    }
+        double separation = 0.0;
+        for (int p = 0; p < m.pointCount; ++p) separation = std::min(separation, m.points[p].separation);
+        return separation;
+    };
+    const double start = deepest(0.0);
+    const double limit = start > -slop ? -slop : start - 0.5 * slop;
+    const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
+    for (int s = 1; s <= samples; ++s)
+        if (deepest(static_cast<double>(s) / samples) < limit) return static_cast<double>(s - 1) / samples;
     return 1.0;
 }
 
@@ -169,8 +175,13 @@ void ContinuousStage::batchFirstImpacts(const std::vector<BodyData>& bodies, dou
         solver_->solve(batch_, batchResult_);
     else
         solveOnCpu(batch_, batchResult_, 1);
-    for (std::size_t k = 0; k < pairOwner_.size(); ++k)
-        consider(bodies, pairOwner_[k], pairPartner_[k], 0.0, batchResult_.toi(k), dt, next_[pairOwner_[k]]);
+    for (std::size_t k = 0; k < pairOwner_.size(); ++k) {
+        // kInvalid cannot come from shapes validate(Geometry) accepted; if it ever does, the one-pair test answers.
+        const ToiResult r = batchResult_.state[k] == kernel::kInvalid
+                                ? test(bodies, pairOwner_[k], pairPartner_[k], 0.0)
+                                : batchResult_.toi(k);
+        consider(bodies, pairOwner_[k], pairPartner_[k], 0.0, r, dt, next_[pairOwner_[k]]);
+    }
 }
 
 void ContinuousStage::answer(std::vector<BodyData>& bodies, std::size_t i, std::size_t j, double t, double dt,
@@ -193,6 +204,8 @@ void ContinuousStage::answer(std::vector<BodyData>& bodies, std::size_t i, std::
     ++segments_[i].impacts;
     restartSegment(i, a, t, dt);
     if (b.type == BodyType::Dynamic) {  // its velocity changed: it goes on from here, swept like the rest
+        b.awake = true;                  // a sleeper that is hit moves, so it must be integrated and swept
+        b.sleepTime = 0.0;
         ++segments_[j].impacts;
         restartSegment(j, b, t, dt);
     }

@@ -95,6 +95,8 @@ TEST(ContinuousBatch, ThreadsChangeNothing) {
     EXPECT_EQ(one.state, four.state);
     EXPECT_EQ(one.t, four.t);
     EXPECT_EQ(one.normalX, four.normalX);
+    EXPECT_EQ(one.gap, four.gap);
+    EXPECT_EQ(one.pointY, four.pointY);
     EXPECT_EQ(CpuContinuousSolver(4).name(), "cpu, 4 threads");
 }
 
@@ -156,7 +158,7 @@ TEST(ContinuousBatch, BadInputIsNamed) {
     expectRejected(b, "tolerance");
     b = good;
     b.maxIterations = 0;
-    expectRejected(b, "maxIterations must be >= 1, got 0");
+    expectRejected(b, "maxIterations must be in [1, 1000000], got 0");
 }
 
 // A solver that counts what the World hands it and solves on the CPU.

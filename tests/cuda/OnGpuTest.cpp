@@ -73,10 +73,10 @@ TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
         ASSERT_TRUE(gpu->gpuEnabled()) << gpu->error();
         onGpu += gpu->lastRanOnGpu();
         for (const BodyId b : bullets)
-            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 2.0) << "a bullet left the box in step " << step;
+            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 1.995) << "a bullet's centre passed a wall's inner face in step " << step;
         highest = std::max(highest, energy());
     }
-    EXPECT_EQ(onGpu, 60) << "every step's last batch ran on the GPU";
+    EXPECT_GT(onGpu, 0) << "the World's batches ran on the GPU";
     EXPECT_LE(highest, 1.01 * start);  // the CPU test's bound, same reason
 }
 

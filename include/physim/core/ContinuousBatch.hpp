@@ -39,7 +39,7 @@ struct ContinuousBatch {
         std::vector<std::int32_t> a, b;  ///< body indices; the normal in the result points from a to b
     } pairs;
     double tolerance = kToiTolerance;  ///< m, > 0: the gap at which a hit is reported
-    std::int32_t maxIterations = 100;  ///< >= 1, conservative-advancement steps per pair
+    std::int32_t maxIterations = 100;  ///< in [1, 1e6], conservative-advancement steps per pair
     /// 0 (the default): the shape arrays may differ from the last batch's, and a GPU solver copies them. Any other
     /// value is the owner's promise that the shape arrays are exactly those of the last batch it solved with this
     /// value, so a GPU solver may keep them on the device (shapes rarely change between steps; they are most of
@@ -76,7 +76,7 @@ struct ContinuousBatchResult {
 /// that does not fit, a polygon that is not strictly convex and counter-clockwise with its outward unit normals
 /// (validate(Geometry) names the problem), a bounding radius that does not bound its shape, a non-finite
 /// coordinate or pose, a body or pair index out of range, a pair of one body with itself, tolerance <= 0 or
-/// maxIterations < 1, or more entries than 32-bit indices hold.
+/// maxIterations outside [1, 1e6], or more entries than 32-bit indices hold.
 void validate(const ContinuousBatch& batch);
 
 /// The part of validate() that costs O(1) and makes the arrays safe to index: the groups' sizes, tolerance and

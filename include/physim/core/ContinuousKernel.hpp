@@ -218,7 +218,8 @@ struct Toi {
 /// Conservative advancement: at time t with gap d along the closest-point direction n, no point can close that
 /// gap faster than M = (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t (R: boundingRadius), so
 /// advancing by d / M never passes the contact. Stops when d < tolerance (m, > 0). After maxIterations without
-/// reaching it, returns a hit at the safe t reached (an early stop, never a miss).
+/// reaching it, returns a hit at the safe t reached (an early stop, never a miss); its gap, normal and point are
+/// then those of the last distance evaluation, one advancement before that t.
 PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb,
                                            double tolerance, int maxIterations) {
     const Vec relativeMotion = (ma.p1 - ma.p0) - (mb.p1 - mb.p0);  // m per unit t

@@ -33,6 +33,8 @@ struct GpuSolverOptions {
     std::ostream* log = nullptr;                 ///< where the fallback line goes; null: std::clog
 };
 
+/// One solver serves one caller at a time (it is not thread-safe), and it keeps the shapes of one batch owner: two
+/// owners sharing it must not use the same shapesRevision values.
 class GpuContinuousSolver final : public ContinuousSolver {
 public:
     /// Touches no device yet (the first large batch does). Throws std::invalid_argument for blockSize <= 0.
