@@ -297,15 +297,20 @@ TEST(ContinuousWall, FiredFromTouchingDistanceDoesNotTunnel) {
     }
 }
 
-// A continuous body resting on the ground (touching at the start of every step) is left to the discrete
-// contacts: it neither sinks nor is frozen, it slides off under a push.
-TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
-    World world;
+// Static ground 100 m wide whose top face is y = 0.
+void addGround(World& world) {
     BodyDef ground;
     ground.type = BodyType::Static;
     ground.shape = makeBox(50.0, 0.5);
     ground.position = {0.0, -0.5};
     world.createBody(ground);
+}
+
+// A continuous body resting on the ground (touching at the start of every step) is left to the discrete
+// contacts: it neither sinks nor is frozen, it slides off under a push.
+TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
+    World world;
+    addGround(world);
     BodyDef box;
     box.shape = makeBox(0.1, 0.1);
     box.position = {0.0, 0.1};
@@ -323,11 +328,7 @@ TEST(ContinuousRest, RestingContinuousBodyBehavesLikeADiscreteOne) {
 // start overlap counted as a turning impact every substep) and rises to within the slop of the surface.
 TEST(ContinuousRest, ASunkRollingBallRollsOutOfTheGround) {
     World world;
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(50.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    addGround(world);
     BodyDef ball;
     ball.shape = makeCircle(0.1);
     ball.position = {0.0, 0.09};
