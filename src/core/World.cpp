@@ -91,6 +91,9 @@ void validate(const WorldSettings& s) {
     requireNonNegative("sleepLinearTolerance", s.sleepLinearTolerance);
     requireNonNegative("sleepAngularTolerance", s.sleepAngularTolerance);
     requirePositive("timeToSleep", s.timeToSleep);
+    if (s.threads < 0 || s.threads > 256)
+        throw std::invalid_argument("physim: threads must be in [0, 256] (0 = all hardware threads), got " +
+                                    std::to_string(s.threads));
 }
 
 World::World(const WorldSettings& settings)

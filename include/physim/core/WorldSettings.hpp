@@ -17,6 +17,9 @@ struct WorldSettings {
     double sleepLinearTolerance = 0.01;   ///< m/s
     double sleepAngularTolerance = 0.035; ///< rad/s (2 degrees per second)
     double timeToSleep = 0.5;             ///< s
+    /// Worker threads for the step: 1 runs everything on the calling thread; 0 uses every hardware thread.
+    /// Results are bit-identical for any value (docs/architecture.md).
+    int threads = 1;
 };
 
 /// Throws std::invalid_argument naming the first bad field.
