@@ -1,5 +1,8 @@
 #pragma once
-// Per-body storage inside World, laid out for the step's loops. Internal: not installed.
+// Per-body record inside World, one slot per body id. Internal: not installed.
+//
+// The record holds the authoritative pose and velocity of every body. During a step the solver gathers the
+// awake bodies into contiguous SolverBody arrays (SolverData.hpp), works on those, and scatters the result back.
 
 #include "physim/core/Aabb.hpp"
 #include "physim/core/Body.hpp"
@@ -11,41 +14,64 @@
 
 namespace physim {
 
-struct BodyData {
-    // Hot: read and written by every stage.
-    Transform xf;                   // position of the centre of mass and rotation
-    double angle = 0.0;             // rad, unwrapped (xf.q caches its cosine and sine)
-    Vec2 v = Vec2::Zero();          // m/s
-    double w = 0.0;                 // rad/s
-    Vec2 v0 = Vec2::Zero();         // m/s and rad/s before this substep's forces: what restitution reverses
-    double w0 = 0.0;
-    double invMass = 0.0;           // 1/kg, 0 = immovable
-    double invInertia = 0.0;        // 1/(kg m^2), 0 = does not rotate
-    Vec2 force = Vec2::Zero();      // N, accumulated until the end of the step
-    double torque = 0.0;            // N m
-    Aabb aabb;                      // world bounds at the last broad phase
-    BodyType type = BodyType::Dynamic;
-    bool useGravity = true;
-    bool fixedRotation = false;
-    bool alive = false;
-    bool awake = true;              // asleep: skipped by integration, and its pairs by the narrow phase
-    bool allowSleep = true;
-    double sleepTime = 0.0;         // s spent below the sleep tolerances
+constexpr std::int32_t kNullIndex = -1;
 
-    // Cold: material and shape.
+struct BodyData {
+    // Motion. The body rotates about its centre of mass; xf places its origin (what position() reports and what
+    // the shape's local coordinates are relative to).
+    Transform xf;                   // origin pose
+    Vec2 center = Vec2::Zero();     // centre of mass, world, m (= xf.apply(localCenter))
+    double angle = 0.0;             // rad, unwrapped (xf.q caches its cosine and sine)
+    Vec2 v = Vec2::Zero();          // velocity of the centre of mass, m/s
+    double w = 0.0;                 // rad/s
+    Vec2 force = Vec2::Zero();      // N at the centre of mass, accumulated until the next step uses it
+    double torque = 0.0;            // N m
+
+    // Mass. Zero inverse mass or inertia means immovable (static, kinematic) or not rotating (fixedRotation).
+    Vec2 localCenter = Vec2::Zero();  // centre of mass in the body frame, m
     double mass = 0.0;              // kg, 0 when immovable
-    double density = 1.0;           // kg/m^2, for mass when the body becomes dynamic
+    double invMass = 0.0;           // 1/kg
     double inertia = 0.0;           // kg m^2 about the centre of mass
+    double invInertia = 0.0;
+    double density = 1.0;          // kg/m^2, for mass when the body becomes dynamic
+    MassProperties unitMass;        // of the shape, per unit density
+
+    // Material and shape.
     double restitution = 0.0;
     double staticFriction = 0.0;
     double dynamicFriction = 0.0;
-    MassProperties unitMass;        // of the shape, per unit density
     Geometry shape;
-    std::uint32_t generation = 0;
+    double extent = 0.0;            // largest distance from the centre of mass to the shape, m
     CollisionDetection detection = CollisionDetection::Discrete;
-    double precision = kDefaultPrecision;  // sampled continuous detection: spacing, fraction of the step
+    double precision = kDefaultPrecision;
+
+    BodyType type = BodyType::Dynamic;
+    bool useGravity = true;
+    bool fixedRotation = false;
+    bool allowSleep = true;
+    bool alive = false;
+    std::uint32_t generation = 0;
+
+    // Broad phase: the proxy's enlarged box lives in the tree; aabb is the tight box at the current pose.
+    std::int32_t proxy = kNullIndex;
+    Aabb aabb;
+
+    // Sets: position in the awake list (World::awake_), kNullIndex for static and sleeping bodies.
+    std::int32_t awakeIndex = kNullIndex;
+
+    // Constraint graph: intrusive lists of the body's contacts and joints (edge key = index * 2 + side).
+    std::int32_t contactHead = kNullIndex;
+    std::int32_t contactCount = 0;
+    std::int32_t jointHead = kNullIndex;
+
+    // Island (dynamic bodies only): intrusive list of the island's bodies.
+    std::int32_t island = kNullIndex;
+    std::int32_t islandPrev = kNullIndex;
+    std::int32_t islandNext = kNullIndex;
+    double sleepTime = 0.0;         // s spent below the sleep tolerances
 
     bool movable() const { return type != BodyType::Static; }
+    bool awake() const { return awakeIndex != kNullIndex; }
 };
 
 }  // namespace physim

@@ -1,7 +1,12 @@
 #pragma once
-// Broad phase: candidate pairs whose world bounding boxes overlap, each pair once, never static-static.
+// Broad phase: which bodies may touch. Two dynamic AABB trees of enlarged boxes, one for static bodies and one
+// for the bodies that can move. A proxy's box is the body's box enlarged by a margin and by the motion expected
+// over the next step, so it is touched only when its body leaves that box; the pairs of such moved proxies are
+// the only new candidate pairs. A scene at rest costs nothing here. Internal.
 
-#include "BodyData.hpp"
+#include "DynamicTree.hpp"
+
+#include "physim/core/Aabb.hpp"
 
 #include <cstdint>
 #include <utility>
@@ -9,14 +14,44 @@
 
 namespace physim {
 
-using BodyPair = std::pair<std::uint32_t, std::uint32_t>;
+class Executor;
 
-/// Refreshes every live body's aabb and writes the overlapping pairs of slot indices (first < second),
-/// sorted, so the order is deterministic. `scratch` belongs to the broad phase between calls: it keeps last
-/// call's order (so a step repairs it instead of sorting from scratch) and working tables. Pass the same
-/// vector every step, untouched, for that fast path; any other content (an empty vector) is still correct
-/// and costs a full sort.
-void findCandidatePairs(std::vector<BodyData>& bodies, std::vector<BodyPair>& pairs,
-                        std::vector<std::uint32_t>& scratch);
+using BodyPair = std::pair<std::uint32_t, std::uint32_t>;  // body slots, first < second
+
+class BroadPhase {
+public:
+    /// A proxy key: the tree (bit 0: 1 = static) and the proxy id in that tree.
+    static std::int32_t key(std::int32_t id, bool isStatic) { return id * 2 + (isStatic ? 1 : 0); }
+
+    std::int32_t createProxy(const Aabb& fatBox, std::uint32_t body, bool isStatic);
+    void destroyProxy(std::int32_t key);
+    /// A new box (the body left its old one, or was moved by the user); the proxy joins the move buffer.
+    void moveProxy(std::int32_t key, const Aabb& fatBox);
+    const Aabb& fatBox(std::int32_t key) const;
+    bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
+
+    /// The body pairs (first < second, sorted, each once) whose boxes overlap and at least one of which moved
+    /// since the last call; empties the move buffer. Queries run on the executor's threads.
+    void findNewPairs(std::vector<BodyPair>& pairs, Executor& executor);
+
+    std::size_t moveCount() const { return moved_.size(); }
+    /// Bodies whose boxes overlap `box`, for users and tests (both trees).
+    template <class Callback>
+    void query(const Aabb& box, Callback&& callback) const {
+        auto forward = [&](std::int32_t, std::uint32_t body) { return callback(body); };
+        tree_[0].query(box, forward);
+        tree_[1].query(box, forward);
+    }
+
+private:
+    DynamicTree& treeOf(std::int32_t key) { return tree_[key & 1]; }
+    const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }
+    void markMoved(std::int32_t key);
+
+    DynamicTree tree_[2];                 // [0] movable bodies, [1] static bodies
+    std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
+    std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
+    std::vector<std::vector<BodyPair>> perTask_;
+};
 
 }  // namespace physim

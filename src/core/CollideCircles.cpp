@@ -17,13 +17,14 @@ Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
 
 }  // namespace
 
-NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb) {
+NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb,
+                            double margin) {
     NarrowResult r;
     const Vec2 ca = xa.apply(a.center);
     const Vec2 cb = xb.apply(b.center);
     const Vec2 d = cb - ca;
     r.separation = std::hypot(d.x(), d.y()) - a.radius - b.radius;
-    if (r.separation > 0.0) return r;
+    if (r.separation > margin) return r;
     Manifold& m = r.manifold;
     // Concentric circles have no preferred direction: +y keeps the normal a unit vector, and every direction
     // needs the same push (the sum of the radii).
@@ -40,7 +41,7 @@ NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& 
 // nearest way out; otherwise the closest point of the polygon lies on that face's edge (for a convex polygon
 // the face of greatest separation bounds the Voronoi region holding the centre), at an end vertex or inside.
 NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, const Circle& b,
-                                     const Transform& xb) {
+                                     const Transform& xb, double margin) {
     NarrowResult r;
     const Vec2 c = xa.applyInverse(xb.apply(b.center));
     int face = 0;
@@ -52,7 +53,7 @@ NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, cons
             face = i;
         }
     }
-    if (faceSeparation > b.radius) {
+    if (faceSeparation > b.radius + margin) {
         r.separation = faceSeparation - b.radius;
         return r;
     }
@@ -73,7 +74,7 @@ NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, cons
         surface = a.vertices[vertex];
         const Vec2 d = c - surface;
         distance = std::hypot(d.x(), d.y());
-        if (distance > b.radius) {
+        if (distance > b.radius + margin) {
             r.separation = distance - b.radius;
             return r;
         }

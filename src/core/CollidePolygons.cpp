@@ -30,16 +30,20 @@ FaceQuery maxSeparation(const Polygon& p, const Polygon& q) {
     return best;
 }
 
-// Feature id of a clipped point: who is the reference, which reference face and incident edge, which end of
-// the incident edge. The same touching features give the same id from step to step.
-std::uint32_t featureId(bool flip, int referenceFace, int incidentEdge, int end) {
-    return (flip ? 1u << 12 : 0u) | static_cast<std::uint32_t>(referenceFace) << 8 |
-           static_cast<std::uint32_t>(incidentEdge) << 4 | static_cast<std::uint32_t>(end);
+// Feature id of a clipped point: the vertex of the first shape and the vertex of the second shape it lies
+// between (the reference face's end and the incident edge's end on the same side of the clip). It does not say
+// which shape is the reference, so a reference face that swaps between two facing faces (a box on a box, tilted
+// by a hair one way or the other) keeps its ids, and with them the warm-start impulses.
+std::uint32_t featureId(bool flip, int referenceVertex, int incidentVertex) {
+    const int onA = flip ? incidentVertex : referenceVertex;
+    const int onB = flip ? referenceVertex : incidentVertex;
+    return static_cast<std::uint32_t>(onA) << 4 | static_cast<std::uint32_t>(onB);
 }
 
 }  // namespace
 
-NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb) {
+NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb,
+                             double margin) {
     // Work in a's frame: b's vertices relative to a stay small numbers even far from the world origin.
     Polygon local = b;
     const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
@@ -53,7 +57,7 @@ NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygo
     const FaceQuery onA = maxSeparation(a, local);
     const FaceQuery onB = maxSeparation(local, a);
     r.separation = std::max(onA.separation, onB.separation);
-    if (r.separation > 0.0) return r;
+    if (r.separation > margin) return r;
 
     // The reference face is the face of least overlap (the minimum translation); a's face wins a near tie
     // between facing faces so the choice, and so the feature ids, do not flicker.
@@ -103,8 +107,10 @@ NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygo
         candidates = 1;
     }
 
-    // Keep the points on or below the reference face, or within kSpeculativeMargin above it: a tilted incident
-    // edge touches with one end only (vertex against face). Each point goes midway between the two surfaces.
+    // Keep the points on or below the reference face, or within kSpeculativeMargin (or the caller's margin) above
+    // it: a tilted incident edge touches with one end only (vertex against face). Each point goes midway between
+    // the two surfaces.
+    const double keep = std::max(margin, kSpeculativeMargin);
     Manifold& m = r.manifold;
     m.normal = xa.q.apply(flip ? Vec2(-n) : n);
     double separations[2];
@@ -114,17 +120,18 @@ NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygo
         if (separations[k] < separations[deepest]) deepest = k;
     }
     for (int k = 0; k < candidates; ++k) {
-        if (separations[k] > kSpeculativeMargin) continue;
+        if (separations[k] > keep) continue;
         ContactPoint& cp = m.points[m.pointCount++];
         cp.point = xa.apply(clipped[k] - 0.5 * separations[k] * n);
         cp.separation = separations[k];
-        cp.id = featureId(flip, i1, i2, ends[k]);
+        cp.id = featureId(flip, ends[k] == 0 ? i1 : (i1 + 1) % ref.count, ends[k] == 0 ? (i2 + 1) % inc.count : i2);
     }
-    if (m.pointCount == 0) {  // overlap along every axis but the clipped edge ends above the face by rounding
+    if (m.pointCount == 0) {  // within the margin along every axis but the clipped edge ends above the face
         ContactPoint& cp = m.points[m.pointCount++];
         cp.point = xa.apply(clipped[deepest] - 0.5 * separations[deepest] * n);
-        cp.separation = std::min(separations[deepest], 0.0);
-        cp.id = featureId(flip, i1, i2, ends[deepest]);
+        cp.separation = std::min(separations[deepest], std::max(r.separation, 0.0));
+        cp.id = featureId(flip, ends[deepest] == 0 ? i1 : (i1 + 1) % ref.count,
+                          ends[deepest] == 0 ? (i2 + 1) % inc.count : i2);
     }
     return r;
 }

@@ -1,9 +1,22 @@
 #pragma once
-// Sequential impulses over all contact points (Catto, GDC 2006): each pair once per iteration, accumulated
-// impulses clamped (normal >= 0, friction inside Coulomb's cone), warm started from the previous step, then a
-// position projection that moves bodies apart without adding velocity (so it adds no energy).
+// Contact rows of the soft step (Catto's "Solver2D" soft step, written for physim). Internal.
+//
+// A contact is prepared once per step from its manifold: lever arms from the centres of mass, the separation at
+// the step's start, effective masses. Each substep then
+//   - warm starts it with the impulses of the last substep,
+//   - solves it with a soft bias: the separation is updated from the bodies' displacement since the step began
+//     (no new collision detection), and overlap is pushed out as a damped spring of `contactHertz`, so deep
+//     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
+//     bodies would close the gap within the substep, and then stop them exactly at contact;
+//   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
+// After the last substep one restitution pass sets each bouncing point's normal speed to e times the speed at
+// which it met (recorded when the point first pushed in the step).
+// Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses:
+// static while the impulse that stops sliding is within mu_s times that sum, else clamped to mu_d times it. In
+// 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row
+// is exact, and the static/dynamic decision sees the whole load, not how it is shared between the points.
 
-#include "BodyData.hpp"
+#include "SolverData.hpp"
 
 #include "physim/core/Contact.hpp"
 #include "physim/core/WorldSettings.hpp"
@@ -13,34 +26,48 @@
 
 namespace physim {
 
-class ContactSolver {
-public:
-    /// Caches per-point lever arms and effective masses; applies the warm-start impulses already stored in
-    /// the manifolds' points.
-    void prepare(std::vector<BodyData>& bodies, std::vector<Manifold>& manifolds, const WorldSettings& s);
-    void solveVelocities(std::vector<BodyData>& bodies, std::vector<Manifold>& manifolds);
-    /// After positions were integrated: push overlapping bodies apart by position changes only. Contacts of a
-    /// body marked in `moved` (the continuous stage put it elsewhere: its anchors are stale) are left alone.
-    void correctPositions(std::vector<BodyData>& bodies, const std::vector<Manifold>& manifolds,
-                          const WorldSettings& s, const std::vector<std::uint8_t>* moved = nullptr);
+struct ContactData;
 
-private:
-    struct PointState {
-        Vec2 rA, rB;             // lever arms from the centres of mass, m
-        Vec2 localA, localB;     // the touching surface points in each body's frame (for position correction)
-        double normalMass = 0.0;
-        double tangentMass = 0.0;
-        double velocityBias = 0.0;  // restitution target, m/s
-    };
-    struct PairState {
-        std::uint32_t a = 0, b = 0;
-        double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
-        PointState points[2];
-        bool blockSolve = false;  // two-point manifold solved as one 2x2 problem (below)
-        double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // normal mass matrix K and 1/det K
-    };
-    void solveNormalBlock(BodyData& A, BodyData& B, Manifold& m, const PairState& ps);
-    std::vector<PairState> pairs_;
+/// A soft constraint's coefficients for a substep h: a spring of `hertz` with `dampingRatio`, implicit in time.
+struct Softness {
+    double biasRate = 0.0;      // 1/s: velocity bias per metre of error
+    double massScale = 1.0;
+    double impulseScale = 0.0;
 };
+Softness makeSoftness(double hertz, double dampingRatio, double h);
+
+struct ContactConstraintPoint {
+    Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // lever arms from the centres of mass at the start, m
+    double baseSeparation = 0.0;  // separation - n . (anchorB - anchorA), m: the rest comes from displacements
+    double normalImpulse = 0.0;   // N s, this substep's (warm started)
+    double maxNormalImpulse = 0.0;
+    double normalMass = 0.0;      // kg
+    double relativeVelocity = 0.0;  // m/s along the normal when the point first pushed in this step
+    bool engaged = false;
+};
+
+struct ContactConstraint {
+    std::uint32_t contact = 0;
+    std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: immovable
+    Vec2 normal = Vec2::Zero();
+    double invMassA = 0.0, invIA = 0.0, invMassB = 0.0, invIB = 0.0;
+    double staticFriction = 0.0, dynamicFriction = 0.0, restitution = 0.0;
+    Vec2 frictionAnchorA = Vec2::Zero(), frictionAnchorB = Vec2::Zero();
+    double tangentMass = 0.0;
+    double tangentImpulse = 0.0;
+    int pointCount = 0;
+    ContactConstraintPoint points[2];
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
+};
+
+/// Fills c from its contact's manifold and the bodies' records (lever arms at the centres of mass).
+void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies);
+void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states);
+/// One pass. useBias: push out overlap softly (solve); false: no push (relax). invH: 1 / substep.
+void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
+                   const Softness& softness, double maxPushVelocity);
+void applyRestitution(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double threshold);
+/// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).
+void storeImpulses(const ContactConstraint& c, ContactData& contact);
 
 }  // namespace physim

@@ -1,39 +1,53 @@
 #pragma once
-// Impulses between two bodies at lever arms rA, rB (from their centres of mass), shared by the contact and
-// joint solvers. Convention: P acts on B and -P on A (Newton's third law).
+// What every solver row does to its two bodies, shared by the contact and joint rows. Internal.
+// Convention: an impulse P acts on B and -P on A (Newton's third law), at lever arms rA, rB from the centres of
+// mass. kNullIndex names an immovable body, seen as a still one.
 
-#include "BodyData.hpp"
+#include "SolverData.hpp"
 
 namespace physim {
 
-/// 1 / (the pair's inverse mass along `dir` at the lever arms), 0 when neither body can move that way.
-inline double effectiveMass(const BodyData& A, const BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& dir) {
+/// A row's working copy of one body's motion.
+struct MotionSide {
+    Vec2 v = Vec2::Zero();
+    double w = 0.0;
+    Vec2 dp = Vec2::Zero();
+    Rotation dq{};
+};
+
+inline MotionSide loadSide(const SolverBody* states, std::int32_t index) {
+    if (index == kNullIndex) return {};
+    const SolverBody& s = states[index];
+    return {s.v, s.w, s.dp, s.dq};
+}
+
+/// Only bodies a row can move are written back: a kinematic body is read by many rows of one colour at once.
+inline void storeSide(SolverBody* states, std::int32_t index, double invMass, const MotionSide& side) {
+    if (index == kNullIndex || invMass == 0.0) return;
+    states[index].v = side.v;
+    states[index].w = side.w;
+}
+
+/// Row: any type with invMassA, invIA, invMassB, invIB.
+template <class Row>
+void applyImpulse(const Row& r, MotionSide& A, MotionSide& B, const Vec2& rA, const Vec2& rB, const Vec2& P) {
+    A.v -= r.invMassA * P;
+    A.w -= r.invIA * cross(rA, P);
+    B.v += r.invMassB * P;
+    B.w += r.invIB * cross(rB, P);
+}
+
+/// 1 / (the row's inverse mass along dir at the lever arms); 0 when neither body can move that way.
+template <class Row>
+double massAlong(const Row& r, const Vec2& rA, const Vec2& rB, const Vec2& dir) {
     const double ra = cross(rA, dir), rb = cross(rB, dir);
-    const double k = A.invMass + B.invMass + A.invInertia * ra * ra + B.invInertia * rb * rb;
+    const double k = r.invMassA + r.invMassB + r.invIA * ra * ra + r.invIB * rb * rb;
     return k > 0.0 ? 1.0 / k : 0.0;
 }
 
 /// Velocity of B's point relative to A's point, m/s.
-inline Vec2 relativeVelocity(const BodyData& A, const BodyData& B, const Vec2& rA, const Vec2& rB) {
+inline Vec2 relativeVelocity(const MotionSide& A, const MotionSide& B, const Vec2& rA, const Vec2& rB) {
     return B.v + cross(B.w, rB) - A.v - cross(A.w, rA);
-}
-
-/// Changes velocities by the impulse P (N s).
-inline void applyImpulse(BodyData& A, BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& P) {
-    A.v -= A.invMass * P;
-    A.w -= A.invInertia * cross(rA, P);
-    B.v += B.invMass * P;
-    B.w += B.invInertia * cross(rB, P);
-}
-
-/// Moves the bodies as the impulse P would over unit time, without touching velocities (position passes).
-inline void applyPositionImpulse(BodyData& A, BodyData& B, const Vec2& rA, const Vec2& rB, const Vec2& P) {
-    A.xf.p -= A.invMass * P;
-    A.angle -= A.invInertia * cross(rA, P);
-    A.xf.q = Rotation::fromAngle(A.angle);
-    B.xf.p += B.invMass * P;
-    B.angle += B.invInertia * cross(rB, P);
-    B.xf.q = Rotation::fromAngle(B.angle);
 }
 
 }  // namespace physim

@@ -4,7 +4,9 @@
 // Every routine returns the contact manifold (normal from the first shape to the second, up to two points
 // midway between the surfaces, stable feature ids) and the signed distance between the shapes along that
 // normal: negative when they overlap, where its magnitude is the penetration depth (the distance to move the
-// second shape along the normal to separate them). pointCount is 0 exactly when the shapes do not touch.
+// second shape along the normal to separate them). `margin` (m, >= 0) makes the manifold speculative: points up
+// to that far apart are kept too (positive separation), so the solver can stop the shapes before they meet.
+// With margin 0, pointCount is 0 exactly when the shapes do not touch.
 
 #include "physim/core/Contact.hpp"
 #include "physim/core/Geometry.hpp"
@@ -16,10 +18,17 @@ struct NarrowResult {
     double separation = 0.0;  ///< m along manifold.normal; only meaningful when manifold.pointCount > 0
 };
 
-NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb);
+NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb,
+                            double margin = 0.0);
 /// Normal from the polygon to the circle.
-NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, const Circle& b, const Transform& xb);
-NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb);
+NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, const Circle& b, const Transform& xb,
+                                     double margin = 0.0);
+NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb,
+                             double margin = 0.0);
+
+/// Dispatch on the pair of geometry types (NarrowPhase.cpp); the normal points from a to b.
+NarrowResult collideGeometries(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,
+                               double margin = 0.0);
 
 /// Largest |separation difference| (m) for which polygon-polygon keeps the first shape's face as the reference
 /// when the two candidate faces are almost antiparallel (a box resting on a box): rounding and solver jitter

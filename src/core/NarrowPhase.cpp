@@ -15,23 +15,24 @@ NarrowResult swapped(NarrowResult r) {
     return r;
 }
 
-NarrowResult dispatch(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    const auto* ca = std::get_if<Circle>(&a);
-    const auto* cb = std::get_if<Circle>(&b);
-    if (ca && cb) return collideCircles(*ca, xa, *cb, xb);
-    if (cb) return collidePolygonAndCircle(std::get<Polygon>(a), xa, *cb, xb);
-    if (ca) return swapped(collidePolygonAndCircle(std::get<Polygon>(b), xb, *ca, xa));
-    return collidePolygons(std::get<Polygon>(a), xa, std::get<Polygon>(b), xb);
-}
-
 }  // namespace
 
+NarrowResult collideGeometries(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,
+                               double margin) {
+    const auto* ca = std::get_if<Circle>(&a);
+    const auto* cb = std::get_if<Circle>(&b);
+    if (ca && cb) return collideCircles(*ca, xa, *cb, xb, margin);
+    if (cb) return collidePolygonAndCircle(std::get<Polygon>(a), xa, *cb, xb, margin);
+    if (ca) return swapped(collidePolygonAndCircle(std::get<Polygon>(b), xb, *ca, xa, margin));
+    return collidePolygons(std::get<Polygon>(a), xa, std::get<Polygon>(b), xb, margin);
+}
+
 Manifold collide(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    return dispatch(a, xa, b, xb).manifold;
+    return collideGeometries(a, xa, b, xb).manifold;
 }
 
 Colliding computeColliding(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    const NarrowResult r = dispatch(a, xa, b, xb);
+    const NarrowResult r = collideGeometries(a, xa, b, xb);
     const Manifold& m = r.manifold;
     Colliding c;
     if (m.pointCount == 0) return c;

@@ -1,11 +1,9 @@
+// The World's public API: bodies, joints and settings, checked at the boundary, and step() running the stages.
+
 #include "physim/core/World.hpp"
 
-#include "BodyData.hpp"
-#include "BroadPhase.hpp"
-#include "ContactSolver.hpp"
-#include "ContinuousStage.hpp"
-#include "DistanceJoint.hpp"
-#include "Integrator.hpp"
+#include "Slots.hpp"
+#include "WorldImpl.hpp"
 
 #include "physim/core/Collide.hpp"
 #include "physim/core/Validate.hpp"
@@ -19,23 +17,38 @@
 namespace physim {
 namespace {
 
-// Runs `work` as stage `s` only when `needed`, recording whether it ran and its wall-clock time.
 template <class Work>
 void runStage(StepProfile& profile, Stage s, bool needed, Work&& work) {
     if (!needed) return;
     const auto start = std::chrono::steady_clock::now();
     work();
     const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-    profile.secondsOf(s) += elapsed.count();  // substeps add up
+    profile.secondsOf(s) += elapsed.count();
     profile.ran[static_cast<std::size_t>(s)] = true;
 }
 
+void requireBodyType(BodyType type) {
+    if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
+        throw std::invalid_argument("physim: body type must be Static, Kinematic or Dynamic, got " +
+                                    std::to_string(static_cast<int>(type)));
+}
+
+void requireDetection(CollisionDetection mode) {
+    if (mode != CollisionDetection::Discrete && mode != CollisionDetection::ContinuousSampled &&
+        mode != CollisionDetection::ContinuousExact)
+        throw std::invalid_argument("physim: collision detection must be Discrete, ContinuousSampled or "
+                                    "ContinuousExact, got " + std::to_string(static_cast<int>(mode)));
+}
+
 void validate(const BodyDef& def) {
+    requireBodyType(def.type);
+    requireDetection(def.collisionDetection);
     requireFinite("body position", def.position);
     requireFinite("body angle", def.angle);
     requireFinite("body velocity", def.velocity);
     requireFinite("body angular velocity", def.angularVelocity);
     if (def.type == BodyType::Dynamic) requirePositive("body density", def.density);
+    else requireNonNegative("body density", def.density);
     requireInRange("body restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("body static friction", def.staticFriction);
     requireNonNegative("body dynamic friction", def.dynamicFriction);
@@ -43,90 +56,123 @@ void validate(const BodyDef& def) {
     checkPrecision(def.precision);
 }
 
-// Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape.
+// Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape; it turns about the shape's
+// centroid. Throws (naming the value) unless the mass and the inertia come out positive and finite.
 void assignMass(BodyData& b, double mass) {
-    b.mass = mass;
-    b.density = mass / b.unitMass.area;
-    b.invMass = 1.0 / mass;
+    requirePositive("body mass", mass);
     const double density = mass / b.unitMass.area;
-    // Inertia about the centre of mass: the shape's own second moment plus the parallel-axis term for a
-    // shape whose centroid is offset from the body origin.
-    b.inertia = density * b.unitMass.secondMoment + mass * b.unitMass.centroid.squaredNorm();
-    b.invInertia = (b.fixedRotation || b.inertia <= 0.0) ? 0.0 : 1.0 / b.inertia;
+    const double inertia = density * b.unitMass.secondMoment;
+    requirePositive("body inertia (from the mass and shape)", inertia);
+    b.mass = mass;
+    b.density = density;
+    b.invMass = 1.0 / mass;
+    b.inertia = inertia;
+    b.invInertia = b.fixedRotation ? 0.0 : 1.0 / inertia;
 }
 
-// Takes a slot for a new element: a freed one if any, else a new one at the end. The slot is reset to a fresh,
-// live element whose generation is one past the slot's last, so handles to what lived there before go stale.
-template <class Data>
-std::uint32_t takeSlot(std::vector<Data>& slots, std::vector<std::uint32_t>& freeList) {
-    std::uint32_t index;
-    if (!freeList.empty()) {
-        index = freeList.back();
-        freeList.pop_back();
-    } else {
-        index = static_cast<std::uint32_t>(slots.size());
-        slots.emplace_back();
-    }
-    const std::uint32_t generation = slots[index].generation + 1;
-    slots[index] = Data{};
-    slots[index].generation = generation;
-    slots[index].alive = true;
-    return index;
+void clearMass(BodyData& b) { b.mass = b.inertia = b.invMass = b.invInertia = 0.0; }
+
+// Largest distance from the centre of mass to the shape (how far a point moves per radian of turn).
+double extentAbout(const Geometry& g, const Vec2& center) {
+    if (const auto* c = std::get_if<Circle>(&g)) return (c->center - center).norm() + c->radius;
+    const Polygon& p = std::get<Polygon>(g);
+    double r = 0.0;
+    for (int i = 0; i < p.count; ++i) r = std::max(r, (p.vertices[i] - center).norm());
+    return r;
 }
 
 }  // namespace
 
 void validate(const WorldSettings& s) {
     requireFinite("gravity", s.gravity);
-    if (s.velocityIterations < 1)
-        throw std::invalid_argument("physim: velocityIterations must be >= 1, got " +
-                                    std::to_string(s.velocityIterations));
-    if (s.substeps < 1)
-        throw std::invalid_argument("physim: substeps must be >= 1, got " + std::to_string(s.substeps));
-    if (s.positionIterations < 0)
-        throw std::invalid_argument("physim: positionIterations must be >= 0, got " +
-                                    std::to_string(s.positionIterations));
+    auto requireCount = [](const char* name, int value, int lo, int hi) {
+        if (value < lo || value > hi)
+            throw std::invalid_argument(std::string("physim: ") + name + " must be in [" + std::to_string(lo) +
+                                        ", " + std::to_string(hi) + "], got " + std::to_string(value));
+    };
+    requireCount("substeps", s.substeps, 1, 1000);
+    requireCount("velocityIterations", s.velocityIterations, 1, 1000);
+    requireCount("relaxIterations", s.relaxIterations, 0, 1000);
+    requireCount("threads", s.threads, 0, 256);
+    requirePositive("contactHertz", s.contactHertz);
+    requireNonNegative("contactDampingRatio", s.contactDampingRatio);
+    requirePositive("contactPushMaxVelocity", s.contactPushMaxVelocity);
+    requirePositive("jointHertz", s.jointHertz);
+    requireNonNegative("jointDampingRatio", s.jointDampingRatio);
     requireNonNegative("linearSlop", s.linearSlop);
     requireNonNegative("restitutionThreshold", s.restitutionThreshold);
+    requireNonNegative("impactSpeedThreshold", s.impactSpeedThreshold);
     requireNonNegative("sleepLinearTolerance", s.sleepLinearTolerance);
     requireNonNegative("sleepAngularTolerance", s.sleepAngularTolerance);
     requirePositive("timeToSleep", s.timeToSleep);
-    if (s.threads < 0 || s.threads > 256)
-        throw std::invalid_argument("physim: threads must be in [0, 256] (0 = all hardware threads), got " +
-                                    std::to_string(s.threads));
 }
 
-World::World(const WorldSettings& settings)
-    : solver_(std::make_unique<ContactSolver>()), continuous_(std::make_unique<ContinuousStage>()) {
-    setSettings(settings);
+// --- WorldImpl helpers ---------------------------------------------------------------------------------
+
+void WorldImpl::requireNotStepping(const char* call) const {
+    if (stepping) throw std::logic_error(std::string("physim: World::") + call + " called during the world's step");
 }
+
+Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
+    if (b.type == BodyType::Static) return b.aabb.fattened(margin);
+    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches.
+    const Vec2 travel = b.v * dt;
+    Aabb box = b.aabb;
+    box.lower = box.lower.cwiseMin(b.aabb.lower + travel);
+    box.upper = box.upper.cwiseMax(b.aabb.upper + travel);
+    return box.fattened(margin + std::abs(b.w) * dt * b.extent);
+}
+
+// --- World -------------------------------------------------------------------------------------------
+
+World::World(const WorldSettings& settings) : impl_(std::make_unique<WorldImpl>()) { setSettings(settings); }
 World::~World() = default;
-
-void World::setContinuousSolver(std::shared_ptr<ContinuousSolver> solver) { continuous_->setSolver(std::move(solver)); }
-
-const std::shared_ptr<ContinuousSolver>& World::continuousSolver() const { return continuous_->solver(); }
 World::World(World&&) noexcept = default;
 World& World::operator=(World&&) noexcept = default;
 
 void World::setSettings(const WorldSettings& settings) {
     physim::validate(settings);
-    settings_ = settings;
-    if (!settings_.enableSleep)
-        for (BodyData& b : bodies_) b.awake = true, b.sleepTime = 0.0;
+    impl_->requireNotStepping("setSettings");
+    const bool sleepWasOn = impl_->settings.enableSleep;
+    impl_->settings = settings;
+    impl_->executor.setThreads(settings.threads);
+    if (!settings.enableSleep) {
+        for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
+            if (impl_->bodies[i].alive) impl_->wakeBody(i);
+        impl_->rebuildIslands();  // clears them: no island bookkeeping while sleep is off
+    } else if (!sleepWasOn || impl_->islands.empty()) {
+        impl_->rebuildIslands();
+    }
 }
+
+const WorldSettings& World::settings() const { return impl_->settings; }
+const StepProfile& World::profile() const { return impl_->profile; }
+const ContactEvents& World::contactEvents() const { return impl_->events; }
+std::uint64_t World::stepCount() const { return impl_->stepCount; }
+std::size_t World::awakeBodyCount() const { return impl_->awake.size(); }
+
+void World::setContinuousSolver(std::shared_ptr<ContinuousSolver> solver) {
+    impl_->requireNotStepping("setContinuousSolver");
+    impl_->continuous.setSolver(std::move(solver));
+}
+const std::shared_ptr<ContinuousSolver>& World::continuousSolver() const { return impl_->continuous.solver(); }
 
 // --- bodies ------------------------------------------------------------------------------------------
 
 BodyId World::createBody(const BodyDef& def) {
     validate(def);
-    const std::uint32_t index = takeSlot(bodies_, freeList_);
-    BodyData& b = bodies_[index];
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("createBody");
+    const std::uint32_t index = takeSlot(w.bodies, w.freeBodies);
+    BodyData& b = w.bodies[index];
     b.type = def.type;
-    b.xf.p = def.position;
-    b.angle = def.angle;
-    b.xf.q = Rotation::fromAngle(def.angle);
     b.shape = def.shape;
     b.unitMass = computeMassProperties(def.shape);
+    b.localCenter = b.unitMass.centroid;
+    b.extent = extentAbout(def.shape, b.localCenter);
+    b.xf = {def.position, Rotation::fromAngle(def.angle)};
+    b.angle = def.angle;
+    b.center = b.xf.apply(b.localCenter);
     b.restitution = def.restitution;
     b.staticFriction = def.staticFriction;
     b.dynamicFriction = def.dynamicFriction;
@@ -135,72 +181,74 @@ BodyId World::createBody(const BodyDef& def) {
     b.allowSleep = def.allowSleep;
     b.detection = def.collisionDetection;
     b.precision = def.precision;
+    b.density = def.density;
     if (def.type != BodyType::Static) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
-    b.density = def.density;
     if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
+    b.aabb = computeAabb(b.shape, b.xf);
+    b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
+    w.addAwakeBody(index);
+    if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 
-    ++liveCount_;
-    if (b.movable()) ++movableCount_;
-    if (b.type == BodyType::Dynamic) ++dynamicCount_;
-    if (b.detection != CollisionDetection::Discrete) ++continuousCount_;
+    ++w.liveCount;
+    if (b.type == BodyType::Dynamic) ++w.dynamicCount;
+    if (b.detection != CollisionDetection::Discrete) ++w.continuousCount;
+    w.touchingValid = false;
     return BodyId{index, b.generation};
 }
 
 void World::destroyBody(BodyId id) {
-    BodyData& b = at(id);
-    --liveCount_;
-    if (b.movable()) --movableCount_;
-    if (b.type == BodyType::Dynamic) --dynamicCount_;
-    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
-    b.alive = false;
-    freeList_.push_back(id.index);
+    WorldImpl& w = *impl_;
+    at(id);
+    w.requireNotStepping("destroyBody");
+    const std::uint32_t index = id.index;
     // Its joints go, and the bodies they held wake.
-    for (std::uint32_t k = 0; k < joints_.size(); ++k) {
-        JointData& j = joints_[k];
-        if (!j.alive || (j.a != id.index && j.b != id.index)) continue;
-        BodyData& other = bodies_[j.a == id.index ? j.b : j.a];
-        other.awake = true, other.sleepTime = 0.0;
-        j.alive = false;
-        jointFreeList_.push_back(k);
-        --jointCount_;
+    while (w.bodies[index].jointHead != kNullIndex) {
+        const std::uint32_t j = static_cast<std::uint32_t>(w.bodies[index].jointHead >> 1);
+        destroyJoint(JointId{j, w.joints[j].generation});
     }
-    // Bodies that were resting on it must fall: wake everything whose box touches its box.
-    const Aabb gone = computeAabb(b.shape, b.xf).fattened(settings_.linearSlop);
-    for (BodyData& other : bodies_)
-        if (other.alive && !other.awake && computeAabb(other.shape, other.xf).overlaps(gone))
-            other.awake = true, other.sleepTime = 0.0;
-    // Contacts that name the destroyed body must not be solved or warm-started again.
-    auto names = [&](const Manifold& m) { return m.bodyA == id || m.bodyB == id; };
-    contacts_.erase(std::remove_if(contacts_.begin(), contacts_.end(), names), contacts_.end());
-    previousContacts_.erase(std::remove_if(previousContacts_.begin(), previousContacts_.end(), names),
-                            previousContacts_.end());
+    // Its contacts go; whatever rested on it wakes and falls.
+    while (w.bodies[index].contactHead != kNullIndex)
+        w.destroyContact(static_cast<std::uint32_t>(w.bodies[index].contactHead >> 1), true);
+    BodyData& b = w.bodies[index];
+    w.removeFromIsland(index);
+    w.removeAwakeBody(index);
+    w.broadPhase.destroyProxy(b.proxy);
+    --w.liveCount;
+    if (b.type == BodyType::Dynamic) --w.dynamicCount;
+    if (b.detection != CollisionDetection::Discrete) --w.continuousCount;
+    b.alive = false;
+    w.freeBodies.push_back(index);
+    w.touchingValid = false;
 }
 
 bool World::contains(BodyId id) const {
-    return !id.isNull() && id.index < bodies_.size() && bodies_[id.index].alive &&
-           bodies_[id.index].generation == id.generation;
+    const auto& bodies = impl_->bodies;
+    return !id.isNull() && id.index < bodies.size() && bodies[id.index].alive &&
+           bodies[id.index].generation == id.generation;
 }
 
-std::size_t World::bodyCount() const { return liveCount_; }
-
-BodyData& World::at(BodyId id) {
-    return const_cast<BodyData&>(static_cast<const World&>(*this).at(id));
-}
+std::size_t World::bodyCount() const { return impl_->liveCount; }
 
 const BodyData& World::at(BodyId id) const {
     if (!contains(id))
         throw std::invalid_argument("physim: body id (index " + std::to_string(id.index) + ", generation " +
                                     std::to_string(id.generation) + ") is not a live body of this world");
-    return bodies_[id.index];
+    return impl_->bodies[id.index];
 }
 
-BodyData& World::requireDynamic(BodyId id, const char* what) {
-    BodyData& b = at(id);
-    if (b.type != BodyType::Dynamic)
-        throw std::invalid_argument(std::string("physim: ") + what + " needs a dynamic body");
+BodyData& World::mutableBody(BodyId id, const char* call) {
+    at(id);
+    impl_->requireNotStepping(call);
+    impl_->touchingValid = false;
+    return impl_->bodies[id.index];
+}
+
+BodyData& World::wake(BodyId id, const char* call) {
+    BodyData& b = mutableBody(id, call);
+    impl_->wakeBody(id.index);
     return b;
 }
 
@@ -209,8 +257,15 @@ const Geometry& World::shape(BodyId id) const { return at(id).shape; }
 Transform World::transform(BodyId id) const { return at(id).xf; }
 Vec2 World::position(BodyId id) const { return at(id).xf.p; }
 double World::angle(BodyId id) const { return at(id).angle; }
+Vec2 World::centerOfMass(BodyId id) const { return at(id).center; }
+Vec2 World::localCenterOfMass(BodyId id) const { return at(id).localCenter; }
 Vec2 World::velocity(BodyId id) const { return at(id).v; }
+Vec2 World::velocityAt(BodyId id, const Vec2& worldPoint) const {
+    const BodyData& b = at(id);
+    return b.v + cross(b.w, worldPoint - b.center);
+}
 double World::angularVelocity(BodyId id) const { return at(id).w; }
+Aabb World::bounds(BodyId id) const { return at(id).aabb; }
 double World::mass(BodyId id) const { return at(id).mass; }
 double World::inverseMass(BodyId id) const { return at(id).invMass; }
 double World::inertia(BodyId id) const { return at(id).inertia; }
@@ -223,63 +278,90 @@ bool World::useGravity(BodyId id) const { return at(id).useGravity; }
 void World::setTransform(BodyId id, const Vec2& position, double angle) {
     requireFinite("body position", position);
     requireFinite("body angle", angle);
-    BodyData& b = wake(id);
-    b.xf.p = position;
+    BodyData& b = wake(id, "setTransform");
+    b.xf = {position, Rotation::fromAngle(angle)};
     b.angle = angle;
-    b.xf.q = Rotation::fromAngle(angle);
+    b.center = b.xf.apply(b.localCenter);
+    b.aabb = computeAabb(b.shape, b.xf);
+    impl_->broadPhase.moveProxy(b.proxy, impl_->proxyBox(b, kAabbMargin));
 }
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
     requireFinite("body velocity", velocity);
-    BodyData& b = wake(id);
+    BodyData& b = wake(id, "setVelocity");
     if (b.movable()) b.v = velocity;
 }
 
 void World::setAngularVelocity(BodyId id, double angularVelocity) {
     requireFinite("body angular velocity", angularVelocity);
-    BodyData& b = wake(id);
+    BodyData& b = wake(id, "setAngularVelocity");
     if (b.movable() && !b.fixedRotation) b.w = angularVelocity;
 }
 
-void World::setUseGravity(BodyId id, bool useGravity) { at(id).useGravity = useGravity; }
+void World::setUseGravity(BodyId id, bool useGravity) { wake(id, "setUseGravity").useGravity = useGravity; }
 
 void World::setMaterial(BodyId id, double restitution, double staticFriction, double dynamicFriction) {
     requireInRange("body restitution", restitution, 0.0, 1.0);
     requireNonNegative("body static friction", staticFriction);
     requireNonNegative("body dynamic friction", dynamicFriction);
-    BodyData& b = at(id);
+    BodyData& b = wake(id, "setMaterial");
     b.restitution = restitution;
     b.staticFriction = staticFriction;
     b.dynamicFriction = dynamicFriction;
 }
 
 void World::setType(BodyId id, BodyType type) {
-    BodyData& b = wake(id);
-    if (b.type == type) return;
-    if (b.movable()) --movableCount_;
-    if (b.type == BodyType::Dynamic) --dynamicCount_;
+    requireBodyType(type);
+    BodyData& current = mutableBody(id, "setType");
+    if (current.type == type) return;
+    // Check the new mass before changing anything.
+    BodyData trial = current;
+    trial.type = type;
+    if (type == BodyType::Dynamic) assignMass(trial, current.density * current.unitMass.area);
+    else clearMass(trial);
+
+    WorldImpl& w = *impl_;
+    const std::uint32_t index = id.index;
+    w.wakeBody(index);
+    // Contacts depend on the pair's types (two immovable bodies have none): rebuild them from the broad phase.
+    while (w.bodies[index].contactHead != kNullIndex)
+        w.destroyContact(static_cast<std::uint32_t>(w.bodies[index].contactHead >> 1), true);
+    w.removeFromIsland(index);
+    w.removeAwakeBody(index);
+    BodyData& b = w.bodies[index];
+    if (b.type == BodyType::Dynamic) --w.dynamicCount;
+    const bool wasStatic = b.type == BodyType::Static;
     b.type = type;
-    if (b.movable()) ++movableCount_;
-    if (type == BodyType::Dynamic) {
-        ++dynamicCount_;
-        assignMass(b, b.density * b.unitMass.area);
-    } else {
-        b.mass = b.inertia = b.invMass = b.invInertia = 0.0;
-    }
+    b.mass = trial.mass;
+    b.density = trial.density;
+    b.invMass = trial.invMass;
+    b.inertia = trial.inertia;
+    b.invInertia = trial.invInertia;
     if (type == BodyType::Static) {
         b.v.setZero();
         b.w = 0.0;
     }
+    if (type == BodyType::Dynamic) ++w.dynamicCount;
+    if (wasStatic != (type == BodyType::Static)) {
+        w.broadPhase.destroyProxy(b.proxy);
+        b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, type == BodyType::Static);
+    } else {
+        w.broadPhase.moveProxy(b.proxy, w.broadPhase.fatBox(b.proxy));  // find its pairs again
+    }
+    w.addAwakeBody(index);
+    if (type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 }
 
 void World::setMass(BodyId id, double mass) {
     requirePositive("body mass", mass);
-    assignMass(requireDynamic(id, "setMass"), mass);
-    wake(id);
+    BodyData& b = mutableBody(id, "setMass");
+    if (b.type != BodyType::Dynamic) throw std::invalid_argument("physim: setMass needs a dynamic body");
+    assignMass(b, mass);
+    impl_->wakeBody(id.index);
 }
 
 void World::setFixedRotation(BodyId id, bool fixedRotation) {
-    BodyData& b = wake(id);
+    BodyData& b = wake(id, "setFixedRotation");
     b.fixedRotation = fixedRotation;
     if (b.type == BodyType::Dynamic) assignMass(b, b.mass);  // recomputes the inverse inertia
     if (fixedRotation) b.w = 0.0;
@@ -287,34 +369,30 @@ void World::setFixedRotation(BodyId id, bool fixedRotation) {
 
 bool World::fixedRotation(BodyId id) const { return at(id).fixedRotation; }
 
-BodyData& World::wake(BodyId id) {
-    BodyData& b = at(id);
-    b.awake = true;
-    b.sleepTime = 0.0;
-    return b;
+bool World::isAwake(BodyId id) const {
+    const BodyData& b = at(id);
+    return b.type == BodyType::Static || b.awake();
 }
-
-bool World::isAwake(BodyId id) const { return at(id).awake; }
 
 void World::setAwake(BodyId id, bool awake) {
-    BodyData& b = at(id);
-    if (awake || b.type != BodyType::Dynamic || !settings_.enableSleep) {
-        wake(id);
+    BodyData& b = mutableBody(id, "setAwake");
+    WorldImpl& w = *impl_;
+    if (awake || b.type != BodyType::Dynamic || !w.settings.enableSleep) {
+        w.wakeBody(id.index);
         return;
     }
-    b.awake = false;
-    b.v.setZero();
-    b.w = 0.0;
+    if (b.island != kNullIndex && b.awake()) w.sleepIsland(static_cast<std::uint32_t>(b.island));
 }
 
-void World::setAllowSleep(BodyId id, bool allowSleep) { wake(id).allowSleep = allowSleep; }
+void World::setAllowSleep(BodyId id, bool allowSleep) { wake(id, "setAllowSleep").allowSleep = allowSleep; }
 bool World::allowSleep(BodyId id) const { return at(id).allowSleep; }
 
 void World::setCollisionDetection(BodyId id, CollisionDetection mode, double precision) {
+    requireDetection(mode);
     checkPrecision(precision);
-    BodyData& b = at(id);
-    if (b.detection != CollisionDetection::Discrete) --continuousCount_;
-    if (mode != CollisionDetection::Discrete) ++continuousCount_;
+    BodyData& b = mutableBody(id, "setCollisionDetection");
+    if (b.detection != CollisionDetection::Discrete) --impl_->continuousCount;
+    if (mode != CollisionDetection::Discrete) ++impl_->continuousCount;
     b.detection = mode;
     b.precision = precision;
 }
@@ -324,167 +402,74 @@ double World::collisionPrecision(BodyId id) const { return at(id).precision; }
 
 void World::applyForce(BodyId id, const Vec2& force) {
     requireFinite("force", force);
-    wake(id).force += force;
+    wake(id, "applyForce").force += force;
 }
 
 void World::applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint) {
     requireFinite("force", force);
     requireFinite("force application point", worldPoint);
-    BodyData& b = wake(id);
+    BodyData& b = wake(id, "applyForceAtPoint");
     b.force += force;
-    b.torque += cross(worldPoint - b.xf.p, force);
+    b.torque += cross(worldPoint - b.center, force);
 }
 
 void World::applyTorque(BodyId id, double torque) {
     requireFinite("torque", torque);
-    wake(id).torque += torque;
+    wake(id, "applyTorque").torque += torque;
 }
 
 void World::applyLinearImpulse(BodyId id, const Vec2& impulse) {
     requireFinite("impulse", impulse);
-    BodyData& b = wake(id);
+    BodyData& b = wake(id, "applyLinearImpulse");
     b.v += b.invMass * impulse;
 }
 
-// --- stepping ----------------------------------------------------------------------------------------
-
-void World::step(double dt) {
-    beginStep(dt);
-    collide();
-    finishStep();
-}
-
-void World::beginStep(double dt) {
-    // Above a second per step is a unit mistake (milliseconds passed as seconds), not a simulation.
-    requireInRange("time step dt (s)", dt, 0.0, 1.0);
-    if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
-    if (phase_ != Phase::Idle) throw std::logic_error("physim: beginStep called before the last step finished");
-    dt_ = dt;
-    h_ = dt / settings_.substeps;
-    profile_ = StepProfile{};
-    integrateForces();
-    phase_ = Phase::Forces;
-}
-
-void World::collide() {
-    if (phase_ != Phase::Forces) throw std::logic_error("physim: collide must follow beginStep");
-    // Substeps 1 .. n-1 run whole here; the last one stops after its solve, so the framework's
-    // checkCollisions sees that substep's contacts, and finishStep moves the bodies.
-    for (int k = 0; k < settings_.substeps; ++k) {
-        if (k > 0) {
-            integrateAndCorrect();
-            integrateForces();
-        }
-        detectAndSolve();
-    }
-    phase_ = Phase::Collided;
-}
-
-void World::finishStep() {
-    if (phase_ != Phase::Collided) throw std::logic_error("physim: finishStep must follow collide");
-    integrateAndCorrect();
-    runStage(profile_, Stage::Sleep, settings_.enableSleep && dynamicCount_ > 0, [&] { updateSleep(); });
-    clearForces(bodies_);
-    ++stepCount_;
-    phase_ = Phase::Idle;
-}
-
-// An awake body that can move: pairs with one are collided; a sleeping body touched by one wakes. A kinematic
-// body at rest never wakes a sleeper.
-bool World::isActive(const BodyData& b) {
-    if (!b.alive || !b.awake || b.type == BodyType::Static) return false;
-    return b.type == BodyType::Dynamic || b.v != Vec2::Zero() || b.w != 0.0;
-}
-
-// A sleeping island touched by an active body wakes whole: wake each sleeper in contact with an active body,
-// repeated until nothing changes, so the wake travels through a resting pile in one step.
-void World::wakeTouchingSleepers() {
-    for (bool woke = true; woke;) {
-        woke = false;
-        for (const auto& [a, b] : pairs_) {
-            BodyData& A = bodies_[a];
-            BodyData& B = bodies_[b];
-            BodyData* sleeper = (!A.awake && isActive(B)) ? &A : (!B.awake && isActive(A)) ? &B : nullptr;
-            if (!sleeper) continue;
-            if (physim::collide(A.shape, A.xf, B.shape, B.xf).pointCount == 0) continue;
-            sleeper->awake = true;
-            sleeper->sleepTime = 0.0;
-            woke = true;
-        }
-    }
-}
-
-// Islands are the dynamic bodies joined by the last substep's contacts (static and kinematic bodies do not join
-// them). An island sleeps when every body in it has stayed below the speed tolerances for timeToSleep; a body
-// that may not sleep, or a moving kinematic body touching the island, keeps it awake.
-void World::updateSleep() {
-    const std::size_t n = bodies_.size();
-    islandParent_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) islandParent_[i] = i;
-    auto find = [&](std::uint32_t i) {
-        while (islandParent_[i] != i) i = islandParent_[i] = islandParent_[islandParent_[i]];
-        return i;
-    };
-    auto canSleep = [](const BodyData& b) { return b.alive && b.awake && b.type == BodyType::Dynamic; };
-
-    for (BodyData& b : bodies_) {
-        if (!canSleep(b)) continue;
-        const bool still = b.v.norm() <= settings_.sleepLinearTolerance &&
-                           std::abs(b.w) <= settings_.sleepAngularTolerance;
-        b.sleepTime = (b.allowSleep && still) ? b.sleepTime + dt_ : 0.0;
-    }
-    for (const Manifold& m : contacts_) {
-        const std::uint32_t a = m.bodyA.index, b = m.bodyB.index;
-        if (bodies_[a].type == BodyType::Dynamic && bodies_[b].type == BodyType::Dynamic)
-            islandParent_[find(a)] = find(b);
-    }
-    for (const JointData& j : joints_)
-        if (j.alive && bodies_[j.a].type == BodyType::Dynamic && bodies_[j.b].type == BodyType::Dynamic)
-            islandParent_[find(j.a)] = find(j.b);
-    // An island's sleep time is its least rested body's; a moving kinematic body touching it resets it.
-    islandSleepTime_.assign(n, INFINITY);
-    for (std::uint32_t i = 0; i < n; ++i)
-        if (canSleep(bodies_[i])) islandSleepTime_[find(i)] = std::min(islandSleepTime_[find(i)], bodies_[i].sleepTime);
-    for (const Manifold& m : contacts_) {
-        const std::uint32_t a = m.bodyA.index, b = m.bodyB.index;
-        const bool kinematicA = bodies_[a].type == BodyType::Kinematic;
-        const bool kinematicB = bodies_[b].type == BodyType::Kinematic;
-        if (kinematicA && isActive(bodies_[a])) islandSleepTime_[find(b)] = 0.0;
-        if (kinematicB && isActive(bodies_[b])) islandSleepTime_[find(a)] = 0.0;
-    }
-    for (std::uint32_t i = 0; i < n; ++i) {
-        BodyData& b = bodies_[i];
-        if (!canSleep(b) || islandSleepTime_[find(i)] < settings_.timeToSleep) continue;
-        b.awake = false;
-        b.v.setZero();
-        b.w = 0.0;
-    }
-}
-
-// A joint is solved while one of its bodies is awake and can move; a sleeper held by an active body wakes
-// (repeated, so the wake runs along a chain in one step).
-void World::activateJoints() {
-    for (bool woke = true; woke;) {
-        woke = false;
-        for (JointData& j : joints_) {
-            if (!j.alive) continue;
-            BodyData& A = bodies_[j.a];
-            BodyData& B = bodies_[j.b];
-            BodyData* sleeper = (!A.awake && isActive(B)) ? &A : (!B.awake && isActive(A)) ? &B : nullptr;
-            if (!sleeper) continue;
-            sleeper->awake = true;
-            sleeper->sleepTime = 0.0;
-            woke = true;
-        }
-    }
-    for (JointData& j : joints_) j.active = j.alive && (isActive(bodies_[j.a]) || isActive(bodies_[j.b]));
+void World::applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint) {
+    requireFinite("impulse", impulse);
+    requireFinite("impulse application point", worldPoint);
+    BodyData& b = wake(id, "applyLinearImpulseAtPoint");
+    b.v += b.invMass * impulse;
+    b.w += b.invInertia * cross(worldPoint - b.center, impulse);
 }
 
 // --- joints ------------------------------------------------------------------------------------------
 
+namespace {
+
+void linkJoint(WorldImpl& w, std::uint32_t index) {
+    JointData& j = w.joints[index];
+    const std::uint32_t ends[2] = {j.a, j.b};
+    for (int side = j.twoBodies() ? 0 : 1; side < 2; ++side) {
+        BodyData& body = w.bodies[ends[side]];
+        const std::int32_t key = static_cast<std::int32_t>(index) * 2 + side;
+        j.prev[side] = kNullIndex;
+        j.next[side] = body.jointHead;
+        if (body.jointHead != kNullIndex)
+            w.joints[static_cast<std::size_t>(body.jointHead >> 1)].prev[body.jointHead & 1] = key;
+        body.jointHead = key;
+    }
+}
+
+void unlinkJoint(WorldImpl& w, std::uint32_t index) {
+    JointData& j = w.joints[index];
+    const std::uint32_t ends[2] = {j.a, j.b};
+    for (int side = j.twoBodies() ? 0 : 1; side < 2; ++side) {
+        BodyData& body = w.bodies[ends[side]];
+        if (j.prev[side] != kNullIndex)
+            w.joints[static_cast<std::size_t>(j.prev[side] >> 1)].next[j.prev[side] & 1] = j.next[side];
+        else
+            body.jointHead = j.next[side];
+        if (j.next[side] != kNullIndex)
+            w.joints[static_cast<std::size_t>(j.next[side] >> 1)].prev[j.next[side] & 1] = j.prev[side];
+    }
+}
+
+}  // namespace
+
 JointId World::createDistanceJoint(const DistanceJointDef& def) {
     const BodyData& A = at(def.bodyA);
     const BodyData& B = at(def.bodyB);
+    impl_->requireNotStepping("createDistanceJoint");
     if (def.bodyA == def.bodyB) throw std::invalid_argument("physim: a distance joint needs two different bodies");
     if (A.type != BodyType::Dynamic && B.type != BodyType::Dynamic)
         throw std::invalid_argument("physim: a distance joint needs at least one dynamic body");
@@ -495,114 +480,151 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
     if (!(length > 1e-9))
         throw std::invalid_argument("physim: distance joint length must be > 0 m, got " + std::to_string(length));
-    const std::uint32_t index = takeSlot(joints_, jointFreeList_);
-    JointData& j = joints_[index];
+    WorldImpl& w = *impl_;
+    const std::uint32_t index = takeSlot(w.joints, w.freeJoints);
+    JointData& j = w.joints[index];
+    j.kind = JointKind::Distance;
     j.a = def.bodyA.index;
     j.b = def.bodyB.index;
     j.localA = def.localAnchorA;
     j.localB = def.localAnchorB;
     j.length = length;
-    ++jointCount_;
-    wake(def.bodyA);
-    wake(def.bodyB);
+    linkJoint(w, index);
+    ++w.jointCount;
+    w.wakeBody(j.a);
+    w.wakeBody(j.b);
+    if (w.bodies[j.a].type == BodyType::Dynamic && w.bodies[j.b].type == BodyType::Dynamic) w.linkBodies(j.a, j.b);
     return JointId{index, j.generation};
 }
 
+JointId World::createMouseJoint(const MouseJointDef& def) {
+    const BodyData& B = at(def.body);
+    impl_->requireNotStepping("createMouseJoint");
+    if (B.type != BodyType::Dynamic) throw std::invalid_argument("physim: a mouse joint needs a dynamic body");
+    requireFinite("mouse joint target", def.target);
+    requireFinite("mouse joint anchor", def.localAnchor);
+    requirePositive("mouse joint maxForce", def.maxForce);
+    requirePositive("mouse joint hertz", def.hertz);
+    requireNonNegative("mouse joint dampingRatio", def.dampingRatio);
+    WorldImpl& w = *impl_;
+    const std::uint32_t index = takeSlot(w.joints, w.freeJoints);
+    JointData& j = w.joints[index];
+    j.kind = JointKind::Mouse;
+    j.a = j.b = def.body.index;
+    j.localB = def.localAnchor;
+    j.target = def.target;
+    j.maxForce = def.maxForce;
+    j.hertz = def.hertz;
+    j.dampingRatio = def.dampingRatio;
+    linkJoint(w, index);
+    ++w.jointCount;
+    w.wakeBody(j.b);
+    return JointId{index, j.generation};
+}
+
+void World::setMouseJointTarget(JointId id, const Vec2& target) {
+    requireFinite("mouse joint target", target);
+    const JointData& j = joint(id);
+    impl_->requireNotStepping("setMouseJointTarget");
+    if (j.kind != JointKind::Mouse) throw std::invalid_argument("physim: setMouseJointTarget needs a mouse joint");
+    impl_->joints[id.index].target = target;
+    impl_->wakeBody(j.b);
+}
+
 bool World::contains(JointId id) const {
-    return !id.isNull() && id.index < joints_.size() && joints_[id.index].alive &&
-           joints_[id.index].generation == id.generation;
+    const auto& joints = impl_->joints;
+    return !id.isNull() && id.index < joints.size() && joints[id.index].alive &&
+           joints[id.index].generation == id.generation;
 }
 
 const JointData& World::joint(JointId id) const {
     if (!contains(id))
         throw std::invalid_argument("physim: joint id (index " + std::to_string(id.index) +
                                     ") is not a live joint of this world");
-    return joints_[id.index];
+    return impl_->joints[id.index];
 }
 
 void World::destroyJoint(JointId id) {
     const JointData& j = joint(id);
-    bodies_[j.a].awake = bodies_[j.b].awake = true;
-    joints_[id.index].alive = false;
-    jointFreeList_.push_back(id.index);
-    --jointCount_;
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("destroyJoint");
+    w.wakeBody(j.b);
+    if (j.twoBodies()) {
+        w.wakeBody(j.a);
+        if (w.bodies[j.a].type == BodyType::Dynamic && w.bodies[j.b].type == BodyType::Dynamic)
+            w.unlinkBodies(j.a, j.b);
+    }
+    unlinkJoint(w, id.index);
+    w.joints[id.index].alive = false;
+    w.freeJoints.push_back(id.index);
+    --w.jointCount;
 }
 
+std::size_t World::jointCount() const { return impl_->jointCount; }
+JointType World::jointType(JointId id) const {
+    return joint(id).kind == JointKind::Mouse ? JointType::Mouse : JointType::Distance;
+}
 double World::jointLength(JointId id) const { return joint(id).length; }
 
-void World::integrateForces() {
-    runStage(profile_, Stage::Forces, dynamicCount_ > 0,
-             [&] { integrateVelocities(bodies_, settings_.gravity, h_); });
+std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
+    const JointData& j = joint(id);
+    const Vec2 onB = impl_->bodies[j.b].xf.apply(j.localB);
+    if (j.kind == JointKind::Mouse) return {j.target, onB};
+    return {impl_->bodies[j.a].xf.apply(j.localA), onB};
 }
 
-void World::detectAndSolve() {
-    previousContacts_.swap(contacts_);
-    contacts_.clear();
-    pairs_.clear();
-
-    runStage(profile_, Stage::BroadPhase, movableCount_ > 0 && liveCount_ >= 2,
-             [&] { findCandidatePairs(bodies_, pairs_, sweepOrder_); });
-
-    runStage(profile_, Stage::NarrowPhase, !pairs_.empty(), [&] {
-        if (settings_.enableSleep) wakeTouchingSleepers();
-        std::size_t previous = 0;  // both lists are sorted by (a, b): match them in one pass
-        for (const auto& [a, b] : pairs_) {
-            const BodyData& A = bodies_[a];
-            const BodyData& B = bodies_[b];
-            if (!isActive(A) && !isActive(B)) continue;  // asleep against asleep or static: nothing happens
-            Manifold m = physim::collide(A.shape, A.xf, B.shape, B.xf);
-            if (m.pointCount == 0) continue;
-            m.bodyA = BodyId{a, A.generation};
-            m.bodyB = BodyId{b, B.generation};
-            // Warm start: carry the last substep's impulses over to points with the same feature id.
-            while (previous < previousContacts_.size() &&
-                   std::make_pair(previousContacts_[previous].bodyA.index,
-                                  previousContacts_[previous].bodyB.index) < std::make_pair(a, b))
-                ++previous;
-            if (previous < previousContacts_.size() && previousContacts_[previous].bodyA == m.bodyA &&
-                previousContacts_[previous].bodyB == m.bodyB) {
-                const Manifold& old = previousContacts_[previous];
-                for (int i = 0; i < m.pointCount; ++i)
-                    for (int j = 0; j < old.pointCount; ++j)
-                        if (m.points[i].id == old.points[j].id) {
-                            m.points[i].normalImpulse = old.points[j].normalImpulse;
-                            m.points[i].tangentImpulse = old.points[j].tangentImpulse;
-                        }
-            }
-            contacts_.push_back(m);
-        }
-    });
-    profile_.candidatePairs = pairs_.size();
-    profile_.manifolds = contacts_.size();
-
-    runStage(profile_, Stage::Solve, !contacts_.empty() || jointCount_ > 0, [&] {
-        if (jointCount_ > 0) {
-            activateJoints();
-            prepareJoints(bodies_, joints_, h_);
-        }
-        if (!contacts_.empty()) solver_->prepare(bodies_, contacts_, settings_);
-        for (int i = 0; i < settings_.velocityIterations; ++i) {
-            if (jointCount_ > 0) solveJointVelocities(bodies_, joints_);
-            if (!contacts_.empty()) solver_->solveVelocities(bodies_, contacts_);
-        }
-    });
+std::vector<JointId> World::joints() const {
+    std::vector<JointId> ids;
+    for (std::uint32_t i = 0; i < impl_->joints.size(); ++i)
+        if (impl_->joints[i].alive) ids.push_back(JointId{i, impl_->joints[i].generation});
+    return ids;
 }
 
-void World::integrateAndCorrect() {
-    // Continuous detection runs here, after the substep's solve, so the velocities it sweeps are final
-    // (ContinuousStage.hpp); it sweeps this substep's motion, h_.
-    runStage(profile_, Stage::Continuous, continuousCount_ > 0,
-             [&] { continuous_->findImpacts(bodies_, h_, settings_); });
-    runStage(profile_, Stage::Integrate, movableCount_ > 0, [&] {
-        integratePositions(bodies_, h_);
-        if (continuousCount_ > 0) continuous_->placeBodies(bodies_);  // hit bodies end where their impacts left them
-        for (int i = 0; i < settings_.positionIterations; ++i) {
-            if (jointCount_ > 0) correctJointPositions(bodies_, joints_);
-            if (!contacts_.empty())
-                solver_->correctPositions(bodies_, contacts_, settings_,
-                                          continuousCount_ > 0 ? &continuous_->placed() : nullptr);
-        }
-    });
+// --- stepping ----------------------------------------------------------------------------------------
+
+const std::vector<Manifold>& World::contacts() const {
+    WorldImpl& w = *impl_;
+    if (!w.touchingValid) {
+        w.touchingManifolds.clear();
+        for (const std::uint32_t c : w.awakeContacts)
+            if (w.contacts[c].touching) w.touchingManifolds.push_back(w.contacts[c].manifold);
+        std::sort(w.touchingManifolds.begin(), w.touchingManifolds.end(), [](const Manifold& x, const Manifold& y) {
+            return std::make_pair(x.bodyA.index, x.bodyB.index) < std::make_pair(y.bodyA.index, y.bodyB.index);
+        });
+        w.touchingValid = true;
+    }
+    return w.touchingManifolds;
+}
+
+void World::step(double dt) {
+    // Above a second per step is a unit mistake (milliseconds passed as seconds), not a simulation.
+    requireInRange("time step dt (s)", dt, 0.0, 1.0);
+    if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("step");
+    struct SteppingGuard {
+        WorldImpl& w;
+        explicit SteppingGuard(WorldImpl& world) : w(world) { w.stepping = true; }
+        ~SteppingGuard() { w.stepping = false; }
+    } guard(w);
+
+    w.dt = dt;
+    w.profile = StepProfile{};
+    w.events.begin.clear();
+    w.events.end.clear();
+    w.events.impacts.clear();
+    w.touchingValid = false;
+
+    runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2,
+             [&] { w.updatePairs(); });
+    w.profile.candidatePairs = w.awakeContacts.size();
+    runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
+    if (!w.awake.empty()) w.solve();
+    runStage(w.profile, Stage::Continuous, w.continuousCount > 0 && !w.awake.empty(),
+             [&] { w.continuous.run(w); });
+    runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
+    w.profile.manifolds = w.constraints.size();
+    ++w.stepCount;
 }
 
 }  // namespace physim

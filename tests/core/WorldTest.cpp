@@ -162,16 +162,5 @@ TEST(WorldBadInput, NamesTheValueAndLeavesStateUnchanged) {
     EXPECT_EQ(world.stepCount(), 0u);
 }
 
-TEST(WorldPhases, OutOfOrderPhaseIsALogicError) {
-    World world;
-    EXPECT_THROW(world.collide(), std::logic_error);
-    EXPECT_THROW(world.finishStep(), std::logic_error);
-    world.beginStep(0.01);
-    EXPECT_THROW(world.beginStep(0.01), std::logic_error);
-    world.collide();
-    world.finishStep();
-    EXPECT_EQ(world.stepCount(), 1u);
-}
-
 }  // namespace
 }  // namespace physim

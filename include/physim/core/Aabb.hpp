@@ -14,6 +14,11 @@ struct Aabb {
         return lower.x() <= o.upper.x() && o.lower.x() <= upper.x() && lower.y() <= o.upper.y() &&
                o.lower.y() <= upper.y();
     }
+    /// True when `o` lies inside this box (touching the boundary counts as inside).
+    bool contains(const Aabb& o) const {
+        return lower.x() <= o.lower.x() && lower.y() <= o.lower.y() && o.upper.x() <= upper.x() &&
+               o.upper.y() <= upper.y();
+    }
     Vec2 center() const { return 0.5 * (lower + upper); }
     Vec2 extents() const { return 0.5 * (upper - lower); }
     Aabb fattened(double margin) const { return {lower.array() - margin, upper.array() + margin}; }

@@ -28,12 +28,12 @@ struct BodyId {
 
 struct BodyDef {
     BodyType type = BodyType::Dynamic;
-    Vec2 position = Vec2::Zero();      ///< centre of mass, m
+    Vec2 position = Vec2::Zero();      ///< body origin, m (the shape's local coordinates are relative to it)
     double angle = 0.0;                ///< rad, counter-clockwise
     Vec2 velocity = Vec2::Zero();      ///< m/s
     double angularVelocity = 0.0;      ///< rad/s
     Geometry shape = Circle{Vec2::Zero(), 0.5};
-    double density = 1.0;              ///< kg/m^2; mass = density * area (dynamic bodies only)
+    double density = 1.0;              ///< kg/m^2, > 0 for dynamic bodies; mass = density * area
     double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <vector>
 
 namespace physim {
 
@@ -24,6 +25,29 @@ struct Manifold {
     Vec2 normal = Vec2::Zero();
     int pointCount = 0;
     std::array<ContactPoint, 2> points{};
+};
+
+/// Two bodies that started (begin) or stopped (end) touching during the last step. A pair whose bodies are
+/// destroyed ends without an event.
+struct ContactEvent {
+    BodyId bodyA;
+    BodyId bodyB;
+};
+
+/// A collision in the last step: the bodies met approaching faster than WorldSettings::impactSpeedThreshold.
+struct ImpactEvent {
+    BodyId bodyA;
+    BodyId bodyB;
+    Vec2 point = Vec2::Zero();   ///< m, world
+    Vec2 normal = Vec2::Zero();  ///< unit, from A to B
+    double approachSpeed = 0.0;  ///< m/s, normal speed at which they met (> 0)
+};
+
+/// What happened to the contacts in the last step, in a deterministic order (by body index).
+struct ContactEvents {
+    std::vector<ContactEvent> begin;
+    std::vector<ContactEvent> end;
+    std::vector<ImpactEvent> impacts;
 };
 
 }  // namespace physim

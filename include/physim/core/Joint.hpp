@@ -1,6 +1,7 @@
 #pragma once
-// Joints: constraints between two bodies, solved with the contacts. For now the distance joint: a massless
-// rigid rod between an anchor on each body (a pendulum's string held taut, a rope's links).
+// Joints: constraints solved with the contacts. The distance joint is a massless rigid rod between an anchor on
+// each body (a pendulum's string held taut, a rope's links); the mouse joint is a soft spring with a force cap
+// pulling a body's anchor towards a target point (dragging a body with the mouse).
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Math.hpp"
@@ -20,6 +21,8 @@ struct JointId {
     }
 };
 
+enum class JointType { Distance, Mouse };
+
 struct DistanceJointDef {
     BodyId bodyA;
     BodyId bodyB;
@@ -27,6 +30,15 @@ struct DistanceJointDef {
     Vec2 localAnchorB = Vec2::Zero();  ///< m, in B's frame
     /// m, > 0; <= 0 (the default) takes the anchors' distance when the joint is created.
     double length = 0.0;
+};
+
+struct MouseJointDef {
+    BodyId body;                       ///< a dynamic body
+    Vec2 target = Vec2::Zero();        ///< world point the anchor is pulled towards, m
+    Vec2 localAnchor = Vec2::Zero();   ///< grabbed point in the body's frame (origin-relative), m
+    double maxForce = 0.0;             ///< N, > 0: the pull never exceeds it (e.g. 1000 m |g|)
+    double hertz = 5.0;                ///< spring frequency, Hz, > 0
+    double dampingRatio = 0.7;         ///< >= 0; 1 is critical damping
 };
 
 }  // namespace physim

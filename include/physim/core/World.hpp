@@ -1,15 +1,18 @@
 #pragma once
 // The physics world: owns every body's data and steps it. No SFML, no ROOT.
 //
-// One fixed step runs as three phases, so the framework can call the paper's entity hooks between them:
-//   beginStep(dt)  forces -> velocities
-//   collide()      broad phase -> narrow phase -> contact solve
-//   finishStep()   continuous (time of impact, after the solve) -> velocities -> positions, position
-//                  correction, sleep
-// step(dt) runs all three. Each phase skips the stages the world's content does not call for.
-// With settings().substeps = n > 1 every phase's work is done n times with dt / n: beginStep applies the
-// first substep's forces, collide runs substeps 1 .. n-1 whole and the last one up to its solve, and
-// finishStep moves the bodies by the last substep (docs/dynamics.md says why substeps).
+// One step, World::step(dt), runs the stages in this order, each skipped when the world's content does not call
+// for it (profile() tells which ran):
+//   BroadPhase   proxies that left their enlarged boxes find new candidate pairs; new pairs become contacts
+//   NarrowPhase  every awake contact's manifold, found once per step with a speculative margin; touching begins
+//                and ends (contactEvents()), touched sleepers wake
+//   Forces       gravity and accumulated forces become accelerations for the step
+//   Solve        the soft step (docs/architecture.md): `substeps` times integrate, warm start, solve, integrate
+//   Integrate    positions, relax; then restitution; poses and boxes updated
+//   Continuous   time of impact for fast bodies (docs/ccd.md)
+//   Sleep        islands at rest stop being simulated
+// Forces and impulses added between steps act in the next step. Changing the world from inside its step (from a
+// continuous solver, say) is refused with std::logic_error naming the call.
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
@@ -25,10 +28,9 @@
 
 namespace physim {
 
-struct BodyData;       // internal storage, src/core/BodyData.hpp
-struct JointData;      // internal, src/core/DistanceJoint.hpp
-class ContactSolver;  // internal, src/core/ContactSolver.hpp
-class ContinuousStage;  // internal, src/core/ContinuousStage.hpp
+struct WorldImpl;        // internal, src/core/WorldImpl.hpp
+struct BodyData;
+struct JointData;
 class ContinuousSolver;  // physim/core/ContinuousBatch.hpp
 
 class World {
@@ -50,10 +52,20 @@ public:
     BodyType type(BodyId id) const;
     const Geometry& shape(BodyId id) const;
     Transform transform(BodyId id) const;
+    /// The body origin, m (the point its shape's coordinates are relative to).
     Vec2 position(BodyId id) const;
     double angle(BodyId id) const;
+    /// World centre of mass, m: the point the body rotates about.
+    Vec2 centerOfMass(BodyId id) const;
+    /// Centre of mass in the body frame, m (the shape's centroid).
+    Vec2 localCenterOfMass(BodyId id) const;
+    /// Velocity of the centre of mass, m/s.
     Vec2 velocity(BodyId id) const;
+    /// Velocity of a world point (m) fixed to the body, m/s.
+    Vec2 velocityAt(BodyId id, const Vec2& worldPoint) const;
     double angularVelocity(BodyId id) const;
+    /// World bounding box of the body's shape at its pose, m.
+    Aabb bounds(BodyId id) const;
     double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
     double inverseMass(BodyId id) const;  ///< 1/kg; 0 when immovable
     double inertia(BodyId id) const;      ///< kg m^2 about the centre of mass; 0 when it cannot rotate
@@ -77,8 +89,10 @@ public:
     /// false: the body never sleeps, and neither does any island it touches. Wakes it.
     void setAllowSleep(BodyId id, bool allowSleep);
     bool allowSleep(BodyId id) const;
-    /// Changes a body's type. Becoming static or kinematic stops it and makes it immovable by contacts;
-    /// becoming dynamic gives it the mass of its shape at its density.
+    /// Changes a body's type. Becoming static stops it; static and kinematic bodies are immovable by contacts;
+    /// becoming dynamic gives it the mass of its shape at its density (throws std::invalid_argument naming the
+    /// density when that is not a positive finite mass, e.g. a body made with density 0). A value outside the enum
+    /// is refused.
     void setType(BodyId id, BodyType type);
     /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
     void setMass(BodyId id, double mass);
@@ -98,77 +112,61 @@ public:
     void setContinuousSolver(std::shared_ptr<ContinuousSolver> solver);
     const std::shared_ptr<ContinuousSolver>& continuousSolver() const;
 
-    /// Force (N) at the centre of mass, accumulated until the end of the current step.
+    /// Force (N) at the centre of mass, accumulated until the next step, which applies it and clears it.
     void applyForce(BodyId id, const Vec2& force);
     /// Force (N) applied at a world point (m): also adds the torque r x F.
     void applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint);
     void applyTorque(BodyId id, double torque);
     /// Instant change of momentum (N s) at the centre of mass.
     void applyLinearImpulse(BodyId id, const Vec2& impulse);
+    /// Instant change of momentum (N s) at a world point (m): also changes the angular velocity.
+    void applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint);
 
     // --- joints -------------------------------------------------------------------------------------
     /// A rigid rod between two anchors. Throws std::invalid_argument for an unknown or repeated body, two
     /// immovable bodies, non-finite anchors or length, or a zero length. Destroying either body removes it.
     JointId createDistanceJoint(const DistanceJointDef& def);
+    /// A soft spring pulling an anchor of a dynamic body towards a target point, its force capped at maxForce
+    /// (dragging with the mouse). Throws std::invalid_argument naming a bad value.
+    JointId createMouseJoint(const MouseJointDef& def);
+    /// Moves a mouse joint's target (m); wakes its body.
+    void setMouseJointTarget(JointId id, const Vec2& target);
     void destroyJoint(JointId id);
     bool contains(JointId id) const;
-    std::size_t jointCount() const { return jointCount_; }
-    /// The joint's rod length, m.
+    std::size_t jointCount() const;
+    JointType jointType(JointId id) const;
+    /// The joint's rod length, m (distance joints).
     double jointLength(JointId id) const;
+    /// The joint's anchors in world coordinates, m (a mouse joint's first anchor is its target).
+    std::pair<Vec2, Vec2> jointAnchors(JointId id) const;
+    /// The joints in creation-slot order (for drawing and inspection).
+    std::vector<JointId> joints() const;
 
     // --- stepping -----------------------------------------------------------------------------------
+    /// Advances the world by dt seconds, in (0, 1]: larger steps are a unit mistake (milliseconds as seconds).
     void step(double dt);
-    void beginStep(double dt);
-    void collide();
-    void finishStep();
 
-    const std::vector<Manifold>& contacts() const { return contacts_; }
-    const StepProfile& profile() const { return profile_; }
-    const WorldSettings& settings() const { return settings_; }
+    /// The touching contacts of awake bodies after the last step (a sleeping pile's contacts are not listed).
+    /// Points may lie slightly apart (positive separation): a contact touches within the speculative distance.
+    const std::vector<Manifold>& contacts() const;
+    /// Contacts that began and ended touching, and impacts, during the last step.
+    const ContactEvents& contactEvents() const;
+    const StepProfile& profile() const;
+    const WorldSettings& settings() const;
+    /// Validates (std::invalid_argument naming the field) and applies the settings.
     void setSettings(const WorldSettings& settings);
     /// Number of completed steps.
-    std::uint64_t stepCount() const { return stepCount_; }
+    std::uint64_t stepCount() const;
+    /// Bodies currently simulated (awake dynamic and kinematic bodies).
+    std::size_t awakeBodyCount() const;
 
 private:
-    enum class Phase { Idle, Forces, Collided };
-
-    BodyData& at(BodyId id);
     const BodyData& at(BodyId id) const;
-    BodyData& requireDynamic(BodyId id, const char* what);
-    BodyData& wake(BodyId id);  // at(id), woken: used by every setter that changes a body's motion
-    void wakeTouchingSleepers();
-    void activateJoints();
+    BodyData& mutableBody(BodyId id, const char* call);  // checked, not during the step
+    BodyData& wake(BodyId id, const char* call);         // mutableBody, and its island woken
     const JointData& joint(JointId id) const;
-    static bool isActive(const BodyData& b);
-    void updateSleep();
-    // One substep's parts (settings_.substeps of them per step, each of h_ seconds).
-    void integrateForces();
-    void detectAndSolve();
-    void integrateAndCorrect();
 
-    WorldSettings settings_;
-    std::vector<BodyData> bodies_;            // slot per index; dead slots are on freeList_
-    std::vector<std::uint32_t> freeList_;
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  // broad-phase output: slot index pairs
-    std::vector<std::uint32_t> sweepOrder_;
-    std::vector<std::uint32_t> islandParent_;  // sleep stage scratch: union-find over touching bodies
-    std::vector<double> islandSleepTime_;   // broad-phase scratch, kept to avoid per-step allocation
-    std::vector<Manifold> contacts_;
-    std::vector<Manifold> previousContacts_;  // for warm starting
-    std::unique_ptr<ContactSolver> solver_;
-    std::vector<JointData> joints_;          // slot per index; dead slots are on jointFreeList_
-    std::vector<std::uint32_t> jointFreeList_;
-    std::size_t jointCount_ = 0;
-    std::unique_ptr<ContinuousStage> continuous_;
-    StepProfile profile_;
-    std::size_t liveCount_ = 0;
-    std::size_t movableCount_ = 0;  // dynamic + kinematic
-    std::size_t dynamicCount_ = 0;
-    std::size_t continuousCount_ = 0;  // bodies whose detection is not Discrete
-    Phase phase_ = Phase::Idle;
-    double dt_ = 0.0;
-    double h_ = 0.0;  // substep, s
-    std::uint64_t stepCount_ = 0;
+    std::unique_ptr<WorldImpl> impl_;
 };
 
 }  // namespace physim

@@ -1,0 +1,33 @@
+#pragma once
+// Persistent contacts: one record per pair of bodies whose enlarged boxes overlap. Internal.
+//
+// The broad phase creates a record when two proxies start to overlap and the narrow phase destroys it when they
+// no longer do. In between, the record keeps its manifold (points keyed by feature id, with their impulses) from
+// step to step, so warm starting carries over and begin / end events are exact.
+
+#include "BodyData.hpp"
+
+#include "physim/core/Contact.hpp"
+
+#include <cstdint>
+
+namespace physim {
+
+struct ContactData {
+    std::uint32_t a = 0, b = 0;     // body slots, a < b; the manifold's normal points from a to b
+    Manifold manifold;
+    // Intrusive lists through each body's contacts: side 0 is in a's list, side 1 in b's.
+    std::int32_t prev[2] = {kNullIndex, kNullIndex};
+    std::int32_t next[2] = {kNullIndex, kNullIndex};
+    std::int32_t awakeIndex = kNullIndex;  // position in World's awake contact list; kNullIndex while both sleep
+    std::uint32_t generation = 0;
+    bool alive = false;
+    bool touching = false;          // a manifold point within the speculative distance (islands, events)
+};
+
+/// Contact begin / end events of one step, by pair of bodies.
+struct ContactPair {
+    std::uint32_t a = 0, b = 0;
+};
+
+}  // namespace physim

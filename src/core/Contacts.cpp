@@ -1,0 +1,173 @@
+// Persistent contacts: created from the broad phase's new pairs, updated once per step by the narrow phase,
+// destroyed when their bodies' enlarged boxes part.
+
+#include "Manifolds.hpp"
+#include "Slots.hpp"
+#include "WorldImpl.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace physim {
+namespace {
+
+enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4 };
+
+// At least one body must be able to respond; two immovable bodies never make a contact.
+bool shouldCollide(const BodyData& a, const BodyData& b) {
+    return a.type == BodyType::Dynamic || b.type == BodyType::Dynamic;
+}
+
+// How far (m) the pair can close in a step at its present velocities, plus what gravity or forces add: the
+// manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact.
+double reach(const BodyData& A, const BodyData& B, double dt) {
+    const double turn = std::abs(A.w) * A.extent + std::abs(B.w) * B.extent;
+    return ((B.v - A.v).norm() + turn) * dt;
+}
+
+}  // namespace
+
+bool WorldImpl::contactExists(std::uint32_t a, std::uint32_t b) const {
+    // Walk the shorter of the two bodies' contact lists.
+    const bool fromA = bodies[a].contactCount <= bodies[b].contactCount;
+    const std::uint32_t self = fromA ? a : b, other = fromA ? b : a;
+    for (std::int32_t e = bodies[self].contactHead; e != kNullIndex;) {
+        const ContactData& c = contacts[static_cast<std::size_t>(e >> 1)];
+        const int side = e & 1;
+        if ((side == 0 ? c.b : c.a) == other) return true;
+        e = c.next[side];
+    }
+    return false;
+}
+
+void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
+    const std::uint32_t index = takeSlot(contacts, freeContacts);
+    ContactData& c = contacts[index];
+    c.a = a;
+    c.b = b;
+    c.manifold.bodyA = BodyId{a, bodies[a].generation};
+    c.manifold.bodyB = BodyId{b, bodies[b].generation};
+    const std::uint32_t ends[2] = {a, b};
+    for (int side = 0; side < 2; ++side) {
+        BodyData& body = bodies[ends[side]];
+        const std::int32_t key = static_cast<std::int32_t>(index) * 2 + side;
+        c.prev[side] = kNullIndex;
+        c.next[side] = body.contactHead;
+        if (body.contactHead != kNullIndex) {
+            ContactData& head = contacts[static_cast<std::size_t>(body.contactHead >> 1)];
+            head.prev[body.contactHead & 1] = key;
+        }
+        body.contactHead = key;
+        ++body.contactCount;
+    }
+    if (bodies[a].awake() || bodies[b].awake()) addAwakeContact(index);
+}
+
+void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
+    ContactData& c = contacts[index];
+    const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
+    if (c.touching && dynamicPair) unlinkBodies(c.a, c.b);
+    if (c.awakeIndex != kNullIndex) removeAwakeContact(index);
+    const std::uint32_t ends[2] = {c.a, c.b};
+    for (int side = 0; side < 2; ++side) {
+        BodyData& body = bodies[ends[side]];
+        if (c.prev[side] != kNullIndex)
+            contacts[static_cast<std::size_t>(c.prev[side] >> 1)].next[c.prev[side] & 1] = c.next[side];
+        else
+            body.contactHead = c.next[side];
+        if (c.next[side] != kNullIndex)
+            contacts[static_cast<std::size_t>(c.next[side] >> 1)].prev[c.next[side] & 1] = c.prev[side];
+        --body.contactCount;
+    }
+    if (wakeBodies) {
+        wakeBody(c.a);
+        wakeBody(c.b);
+    }
+    c.alive = false;
+    freeContacts.push_back(index);
+}
+
+void WorldImpl::addAwakeContact(std::uint32_t index) {
+    contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
+    awakeContacts.push_back(index);
+}
+
+void WorldImpl::removeAwakeContact(std::uint32_t index) {
+    const std::int32_t at = contacts[index].awakeIndex;
+    const std::uint32_t last = awakeContacts.back();
+    awakeContacts[static_cast<std::size_t>(at)] = last;
+    contacts[last].awakeIndex = at;
+    awakeContacts.pop_back();
+    contacts[index].awakeIndex = kNullIndex;
+}
+
+void WorldImpl::updatePairs() {
+    broadPhase.findNewPairs(newPairs, executor);
+    for (const auto& [a, b] : newPairs)
+        if (shouldCollide(bodies[a], bodies[b]) && !contactExists(a, b)) createContact(a, b);
+}
+
+void WorldImpl::updateContacts() {
+    const double speculative = 4.0 * settings.linearSlop;
+    const std::size_t n = awakeContacts.size();
+    contactFlags.assign(n, kNone);
+    executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t i = begin; i < end; ++i) {
+            ContactData& c = contacts[awakeContacts[i]];
+            const BodyData& A = bodies[c.a];
+            const BodyData& B = bodies[c.b];
+            if (!broadPhase.fatBox(A.proxy).overlaps(broadPhase.fatBox(B.proxy))) {
+                contactFlags[i] = kParted;
+                continue;
+            }
+            const Manifold old = c.manifold;
+            const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, speculative + reach(A, B, dt));
+            Manifold& m = c.manifold;
+            m.normal = r.manifold.normal;
+            m.pointCount = 0;
+            bool touching = false;
+            for (int p = 0; p < r.manifold.pointCount; ++p) {
+                ContactPoint cp = r.manifold.points[p];
+                // Keep a speculative point only if the pair approaches there fast enough to close it this step.
+                const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
+                const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
+                if (cp.separation > speculative + std::max(0.0, -vn) * dt) continue;
+                touching = touching || cp.separation < speculative;
+                cp.normalImpulse = cp.tangentImpulse = 0.0;
+                for (int q = 0; q < old.pointCount; ++q)
+                    if (old.points[q].id == cp.id) {
+                        cp.normalImpulse = old.points[q].normalImpulse;
+                        cp.tangentImpulse = old.points[q].tangentImpulse;
+                    }
+                m.points[m.pointCount++] = cp;
+            }
+            if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
+            c.touching = touching;
+        }
+    });
+
+    // Changes in a fixed order (the awake list's), serially: they link islands, wake sleepers and destroy.
+    changedContacts.clear();
+    for (std::size_t i = 0; i < n; ++i)
+        if (contactFlags[i] != kNone) changedContacts.emplace_back(awakeContacts[i], contactFlags[i]);
+    for (const auto& [index, flag] : changedContacts) {
+        ContactData& c = contacts[index];
+        const ContactEvent event{c.manifold.bodyA, c.manifold.bodyB};
+        const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
+        if (flag == kParted) {
+            if (c.touching) events.end.push_back(event);
+            destroyContact(index, false);
+        } else if (flag == kBegan) {
+            events.begin.push_back(event);
+            if (dynamicPair) linkBodies(c.a, c.b);
+            // Touching a sleeper wakes its island (its contacts join the awake list for the next step).
+            if (!bodies[c.a].awake() && bodies[c.a].type == BodyType::Dynamic) wakeBody(c.a);
+            if (!bodies[c.b].awake() && bodies[c.b].type == BodyType::Dynamic) wakeBody(c.b);
+        } else if (flag == kEnded) {
+            events.end.push_back(event);
+            if (dynamicPair) unlinkBodies(c.a, c.b);
+        }
+    }
+}
+
+}  // namespace physim

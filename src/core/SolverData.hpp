@@ -1,0 +1,52 @@
+#pragma once
+// The solver's view of the awake bodies for one step, laid out for its loops. Internal.
+//
+// Index i of each array is the i-th awake body (World::awake_[i]). Constraints name bodies by that index;
+// kNullIndex stands for a static body, whose state is all zero (it never moves).
+
+#include "BodyData.hpp"
+
+#include "physim/core/Math.hpp"
+
+#include <cstdint>
+
+namespace physim {
+
+/// What every constraint pass reads and writes: 64 bytes, one cache line.
+struct SolverBody {
+    Vec2 v = Vec2::Zero();    // velocity of the centre of mass, m/s
+    double w = 0.0;           // rad/s
+    double dAngle = 0.0;      // rad turned since the step began (exact sum; dq caches its rotation)
+    Vec2 dp = Vec2::Zero();   // centre-of-mass displacement since the step began, m
+    Rotation dq{};            // rotation since the step began
+};
+
+/// Read by integration and finalization only.
+struct SolverBodySim {
+    Vec2 center0 = Vec2::Zero();   // centre of mass at the step's start, m
+    Rotation q0{};                 // rotation at the step's start
+    double angle0 = 0.0;           // rad
+    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces, constant over the step
+    double angularAcceleration = 0.0;  // rad/s^2
+    double invInertia = 0.0;
+    std::uint32_t body = 0;        // slot in World::bodies_
+    bool dynamic = false;
+};
+
+/// Small-angle rotation by theta (rad): a Taylor series accurate to rounding for |theta| <= 0.5 (error below
+/// theta^11 / 11!), and the library functions beyond. Substeps turn bodies by far less than that, so the step
+/// pays for a few multiplications instead of a sine and a cosine per body per substep.
+inline Rotation rotationBy(double theta) {
+    if (!(std::abs(theta) <= 0.5)) return Rotation::fromAngle(theta);
+    const double t2 = theta * theta;
+    const double s = theta * (1.0 - t2 / 6.0 * (1.0 - t2 / 20.0 * (1.0 - t2 / 42.0 * (1.0 - t2 / 72.0 * (1.0 - t2 / 110.0)))));
+    const double c = 1.0 - t2 / 2.0 * (1.0 - t2 / 12.0 * (1.0 - t2 / 30.0 * (1.0 - t2 / 56.0 * (1.0 - t2 / 90.0))));
+    return {c, s};
+}
+
+/// q1 * q2: rotation by q2, then by q1.
+inline Rotation compose(const Rotation& q1, const Rotation& q2) {
+    return {q1.c * q2.c - q1.s * q2.s, q1.s * q2.c + q1.c * q2.s};
+}
+
+}  // namespace physim

@@ -1,0 +1,129 @@
+#pragma once
+// Everything a World holds, as plain data shared by the step's stages (one file each). Internal.
+//
+//   World.cpp          the public API: bodies, joints, settings, step()
+//   BroadPhase.cpp     dynamic trees, new candidate pairs
+//   Contacts.cpp       persistent contacts: creation, the narrow-phase update, begin / end
+//   Islands.cpp        persistent islands: merging, splitting, sleeping and waking
+//   Solver.cpp         the soft step: gather, colour, substeps, restitution, finalize
+//   ContactSolver.cpp  the contact constraint rows
+//   Joints.cpp         the joint rows (distance, mouse)
+//   ContinuousStage.cpp time of impact for fast bodies
+
+#include "BodyData.hpp"
+#include "BroadPhase.hpp"
+#include "ContactData.hpp"
+#include "ContactSolver.hpp"
+#include "ContinuousStage.hpp"
+#include "Executor.hpp"
+#include "IslandData.hpp"
+#include "JointData.hpp"
+#include "SolverData.hpp"
+
+#include "physim/core/Contact.hpp"
+#include "physim/core/StepProfile.hpp"
+#include "physim/core/WorldSettings.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace physim {
+
+class ContinuousSolver;
+
+/// Margin (m) by which a proxy's box exceeds its body's box, so small motions never touch the broad phase.
+constexpr double kAabbMargin = 0.1;
+
+struct WorldImpl {
+    WorldSettings settings;
+    Executor executor;
+
+    // Bodies: one slot per id; freed slots are reused (their generation makes old ids stale).
+    std::vector<BodyData> bodies;
+    std::vector<std::uint32_t> freeBodies;
+    std::size_t liveCount = 0;
+    std::size_t dynamicCount = 0;
+    std::size_t continuousCount = 0;  // bodies whose detection is not Discrete
+    std::vector<std::uint32_t> awake;   // awake movable bodies (dynamic and kinematic): the solver's bodies
+
+    // Contacts: one slot per overlapping pair of proxies.
+    std::vector<ContactData> contacts;
+    std::vector<std::uint32_t> freeContacts;
+    std::vector<std::uint32_t> awakeContacts;  // contacts with an awake body: the narrow phase's work list
+
+    // Joints and islands.
+    std::vector<JointData> joints;
+    std::vector<std::uint32_t> freeJoints;
+    std::size_t jointCount = 0;
+    std::vector<IslandData> islands;
+    std::vector<std::uint32_t> freeIslands;
+
+    BroadPhase broadPhase;
+    ContinuousStage continuous;
+
+    // Step scratch, kept between steps so a running scene allocates nothing.
+    std::vector<BodyPair> newPairs;
+    std::vector<std::uint8_t> contactFlags;      // per awake contact: what the narrow phase found changed
+    std::vector<std::pair<std::uint32_t, std::uint8_t>> changedContacts;
+    std::vector<SolverBody> states;              // per awake body
+    std::vector<SolverBodySim> sims;
+    std::vector<ContactConstraint> constraints;  // colour by colour
+    std::vector<std::uint32_t> colourStart;      // constraints of colour c: [colourStart[c], colourStart[c + 1])
+    std::vector<std::uint32_t> colourFill;
+    std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
+    std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
+    std::vector<JointConstraint> jointConstraints;
+    std::vector<std::uint8_t> enlarged;          // per awake body: its proxy must move
+    std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
+    std::vector<std::uint32_t> splitStack;
+    std::vector<std::uint32_t> splitMembers;
+    std::vector<std::uint32_t> sleepy;           // islands ready to sleep this step
+
+    StepProfile profile;
+    ContactEvents events;
+    mutable std::vector<Manifold> touchingManifolds;  // contacts()' answer, built on demand
+    mutable bool touchingValid = false;
+    double dt = 0.0;
+    bool stepping = false;
+    std::uint64_t stepCount = 0;
+
+    // --- helpers shared by the stages (defined in the file of their concern) ----------------------------
+    BodyData& body(std::uint32_t slot) { return bodies[slot]; }
+
+    // World.cpp
+    void requireNotStepping(const char* call) const;
+    /// The box a proxy needs at the body's pose and velocity (the next step's motion and turn), grown by margin.
+    Aabb proxyBox(const BodyData& b, double margin) const;
+    bool proxyOutgrown(const BodyData& b) const { return !broadPhase.fatBox(b.proxy).contains(proxyBox(b, 0.0)); }
+    void moveProxy(const BodyData& b) { broadPhase.moveProxy(b.proxy, proxyBox(b, kAabbMargin)); }
+
+    // Contacts.cpp
+    void createContact(std::uint32_t a, std::uint32_t b);
+    void destroyContact(std::uint32_t contact, bool wakeBodies);
+    bool contactExists(std::uint32_t a, std::uint32_t b) const;
+    void updatePairs();      // broad phase's new pairs become contacts
+    void updateContacts();   // the narrow phase over the awake contacts
+    void addAwakeContact(std::uint32_t contact);
+    void removeAwakeContact(std::uint32_t contact);
+
+    // Islands.cpp
+    void createIsland(std::uint32_t bodySlot);
+    void removeFromIsland(std::uint32_t bodySlot);
+    void linkBodies(std::uint32_t a, std::uint32_t b);    // a constraint began between two dynamic bodies
+    void unlinkBodies(std::uint32_t a, std::uint32_t b);  // a constraint between them ended
+    void wakeBody(std::uint32_t slot);                     // wakes its island (or the body, if it has none)
+    void wakeIsland(std::uint32_t island);
+    void addAwakeBody(std::uint32_t slot);
+    void removeAwakeBody(std::uint32_t slot);
+    void rebuildIslands();   // from the touching contacts and joints (sleep turned on)
+    void updateSleep();      // the Sleep stage
+    void splitIsland(std::uint32_t island);
+    void sleepIsland(std::uint32_t island);
+
+    // Solver.cpp
+    void solve();            // the Forces, Solve and Integrate stages
+};
+
+}  // namespace physim
