@@ -54,7 +54,7 @@ void run(benchmark::State& state, Build build) {
     state.counters["bodies"] = static_cast<double>(w.bodyCount());
     state.counters["substeps"] = s.substeps;
     state.counters["velocity_iterations"] = s.velocityIterations;
-    state.counters["position_iterations"] = s.positionIterations;
+    state.counters["relax_iterations"] = s.relaxIterations;
 }
 
 void BM_Pyramid(benchmark::State& state) {

@@ -17,7 +17,8 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
     return {omega / a1, a2 * a3, a3};
 }
 
-void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies) {
+void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
+                    const Vec2& gravity) {
     const BodyData& A = bodies[contact.a];
     const BodyData& B = bodies[contact.b];
     const Manifold& m = contact.manifold;
@@ -36,6 +37,11 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.dynamicFriction = 0.5 * (A.dynamicFriction + B.dynamicFriction);
     c.normal = m.normal;
     c.pointCount = m.pointCount;
+    auto acceleration = [&](const BodyData& b, bool moves) -> Vec2 {
+        return moves ? Vec2((b.useGravity ? gravity : Vec2::Zero()) + b.invMass * b.force) : Vec2::Zero();
+    };
+    c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
+    c.bouncePending = false;
     c.tangentImpulse = 0.0;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();
     for (int i = 0; i < m.pointCount; ++i) {
@@ -49,6 +55,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         cp.normalMass = massAlong(c, cp.anchorA, cp.anchorB, c.normal);
         cp.relativeVelocity = 0.0;
         cp.engaged = false;
+        cp.bouncePending = false;
         c.tangentImpulse += mp.tangentImpulse;
         sumA += cp.anchorA;
         sumB += cp.anchorB;
@@ -88,19 +95,43 @@ void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverB
     }
 }
 
-void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
-                   const Softness& softness, double maxPushVelocity) {
+namespace {
+
+// Called when a point first pushes in the step: remember how it met, and whether it bounces. The bounce waits for
+// the end of the substep (applyBounces), after the relax pass, which would otherwise undo it.
+void engage(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double s, bool inRelax, double threshold,
+            bool& anyBounce) {
+    cp.engaged = true;
+    cp.relativeVelocity = vn;
+    cp.engageSeparation = std::max(s, 0.0);
+    cp.engagedInRelax = inRelax;
+    // Perfectly elastic points bounce at any speed; below e = 1 the threshold keeps resting contacts quiet.
+    const double limit = c.restitution < 1.0 ? -threshold : 0.0;
+    if (c.restitution > 0.0 && vn < limit) {
+        cp.bouncePending = true;
+        c.bouncePending = true;
+        anyBounce = true;
+    }
+}
+
+}  // namespace
+
+bool solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
+                   const Softness& softness, double maxPushVelocity, double restitutionThreshold) {
+    bool anyBounce = false;
     for (ContactConstraint* c = begin; c != end; ++c) {
         MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
         const Vec2 n = c->normal;
         const Vec2 dp = B.dp - A.dp;
         double totalNormal = 0.0;
         double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0}, vn[2] = {0.0, 0.0};
+        double sep[2] = {0.0, 0.0};
         for (int i = 0; i < c->pointCount; ++i) {
             ContactConstraintPoint& cp = c->points[i];
             // Separation now: the start's, moved by the bodies' displacement and turn since the step began.
             const Vec2 prA = A.dq.apply(cp.anchorA), prB = B.dq.apply(cp.anchorB);
             const double s = n.dot(dp + prB - prA) + cp.baseSeparation;
+            sep[i] = s;
             if (s > 0.0) {
                 bias[i] = s * invH;  // speculative: close the gap in this substep, no further
             } else if (useBias) {
@@ -133,10 +164,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
             const double totals[2] = {n1, n2};
             for (int i = 0; i < 2; ++i) {
                 ContactConstraintPoint& cp = c->points[i];
-                if (totals[i] > 0.0 && !cp.engaged) {
-                    cp.engaged = true;
-                    cp.relativeVelocity = vn[i];
-                }
+                if (totals[i] > 0.0 && !cp.engaged) engage(*c, cp, vn[i], sep[i], !useBias, restitutionThreshold, anyBounce);
                 applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (totals[i] - cp.normalImpulse) * n);
                 cp.normalImpulse = totals[i];
                 cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, totals[i]);
@@ -148,10 +176,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
             const double vni = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
             const double lambda = -cp.normalMass * massScale[i] * (vni + bias[i]) - impulseScale[i] * cp.normalImpulse;
             const double total = std::max(cp.normalImpulse + lambda, 0.0);
-            if (total > 0.0 && !cp.engaged) {
-                cp.engaged = true;
-                cp.relativeVelocity = vni;
-            }
+            if (total > 0.0 && !cp.engaged) engage(*c, cp, vni, sep[i], !useBias, restitutionThreshold, anyBounce);
             applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
             cp.normalImpulse = total;
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, total);
@@ -171,31 +196,47 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
         storeSide(states, c->indexA, c->invMassA, A);
         storeSide(states, c->indexB, c->invMassB, B);
     }
+    return anyBounce;
 }
 
-void applyRestitution(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double threshold) {
+void applyBounces(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double h) {
     for (ContactConstraint* c = begin; c != end; ++c) {
-        const double e = c->restitution;
-        if (e == 0.0) continue;
+        if (!c->bouncePending) continue;
+        c->bouncePending = false;
         MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
         const Vec2 n = c->normal;
-        bool changed = false;
+        const double e = c->restitution;
         for (int i = 0; i < c->pointCount; ++i) {
             ContactConstraintPoint& cp = c->points[i];
-            // Perfectly elastic points bounce at any speed; below e = 1 the threshold keeps resting contacts quiet.
-            const double limit = e < 1.0 ? -threshold : 0.0;
-            if (!cp.engaged || !(cp.relativeVelocity < limit) || cp.maxNormalImpulse == 0.0) continue;
+            if (!cp.bouncePending) continue;
+            cp.bouncePending = false;
+            // Leave at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall
+            // exactly (no energy gained or lost). Met in the solve pass: the speculative row stopped the bodies at
+            // contact a fraction of the substep early; moving them apart by e times the gap they had at the
+            // substep's start makes the substep a reflection. Met in the relax pass (the positions already moved):
+            // the reflection of the next substep's fall is the speed before that substep's gravity.
+            const double speed = -cp.relativeVelocity - (cp.engagedInRelax ? h * c->normalAcceleration : 0.0);
             const double vn = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
-            const double lambda = -cp.normalMass * (vn + e * cp.relativeVelocity);
-            const double total = std::max(cp.normalImpulse + lambda, 0.0);
-            applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
-            cp.normalImpulse = total;
-            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, total);
-            changed = true;
+            const double impulse = cp.normalMass * (e * speed - vn);
+            if (impulse > 0.0) {
+                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, impulse * n);
+                cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
+            }
+            const double shift = cp.engagedInRelax ? 0.0 : e * cp.engageSeparation * cp.normalMass;  // kg m
+            if (shift > 0.0) {
+                const Vec2 rA = A.dq.apply(cp.anchorA), rB = B.dq.apply(cp.anchorB);
+                const Vec2 P = shift * n;
+                A.dp -= c->invMassA * P;
+                B.dp += c->invMassB * P;
+                const double turnA = -c->invIA * cross(rA, P), turnB = c->invIB * cross(rB, P);
+                A.dq = compose(rotationBy(turnA), A.dq);
+                B.dq = compose(rotationBy(turnB), B.dq);
+                A.dAngle += turnA;
+                B.dAngle += turnB;
+            }
         }
-        if (!changed) continue;
-        storeSide(states, c->indexA, c->invMassA, A);
-        storeSide(states, c->indexB, c->invMassB, B);
+        storeSideWithPose(states, c->indexA, c->invMassA, A);
+        storeSideWithPose(states, c->indexB, c->invMassB, B);
     }
 }
 

@@ -9,8 +9,9 @@
 //     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
 //     bodies would close the gap within the substep, and then stop them exactly at contact;
 //   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
-// After the last substep one restitution pass sets each bouncing point's normal speed to e times the speed at
-// which it met (recorded when the point first pushed in the step).
+// A point that meets its partner faster than the restitution threshold bounces at the end of that substep, after
+// the relax pass: its normal speed becomes e times the meeting speed, and the bodies move apart by e times the gap
+// the speculative row closed early, so an elastic bounce is an exact reflection.
 // Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses:
 // static while the impulse that stops sliding is within mu_s times that sum, else clamped to mu_d times it. In
 // 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row
@@ -43,7 +44,10 @@ struct ContactConstraintPoint {
     double maxNormalImpulse = 0.0;
     double normalMass = 0.0;      // kg
     double relativeVelocity = 0.0;  // m/s along the normal when the point first pushed in this step
+    double engageSeparation = 0.0;  // m, the gap it had then (a speculative point stopped short of it)
     bool engaged = false;
+    bool engagedInRelax = false;
+    bool bouncePending = false;
 };
 
 struct ContactConstraint {
@@ -52,21 +56,26 @@ struct ContactConstraint {
     Vec2 normal = Vec2::Zero();
     double invMassA = 0.0, invIA = 0.0, invMassB = 0.0, invIB = 0.0;
     double staticFriction = 0.0, dynamicFriction = 0.0, restitution = 0.0;
+    double normalAcceleration = 0.0;  // m/s^2, B's minus A's along the normal from gravity and forces
     Vec2 frictionAnchorA = Vec2::Zero(), frictionAnchorB = Vec2::Zero();
     double tangentMass = 0.0;
     double tangentImpulse = 0.0;
     int pointCount = 0;
+    bool bouncePending = false;
     ContactConstraintPoint points[2];
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
 };
 
 /// Fills c from its contact's manifold and the bodies' records (lever arms at the centres of mass).
-void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies);
+void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
+                    const Vec2& gravity);
 void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states);
-/// One pass. useBias: push out overlap softly (solve); false: no push (relax). invH: 1 / substep.
-void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
-                   const Softness& softness, double maxPushVelocity);
-void applyRestitution(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double threshold);
+/// One pass. useBias: push out overlap softly (solve); false: no push (relax). invH: 1 / substep. True when a
+/// point met its partner fast enough to bounce (restitution above the threshold): applyBounces then owes it.
+bool solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
+                   const Softness& softness, double maxPushVelocity, double restitutionThreshold);
+/// After the substep's relax: the points that met this substep leave at e times their meeting speed.
+void applyBounces(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double h);
 /// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).
 void storeImpulses(const ContactConstraint& c, ContactData& contact);
 

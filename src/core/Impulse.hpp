@@ -13,12 +13,13 @@ struct MotionSide {
     double w = 0.0;
     Vec2 dp = Vec2::Zero();
     Rotation dq{};
+    double dAngle = 0.0;
 };
 
 inline MotionSide loadSide(const SolverBody* states, std::int32_t index) {
     if (index == kNullIndex) return {};
     const SolverBody& s = states[index];
-    return {s.v, s.w, s.dp, s.dq};
+    return {s.v, s.w, s.dp, s.dq, s.dAngle};
 }
 
 /// Only bodies a row can move are written back: a kinematic body is read by many rows of one colour at once.
@@ -26,6 +27,17 @@ inline void storeSide(SolverBody* states, std::int32_t index, double invMass, co
     if (index == kNullIndex || invMass == 0.0) return;
     states[index].v = side.v;
     states[index].w = side.w;
+}
+
+/// Also writes the displacement and turn (rows that move positions: bounces).
+inline void storeSideWithPose(SolverBody* states, std::int32_t index, double invMass, const MotionSide& side) {
+    if (index == kNullIndex || invMass == 0.0) return;
+    SolverBody& s = states[index];
+    s.v = side.v;
+    s.w = side.w;
+    s.dp = side.dp;
+    s.dq = side.dq;
+    s.dAngle = side.dAngle;
 }
 
 /// Row: any type with invMassA, invIA, invMassB, invIB.

@@ -114,7 +114,7 @@ void WorldImpl::solve() {
                 constraints[colourFill[static_cast<std::size_t>(constraintColour[k])]++].contact = awakeContacts[k];
         executor.parallelFor(rowCount, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t i = begin; i < end; ++i)
-                prepareContact(constraints[i], contacts[constraints[i].contact], bodies);
+                prepareContact(constraints[i], contacts[constraints[i].contact], bodies, settings.gravity);
         });
         jointConstraints.clear();
         for (std::uint32_t j = 0; j < joints.size(); ++j) {
@@ -132,19 +132,23 @@ void WorldImpl::solve() {
     SolverBody* const st = states.data();
     ContactConstraint* const rows = constraints.data();
     // One pass over all rows: joints, then colour by colour (in parallel within a colour), then the overflow.
+    // rowsWork(begin, end, worker) over rows; jointWork(row, joint) for each joint.
     auto pass = [&](auto&& rowsWork, auto&& jointWork) {
         for (const JointConstraint& row : jointConstraints) jointWork(row, joints[row.joint]);
         for (int col = 0; col < kColours; ++col) {
             const std::size_t first = colourStart[col], count = colourStart[col + 1] - first;
-            executor.parallelFor(count, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
-                rowsWork(rows + first + begin, rows + first + end);
+            executor.parallelFor(count, kRowGrain, [&](std::size_t begin, std::size_t end, int worker) {
+                rowsWork(rows + first + begin, rows + first + end, worker);
             });
         }
-        rowsWork(rows + colourStart[kColours], rows + colourStart[kColours + 1]);
+        rowsWork(rows + colourStart[kColours], rows + colourStart[kColours + 1], 0);
     };
+    bounceFlags.assign(static_cast<std::size_t>(executor.workerSlots()), 0);
     auto solvePass = [&](bool useBias) {
-        pass([&](ContactConstraint* b, ContactConstraint* e) {
-                 solveContacts(b, e, st, invH, useBias, contactSoftness, settings.contactPushMaxVelocity);
+        pass([&](ContactConstraint* b, ContactConstraint* e, int worker) {
+                 if (solveContacts(b, e, st, invH, useBias, contactSoftness, settings.contactPushMaxVelocity,
+                                   settings.restitutionThreshold))
+                     bounceFlags[static_cast<std::size_t>(worker)] = 1;
              },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
@@ -164,7 +168,7 @@ void WorldImpl::solve() {
         }
         if (anyRows) {
             StageTimer timer(profile, Stage::Solve);
-            pass([&](ContactConstraint* b, ContactConstraint* e) { warmStartContacts(b, e, st); },
+            pass([&](ContactConstraint* b, ContactConstraint* e, int) { warmStartContacts(b, e, st); },
                  [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
             for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true);
         }
@@ -185,18 +189,16 @@ void WorldImpl::solve() {
         if (anyRows) {
             StageTimer timer(profile, Stage::Solve);
             for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
+            if (std::any_of(bounceFlags.begin(), bounceFlags.end(), [](std::uint8_t f) { return f != 0; })) {
+                std::fill(bounceFlags.begin(), bounceFlags.end(), 0);
+                pass([&](ContactConstraint* b, ContactConstraint* e, int) { applyBounces(b, e, st, h); },
+                     [](const JointConstraint&, JointData&) {});
+            }
         }
     }
 
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        const double threshold = settings.restitutionThreshold;
-        for (int col = 0; col <= kColours; ++col) {
-            const std::size_t first = colourStart[col], count = colourStart[col + 1] - first;
-            executor.parallelFor(count, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
-                applyRestitution(rows + first + begin, rows + first + end, st, threshold);
-            });
-        }
         executor.parallelFor(rowCount, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t i = begin; i < end; ++i) storeImpulses(rows[i], contacts[rows[i].contact]);
         });
