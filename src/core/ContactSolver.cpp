@@ -41,7 +41,6 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         return moves ? Vec2((b.useGravity ? gravity : Vec2::Zero()) + b.invMass * b.force) : Vec2::Zero();
     };
     c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
-    c.bouncePending = false;
     c.tangentImpulse = 0.0;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();
     for (int i = 0; i < m.pointCount; ++i) {
@@ -55,7 +54,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         cp.normalMass = massAlong(c, cp.anchorA, cp.anchorB, c.normal);
         cp.relativeVelocity = 0.0;
         cp.engaged = false;
-        cp.bouncePending = false;
+        cp.bouncedAt = -1;
         c.tangentImpulse += mp.tangentImpulse;
         sumA += cp.anchorA;
         sumB += cp.anchorB;
@@ -97,90 +96,134 @@ void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverB
 
 namespace {
 
-// Called when a point first pushes in the step: remember how it met, and whether it bounces. The bounce waits for
-// the end of the substep (applyBounces), after the relax pass, which would otherwise undo it.
-void engage(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double s, bool inRelax, double threshold,
-            bool& anyBounce) {
+// A point's normal row this pass: the speculative gap, or the soft push-out (solve) or none (relax).
+struct NormalRow {
+    double separation = 0.0;  // m, now
+    double bias = 0.0;        // m/s
+    double massScale = 1.0;
+    double impulseScale = 0.0;
+    bool skip = false;        // bounced this substep: left alone until the next
+};
+
+// A point's first push in the step: remember how it met; if it meets fast enough, it bounces now. It leaves at e
+// times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
+// gained or lost):
+//   met in the solve pass (positions not yet moved this substep): the separation at the substep's end becomes e
+//   times the gap it had at the substep's start, as if it had reflected off the surface on time;
+//   met in the relax pass (positions already moved): the reflection of the next substep's fall leaves at the
+//   speed before that substep's gravity.
+// Bouncing at once, not after the substep, lets a struck body pass the blow on within the same pass (a cradle's
+// balls, one in and one out); the point's row then rests until the next substep, so no later pass undoes it.
+void engage(ContactConstraint& c, ContactConstraintPoint& cp, MotionSide& A, MotionSide& B, double vn,
+            double separation, const ContactPass& pass) {
     cp.engaged = true;
     cp.relativeVelocity = vn;
-    cp.engageSeparation = std::max(s, 0.0);
-    cp.engagedInRelax = inRelax;
-    // Perfectly elastic points bounce at any speed; below e = 1 the threshold keeps resting contacts quiet.
-    const double limit = c.restitution < 1.0 ? -threshold : 0.0;
-    if (c.restitution > 0.0 && vn < limit) {
-        cp.bouncePending = true;
-        c.bouncePending = true;
-        anyBounce = true;
+    const double e = c.restitution;
+    const double limit = e < 1.0 ? -pass.restitutionThreshold : 0.0;  // e = 1 bounces at any speed
+    if (!(e > 0.0 && vn < limit)) return;
+    const Vec2 n = c.normal;
+    const double speed = -vn - (pass.useBias ? 0.0 : pass.h * c.normalAcceleration);
+    const double target = e * speed;
+    const double now = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
+    const double impulse = cp.normalMass * (target - now);
+    if (impulse > 0.0) applyImpulse(c, A, B, cp.anchorA, cp.anchorB, impulse * n);
+    // A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
+    cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + std::max(impulse, 0.0));
+    cp.normalImpulse = 0.0;
+    const double gap = pass.useBias ? e * std::max(separation, 0.0) - target * pass.h : 0.0;  // m to open now
+    if (gap != 0.0) {
+        const Vec2 P = (gap * cp.normalMass) * n;  // a position "impulse", kg m
+        const Vec2 rA = A.dq.apply(cp.anchorA), rB = B.dq.apply(cp.anchorB);
+        const double turnA = -c.invIA * cross(rA, P), turnB = c.invIB * cross(rB, P);
+        A.dp -= c.invMassA * P;
+        B.dp += c.invMassB * P;
+        A.dq = compose(rotationBy(turnA), A.dq);
+        B.dq = compose(rotationBy(turnB), B.dq);
+        A.dAngle += turnA;
+        B.dAngle += turnB;
     }
+    cp.bouncedAt = pass.substep;
 }
 
 }  // namespace
 
-bool solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
-                   const Softness& softness, double maxPushVelocity, double restitutionThreshold) {
-    bool anyBounce = false;
+void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass) {
     for (ContactConstraint* c = begin; c != end; ++c) {
         MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
         const Vec2 n = c->normal;
         const Vec2 dp = B.dp - A.dp;
-        double totalNormal = 0.0;
-        double bias[2] = {0.0, 0.0}, massScale[2] = {1.0, 1.0}, impulseScale[2] = {0.0, 0.0}, vn[2] = {0.0, 0.0};
-        double sep[2] = {0.0, 0.0};
+        NormalRow rows[2];
         for (int i = 0; i < c->pointCount; ++i) {
-            ContactConstraintPoint& cp = c->points[i];
+            const ContactConstraintPoint& cp = c->points[i];
+            NormalRow& r = rows[i];
             // Separation now: the start's, moved by the bodies' displacement and turn since the step began.
             const Vec2 prA = A.dq.apply(cp.anchorA), prB = B.dq.apply(cp.anchorB);
-            const double s = n.dot(dp + prB - prA) + cp.baseSeparation;
-            sep[i] = s;
-            if (s > 0.0) {
-                bias[i] = s * invH;  // speculative: close the gap in this substep, no further
-            } else if (useBias) {
-                bias[i] = std::max(softness.biasRate * s, -maxPushVelocity);
-                massScale[i] = softness.massScale;
-                impulseScale[i] = softness.impulseScale;
+            r.separation = n.dot(dp + prB - prA) + cp.baseSeparation;
+            r.skip = cp.bouncedAt == pass.substep;
+            if (r.separation > 0.0) {
+                r.bias = r.separation * pass.invH;  // speculative: close the gap in this substep, no further
+            } else if (pass.useBias) {
+                r.bias = std::max(pass.softness.biasRate * r.separation, -pass.maxPushVelocity);
+                r.massScale = pass.softness.massScale;
+                r.impulseScale = pass.softness.impulseScale;
             }
         }
-        if (c->pointCount == 2 && c->invDet > 0.0) {
+        double before[2] = {0.0, 0.0};  // each point's normal speed before this pass's impulses
+        bool started[2] = {false, false};
+        if (c->pointCount == 2 && c->invDet > 0.0 && !rows[0].skip && !rows[1].skip) {
+            // Both points at once: the 2x2 complementarity problem on the accumulated impulses
+            // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
             ContactConstraintPoint& p1 = c->points[0];
             ContactConstraintPoint& p2 = c->points[1];
-            vn[0] = n.dot(relativeVelocity(A, B, p1.anchorA, p1.anchorB));
-            vn[1] = n.dot(relativeVelocity(A, B, p2.anchorA, p2.anchorB));
+            before[0] = n.dot(relativeVelocity(A, B, p1.anchorA, p1.anchorB));
+            before[1] = n.dot(relativeVelocity(A, B, p2.anchorA, p2.anchorB));
             const double x1 = p1.normalImpulse, x2 = p2.normalImpulse;
-            // Rigid 2x2 LCP on the increments: w = K (y - x) + (vn + bias) >= 0, y >= 0, y . w = 0.
-            const double b1 = vn[0] + bias[0] - (c->k11 * x1 + c->k12 * x2);
-            const double b2 = vn[1] + bias[1] - (c->k12 * x1 + c->k22 * x2);
+            const double b1 = before[0] + rows[0].bias - (c->k11 * x1 + c->k12 * x2);
+            const double b2 = before[1] + rows[1].bias - (c->k12 * x1 + c->k22 * x2);
             double y1 = -(c->k22 * b1 - c->k12 * b2) * c->invDet;
             double y2 = -(c->k11 * b2 - c->k12 * b1) * c->invDet;
             if (!(y1 >= 0.0 && y2 >= 0.0)) {
-                y1 = -b1 / c->k11; y2 = 0.0;
+                y1 = -b1 / c->k11;  // only point 1 pushes; point 2 must then separate
+                y2 = 0.0;
                 if (!(y1 >= 0.0 && c->k12 * y1 + b2 >= 0.0)) {
-                    y1 = 0.0; y2 = -b2 / c->k22;
-                    if (!(y2 >= 0.0 && c->k12 * y2 + b1 >= 0.0)) { y1 = 0.0; y2 = 0.0; }
+                    y1 = 0.0;  // only point 2 pushes
+                    y2 = -b2 / c->k22;
+                    if (!(y2 >= 0.0 && c->k12 * y2 + b1 >= 0.0)) y1 = y2 = 0.0;  // neither
                 }
             }
-            // Soft: move a massScale fraction of the way, and leak impulseScale of the old impulse.
-            const double n1 = std::max(x1 + massScale[0] * (y1 - x1) - impulseScale[0] * x1, 0.0);
-            const double n2 = std::max(x2 + massScale[1] * (y2 - x2) - impulseScale[1] * x2, 0.0);
-            const double totals[2] = {n1, n2};
+            const double y[2] = {y1, y2};
             for (int i = 0; i < 2; ++i) {
                 ContactConstraintPoint& cp = c->points[i];
-                if (totals[i] > 0.0 && !cp.engaged) engage(*c, cp, vn[i], sep[i], !useBias, restitutionThreshold, anyBounce);
-                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (totals[i] - cp.normalImpulse) * n);
-                cp.normalImpulse = totals[i];
-                cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, totals[i]);
-                totalNormal += totals[i];
+                const double x = cp.normalImpulse;
+                const double total = std::max(x + rows[i].massScale * (y[i] - x) - rows[i].impulseScale * x, 0.0);
+                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - x) * n);
+                cp.normalImpulse = total;
+                started[i] = total > 0.0 && !cp.engaged;
             }
-        } else
+        } else {
+            for (int i = 0; i < c->pointCount; ++i) {
+                if (rows[i].skip) continue;
+                ContactConstraintPoint& cp = c->points[i];
+                const NormalRow& r = rows[i];
+                before[i] = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
+                const double lambda =
+                    -cp.normalMass * r.massScale * (before[i] + r.bias) - r.impulseScale * cp.normalImpulse;
+                const double total = std::max(cp.normalImpulse + lambda, 0.0);
+                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
+                cp.normalImpulse = total;
+                started[i] = total > 0.0 && !cp.engaged;
+            }
+        }
+        bool moved = false;
+        double totalNormal = 0.0;
         for (int i = 0; i < c->pointCount; ++i) {
             ContactConstraintPoint& cp = c->points[i];
-            const double vni = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
-            const double lambda = -cp.normalMass * massScale[i] * (vni + bias[i]) - impulseScale[i] * cp.normalImpulse;
-            const double total = std::max(cp.normalImpulse + lambda, 0.0);
-            if (total > 0.0 && !cp.engaged) engage(*c, cp, vni, sep[i], !useBias, restitutionThreshold, anyBounce);
-            applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
-            cp.normalImpulse = total;
-            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, total);
-            totalNormal += total;
+            if (started[i]) {
+                engage(*c, cp, A, B, before[i], rows[i].separation, pass);
+                moved = moved || cp.bouncedAt == pass.substep;
+            }
+            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
+            totalNormal += cp.normalImpulse;
         }
         // Friction after the normal rows, so its bound sees this pass's load.
         const Vec2 t = perp(n);
@@ -193,50 +236,13 @@ bool solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
         }
         applyImpulse(*c, A, B, rA, rB, (tangent - c->tangentImpulse) * t);
         c->tangentImpulse = tangent;
-        storeSide(states, c->indexA, c->invMassA, A);
-        storeSide(states, c->indexB, c->invMassB, B);
-    }
-    return anyBounce;
-}
-
-void applyBounces(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double h) {
-    for (ContactConstraint* c = begin; c != end; ++c) {
-        if (!c->bouncePending) continue;
-        c->bouncePending = false;
-        MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
-        const Vec2 n = c->normal;
-        const double e = c->restitution;
-        for (int i = 0; i < c->pointCount; ++i) {
-            ContactConstraintPoint& cp = c->points[i];
-            if (!cp.bouncePending) continue;
-            cp.bouncePending = false;
-            // Leave at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall
-            // exactly (no energy gained or lost). Met in the solve pass: the speculative row stopped the bodies at
-            // contact a fraction of the substep early; moving them apart by e times the gap they had at the
-            // substep's start makes the substep a reflection. Met in the relax pass (the positions already moved):
-            // the reflection of the next substep's fall is the speed before that substep's gravity.
-            const double speed = -cp.relativeVelocity - (cp.engagedInRelax ? h * c->normalAcceleration : 0.0);
-            const double vn = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
-            const double impulse = cp.normalMass * (e * speed - vn);
-            if (impulse > 0.0) {
-                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, impulse * n);
-                cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
-            }
-            const double shift = cp.engagedInRelax ? 0.0 : e * cp.engageSeparation * cp.normalMass;  // kg m
-            if (shift > 0.0) {
-                const Vec2 rA = A.dq.apply(cp.anchorA), rB = B.dq.apply(cp.anchorB);
-                const Vec2 P = shift * n;
-                A.dp -= c->invMassA * P;
-                B.dp += c->invMassB * P;
-                const double turnA = -c->invIA * cross(rA, P), turnB = c->invIB * cross(rB, P);
-                A.dq = compose(rotationBy(turnA), A.dq);
-                B.dq = compose(rotationBy(turnB), B.dq);
-                A.dAngle += turnA;
-                B.dAngle += turnB;
-            }
+        if (moved) {
+            storeSideWithPose(states, c->indexA, c->invMassA, A);
+            storeSideWithPose(states, c->indexB, c->invMassB, B);
+        } else {
+            storeSide(states, c->indexA, c->invMassA, A);
+            storeSide(states, c->indexB, c->invMassB, B);
         }
-        storeSideWithPose(states, c->indexA, c->invMassA, A);
-        storeSideWithPose(states, c->indexB, c->invMassB, B);
     }
 }
 

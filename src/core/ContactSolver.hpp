@@ -9,9 +9,8 @@
 //     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
 //     bodies would close the gap within the substep, and then stop them exactly at contact;
 //   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
-// A point that meets its partner faster than the restitution threshold bounces at the end of that substep, after
-// the relax pass: its normal speed becomes e times the meeting speed, and the bodies move apart by e times the gap
-// the speculative row closed early, so an elastic bounce is an exact reflection.
+// A point that meets its partner faster than the restitution threshold bounces at once: its normal speed becomes
+// e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
 // Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses:
 // static while the impulse that stops sliding is within mu_s times that sum, else clamped to mu_d times it. In
 // 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row
@@ -44,10 +43,8 @@ struct ContactConstraintPoint {
     double maxNormalImpulse = 0.0;
     double normalMass = 0.0;      // kg
     double relativeVelocity = 0.0;  // m/s along the normal when the point first pushed in this step
-    double engageSeparation = 0.0;  // m, the gap it had then (a speculative point stopped short of it)
+    int bouncedAt = -1;           // substep of its bounce in this step; -1: none
     bool engaged = false;
-    bool engagedInRelax = false;
-    bool bouncePending = false;
 };
 
 struct ContactConstraint {
@@ -61,7 +58,6 @@ struct ContactConstraint {
     double tangentMass = 0.0;
     double tangentImpulse = 0.0;
     int pointCount = 0;
-    bool bouncePending = false;
     ContactConstraintPoint points[2];
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
 };
@@ -70,12 +66,16 @@ struct ContactConstraint {
 void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
                     const Vec2& gravity);
 void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states);
-/// One pass. useBias: push out overlap softly (solve); false: no push (relax). invH: 1 / substep. True when a
-/// point met its partner fast enough to bounce (restitution above the threshold): applyBounces then owes it.
-bool solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double invH, bool useBias,
-                   const Softness& softness, double maxPushVelocity, double restitutionThreshold);
-/// After the substep's relax: the points that met this substep leave at e times their meeting speed.
-void applyBounces(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, double h);
+/// What one pass over the rows needs.
+struct ContactPass {
+    double h = 0.0, invH = 0.0;       // the substep, s, and its inverse
+    int substep = 0;
+    bool useBias = true;              // solve: push overlap out softly; false: relax, no push
+    Softness softness;
+    double maxPushVelocity = 0.0;     // m/s
+    double restitutionThreshold = 0.0;  // m/s
+};
+void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass);
 /// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).
 void storeImpulses(const ContactConstraint& c, ContactData& contact);
 

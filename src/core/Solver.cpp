@@ -143,18 +143,21 @@ void WorldImpl::solve() {
         }
         rowsWork(rows + colourStart[kColours], rows + colourStart[kColours + 1], 0);
     };
-    bounceFlags.assign(static_cast<std::size_t>(executor.workerSlots()), 0);
+    ContactPass contactPass;
+    contactPass.h = h;
+    contactPass.invH = invH;
+    contactPass.softness = contactSoftness;
+    contactPass.maxPushVelocity = settings.contactPushMaxVelocity;
+    contactPass.restitutionThreshold = settings.restitutionThreshold;
     auto solvePass = [&](bool useBias) {
-        pass([&](ContactConstraint* b, ContactConstraint* e, int worker) {
-                 if (solveContacts(b, e, st, invH, useBias, contactSoftness, settings.contactPushMaxVelocity,
-                                   settings.restitutionThreshold))
-                     bounceFlags[static_cast<std::size_t>(worker)] = 1;
-             },
+        contactPass.useBias = useBias;
+        pass([&](ContactConstraint* b, ContactConstraint* e, int) { solveContacts(b, e, st, contactPass); },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
     const bool anyRows = rowCount > 0 || !jointConstraints.empty();
 
     for (int sub = 0; sub < substeps; ++sub) {
+        contactPass.substep = sub;
         {
             StageTimer timer(profile, Stage::Integrate);
             executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
@@ -189,11 +192,6 @@ void WorldImpl::solve() {
         if (anyRows) {
             StageTimer timer(profile, Stage::Solve);
             for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
-            if (std::any_of(bounceFlags.begin(), bounceFlags.end(), [](std::uint8_t f) { return f != 0; })) {
-                std::fill(bounceFlags.begin(), bounceFlags.end(), 0);
-                pass([&](ContactConstraint* b, ContactConstraint* e, int) { applyBounces(b, e, st, h); },
-                     [](const JointConstraint&, JointData&) {});
-            }
         }
     }
 

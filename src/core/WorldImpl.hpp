@@ -75,7 +75,6 @@ struct WorldImpl {
     std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<JointConstraint> jointConstraints;
-    std::vector<std::uint8_t> bounceFlags;       // per worker: a point met fast enough to bounce this substep
     std::vector<std::uint8_t> enlarged;          // per awake body: its proxy must move
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
     std::vector<std::uint32_t> splitStack;
