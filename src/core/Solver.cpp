@@ -78,12 +78,14 @@ void WorldImpl::solve() {
 
     // Colour the rows: greedy, in the awake list's order (deterministic), a bit per dynamic body per colour.
     std::size_t rowCount = 0;
-    {
+    constraints.clear();
+    jointConstraints.clear();
+    colourStart.assign(kColours + 2, 0);
+    if (!awakeContacts.empty() || jointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         const std::size_t words = (n + 63) / 64;
         colourBits.assign(static_cast<std::size_t>(kColours) * words, 0);
         constraintColour.assign(awakeContacts.size(), -1);
-        colourStart.assign(kColours + 2, 0);
         for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
             const ContactData& c = contacts[awakeContacts[k]];
             if (c.manifold.pointCount == 0) continue;

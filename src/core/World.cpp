@@ -113,6 +113,17 @@ void WorldImpl::requireNotStepping(const char* call) const {
     if (stepping) throw std::logic_error(std::string("physim: World::") + call + " called during the world's step");
 }
 
+void WorldImpl::wakeOverlapping(const Aabb& box) {
+    found.clear();
+    broadPhase.query(box, [&](std::uint32_t body) {
+        found.push_back(body);
+        return true;
+    });
+    std::sort(found.begin(), found.end());
+    for (const std::uint32_t body : found)
+        if (bodies[body].type == BodyType::Dynamic && !bodies[body].awake()) wakeBody(body);
+}
+
 Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
     if (b.type == BodyType::Static) return b.aabb.fattened(margin);
     // Where the body is and where its velocity takes it over the next step, and how far its turn reaches.
@@ -190,6 +201,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.aabb = computeAabb(b.shape, b.xf);
     b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
     w.addAwakeBody(index);
+    if (def.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 
     ++w.liveCount;
@@ -284,6 +296,7 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
     b.center = b.xf.apply(b.localCenter);
     b.aabb = computeAabb(b.shape, b.xf);
     impl_->broadPhase.moveProxy(b.proxy, impl_->proxyBox(b, kAabbMargin));
+    if (b.type == BodyType::Static) impl_->wakeOverlapping(impl_->broadPhase.fatBox(b.proxy));
 }
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
@@ -615,7 +628,8 @@ void World::step(double dt) {
     w.events.impacts.clear();
     w.touchingValid = false;
 
-    runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2,
+    // Pairs need a moved proxy and an awake body: a static body moved next to sleepers wakes them itself.
+    runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2 && !w.awake.empty(),
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
     runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
@@ -623,7 +637,7 @@ void World::step(double dt) {
     runStage(w.profile, Stage::Continuous, w.continuousCount > 0 && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
-    w.profile.manifolds = w.constraints.size();
+    w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.constraints.size() : 0;
     ++w.stepCount;
 }
 

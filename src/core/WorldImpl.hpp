@@ -79,6 +79,7 @@ struct WorldImpl {
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
     std::vector<std::uint32_t> splitStack;
     std::vector<std::uint32_t> splitMembers;
+    std::vector<std::uint32_t> found;             // broad-phase query results
     std::vector<std::uint32_t> sleepy;           // islands ready to sleep this step
 
     StepProfile profile;
@@ -94,6 +95,7 @@ struct WorldImpl {
 
     // World.cpp
     void requireNotStepping(const char* call) const;
+    void wakeOverlapping(const Aabb& box);  // sleeping bodies whose proxies overlap the box wake
     /// The box a proxy needs at the body's pose and velocity (the next step's motion and turn), grown by margin.
     Aabb proxyBox(const BodyData& b, double margin) const;
     bool proxyOutgrown(const BodyData& b) const { return !broadPhase.fatBox(b.proxy).contains(proxyBox(b, 0.0)); }

@@ -15,7 +15,7 @@ struct WorldSettings {
     double contactDampingRatio = 10.0;   ///< of that spring; well above 1 so pushing out never overshoots
     double contactPushMaxVelocity = 3.0; ///< m/s: deep overlaps separate no faster than this
     double jointHertz = 120.0;           ///< joint stiffness, Hz (also capped at a quarter of the substep rate)
-    double jointDampingRatio = 5.0;
+    double jointDampingRatio = 1.0;      ///< critical: stretch dies out without draining a swing
     double linearSlop = 0.005;        ///< m: speculative contacts reach 4 slops; touching is within that
     /// m/s: below e = 1, slower approaches do not bounce, so resting bodies settle. e = 1 bounces at any speed.
     double restitutionThreshold = 1.0;
