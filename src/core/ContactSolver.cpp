@@ -54,7 +54,6 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         cp.normalMass = massAlong(c, cp.anchorA, cp.anchorB, c.normal);
         cp.relativeVelocity = 0.0;
         cp.engaged = false;
-        cp.bouncedAt = -1;
         c.tangentImpulse += mp.tangentImpulse;
         sumA += cp.anchorA;
         sumB += cp.anchorB;
@@ -102,7 +101,6 @@ struct NormalRow {
     double bias = 0.0;        // m/s
     double massScale = 1.0;
     double impulseScale = 0.0;
-    bool skip = false;        // bounced this substep: left alone until the next
 };
 
 // A point's first push in the step: remember how it met; if it meets fast enough, it bounces now. It leaves at e
@@ -113,11 +111,12 @@ struct NormalRow {
 //   met in the relax pass (positions already moved): the reflection of the next substep's fall leaves at the
 //   speed before that substep's gravity.
 // Bouncing at once, not after the substep, lets a struck body pass the blow on within the same pass (a cradle's
-// balls, one in and one out); the point's row then rests until the next substep, so no later pass undoes it.
+// balls, one in and one out). The bounce is not part of the accumulated impulse, so no later pass (relax) can take
+// it back; a point that separates and meets again (a ball between a wall and another ball) bounces again.
 void engage(ContactConstraint& c, ContactConstraintPoint& cp, MotionSide& A, MotionSide& B, double vn,
             double separation, const ContactPass& pass) {
+    cp.relativeVelocity = cp.engaged ? std::min(cp.relativeVelocity, vn) : vn;  // the fastest meeting, for events
     cp.engaged = true;
-    cp.relativeVelocity = vn;
     const double e = c.restitution;
     const double limit = e < 1.0 ? -pass.restitutionThreshold : 0.0;  // e = 1 bounces at any speed
     if (!(e > 0.0 && vn < limit)) return;
@@ -142,7 +141,6 @@ void engage(ContactConstraint& c, ContactConstraintPoint& cp, MotionSide& A, Mot
         A.dAngle += turnA;
         B.dAngle += turnB;
     }
-    cp.bouncedAt = pass.substep;
 }
 
 }  // namespace
@@ -159,7 +157,6 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
             // Separation now: the start's, moved by the bodies' displacement and turn since the step began.
             const Vec2 prA = A.dq.apply(cp.anchorA), prB = B.dq.apply(cp.anchorB);
             r.separation = n.dot(dp + prB - prA) + cp.baseSeparation;
-            r.skip = cp.bouncedAt == pass.substep;
             if (r.separation > 0.0) {
                 r.bias = r.separation * pass.invH;  // speculative: close the gap in this substep, no further
             } else if (pass.useBias) {
@@ -170,7 +167,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
         }
         double before[2] = {0.0, 0.0};  // each point's normal speed before this pass's impulses
         bool started[2] = {false, false};
-        if (c->pointCount == 2 && c->invDet > 0.0 && !rows[0].skip && !rows[1].skip) {
+        if (c->pointCount == 2 && c->invDet > 0.0) {
             // Both points at once: the 2x2 complementarity problem on the accumulated impulses
             // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
             ContactConstraintPoint& p1 = c->points[0];
@@ -198,20 +195,19 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
                 const double total = std::max(x + rows[i].massScale * (y[i] - x) - rows[i].impulseScale * x, 0.0);
                 applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - x) * n);
                 cp.normalImpulse = total;
-                started[i] = total > 0.0 && !cp.engaged;
+                started[i] = total > 0.0 && x == 0.0;
             }
         } else {
             for (int i = 0; i < c->pointCount; ++i) {
-                if (rows[i].skip) continue;
                 ContactConstraintPoint& cp = c->points[i];
                 const NormalRow& r = rows[i];
                 before[i] = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
                 const double lambda =
                     -cp.normalMass * r.massScale * (before[i] + r.bias) - r.impulseScale * cp.normalImpulse;
                 const double total = std::max(cp.normalImpulse + lambda, 0.0);
+                started[i] = total > 0.0 && cp.normalImpulse == 0.0;
                 applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
                 cp.normalImpulse = total;
-                started[i] = total > 0.0 && !cp.engaged;
             }
         }
         bool moved = false;
@@ -220,7 +216,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
             ContactConstraintPoint& cp = c->points[i];
             if (started[i]) {
                 engage(*c, cp, A, B, before[i], rows[i].separation, pass);
-                moved = moved || cp.bouncedAt == pass.substep;
+                moved = moved || (c->restitution > 0.0 && before[i] < 0.0);
             }
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
             totalNormal += cp.normalImpulse;

@@ -42,8 +42,7 @@ struct ContactConstraintPoint {
     double normalImpulse = 0.0;   // N s, this substep's (warm started)
     double maxNormalImpulse = 0.0;
     double normalMass = 0.0;      // kg
-    double relativeVelocity = 0.0;  // m/s along the normal when the point first pushed in this step
-    int bouncedAt = -1;           // substep of its bounce in this step; -1: none
+    double relativeVelocity = 0.0;  // m/s along the normal at its fastest meeting in this step (events)
     bool engaged = false;
 };
 

@@ -64,11 +64,11 @@ void Simulation::forEachEntity(Phase&& phase) {
 }
 
 void Simulation::fixedStep() {
+    // The paper's three phases around the world's one step: forces go in before it, its contact events and new
+    // state come out after it (docs/architecture.md says why this reading of the paper).
     forEachEntity([](Entity& e) { e.beforeFixedUpdate(); });
-    world_.beginStep(fixedTimeStep_);
-    world_.collide();
+    world_.step(fixedTimeStep_);
     forEachEntity([](Entity& e) { e.checkCollisions(); });
-    world_.finishStep();
     forEachEntity([](Entity& e) { e.fixedUpdate(); });
     time += fixedTimeStep_;
 }

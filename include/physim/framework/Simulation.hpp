@@ -74,9 +74,10 @@ public:
     double physicsRate() const { return 1.0 / fixedTimeStep_; }
     double fixedTimeStep() const { return fixedTimeStep_; }
 
-    /// One fixed step: every entity's beforeFixedUpdate, the world's forces; the world's collision
-    /// detection and response, every entity's checkCollisions; the world's integration, every entity's
-    /// fixedUpdate. Advances `time` by fixedTimeStep().
+    /// One fixed step: every entity's beforeFixedUpdate (forces added there act in this step), the world's
+    /// step, every entity's checkCollisions (world().contactEvents() and contacts() describe this step), every
+    /// entity's fixedUpdate (sees the new state). Forces added in the last two act in the next step. Advances
+    /// `time` by fixedTimeStep().
     void fixedStep();
     /// Per frame, before the fixed steps: every entity's update() and then its behaviors' update().
     void updateEntities();
