@@ -103,8 +103,8 @@ struct NormalRow {
     double impulseScale = 0.0;
 };
 
-// A point's first push in the step: remember how it met; if it meets fast enough, it bounces now. It leaves at e
-// times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
+// A point that starts to push (it had no impulse): remember how it met; if it meets fast enough, it bounces now.
+// It leaves at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
 // gained or lost):
 //   met in the solve pass (positions not yet moved this substep): the separation at the substep's end becomes e
 //   times the gap it had at the substep's start, as if it had reflected off the surface on time;
@@ -113,33 +113,68 @@ struct NormalRow {
 // Bouncing at once, not after the substep, lets a struck body pass the blow on within the same pass (a cradle's
 // balls, one in and one out). The bounce is not part of the accumulated impulse, so no later pass (relax) can take
 // it back; a point that separates and meets again (a ball between a wall and another ball) bounces again.
-void engage(ContactConstraint& c, ContactConstraintPoint& cp, MotionSide& A, MotionSide& B, double vn,
-            double separation, const ContactPass& pass) {
+// What a point owes when it bounces: the normal speed to reach (m/s) and the gap to open now (m).
+struct Bounce {
+    bool active = false;
+    double target = 0.0;
+    double gap = 0.0;
+};
+
+Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double separation,
+                  const ContactPass& pass) {
     cp.relativeVelocity = cp.engaged ? std::min(cp.relativeVelocity, vn) : vn;  // the fastest meeting, for events
     cp.engaged = true;
     const double e = c.restitution;
     const double limit = e < 1.0 ? -pass.restitutionThreshold : 0.0;  // e = 1 bounces at any speed
-    if (!(e > 0.0 && vn < limit)) return;
-    const Vec2 n = c.normal;
+    if (!(e > 0.0 && vn < limit)) return {};
     const double speed = -vn - (pass.useBias ? 0.0 : pass.h * c.normalAcceleration);
     const double target = e * speed;
-    const double now = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
-    const double impulse = cp.normalMass * (target - now);
-    if (impulse > 0.0) applyImpulse(c, A, B, cp.anchorA, cp.anchorB, impulse * n);
-    // A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
-    cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + std::max(impulse, 0.0));
-    cp.normalImpulse = 0.0;
-    const double gap = pass.useBias ? e * std::max(separation, 0.0) - target * pass.h : 0.0;  // m to open now
-    if (gap != 0.0) {
-        const Vec2 P = (gap * cp.normalMass) * n;  // a position "impulse", kg m
-        const Vec2 rA = A.dq.apply(cp.anchorA), rB = B.dq.apply(cp.anchorB);
-        const double turnA = -c.invIA * cross(rA, P), turnB = c.invIB * cross(rB, P);
-        A.dp -= c.invMassA * P;
-        B.dp += c.invMassB * P;
-        A.dq = compose(rotationBy(turnA), A.dq);
-        B.dq = compose(rotationBy(turnB), B.dq);
-        A.dAngle += turnA;
-        B.dAngle += turnB;
+    return {true, target, pass.useBias ? e * std::max(separation, 0.0) - target * pass.h : 0.0};
+}
+
+// Moves the bodies apart along the normal at the point as a position "impulse" q (kg m) would.
+void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionSide& A, MotionSide& B, double q) {
+    const Vec2 P = q * c.normal;
+    const Vec2 rA = A.dq.apply(cp.anchorA), rB = B.dq.apply(cp.anchorB);
+    const double turnA = -c.invIA * cross(rA, P), turnB = c.invIB * cross(rB, P);
+    A.dp -= c.invMassA * P;
+    B.dp += c.invMassB * P;
+    A.dq = compose(rotationBy(turnA), A.dq);
+    B.dq = compose(rotationBy(turnB), B.dq);
+    A.dAngle += turnA;
+    B.dAngle += turnB;
+}
+
+// Applies the bounces, both points of a face together when both bounce (a box landing flat stays level), else
+// one at a time. A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
+void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2]) {
+    const Vec2 n = c.normal;
+    auto speedAt = [&](int i) { return n.dot(relativeVelocity(A, B, c.points[i].anchorA, c.points[i].anchorB)); };
+    if (c.pointCount == 2 && bounce[0].active && bounce[1].active && c.invDet > 0.0) {
+        const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
+        const double x1 = (c.k22 * d1 - c.k12 * d2) * c.invDet, x2 = (c.k11 * d2 - c.k12 * d1) * c.invDet;
+        if (x1 >= 0.0 && x2 >= 0.0) {
+            const double x[2] = {x1, x2};
+            const double g1 = bounce[0].gap, g2 = bounce[1].gap;
+            const double q[2] = {(c.k22 * g1 - c.k12 * g2) * c.invDet, (c.k11 * g2 - c.k12 * g1) * c.invDet};
+            for (int i = 0; i < 2; ++i) {
+                ContactConstraintPoint& cp = c.points[i];
+                applyImpulse(c, A, B, cp.anchorA, cp.anchorB, x[i] * n);
+                cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
+                cp.normalImpulse = 0.0;
+            }
+            for (int i = 0; i < 2; ++i) shift(c, c.points[i], A, B, q[i]);
+            return;
+        }
+    }
+    for (int i = 0; i < c.pointCount; ++i) {
+        if (!bounce[i].active) continue;
+        ContactConstraintPoint& cp = c.points[i];
+        const double impulse = std::max(cp.normalMass * (bounce[i].target - speedAt(i)), 0.0);
+        applyImpulse(c, A, B, cp.anchorA, cp.anchorB, impulse * n);
+        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
+        cp.normalImpulse = 0.0;
+        shift(c, cp, A, B, bounce[i].gap * cp.normalMass);
     }
 }
 
@@ -210,14 +245,14 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
                 cp.normalImpulse = total;
             }
         }
-        bool moved = false;
+        Bounce bounce[2];
+        for (int i = 0; i < c->pointCount; ++i)
+            if (started[i]) bounce[i] = planBounce(*c, c->points[i], before[i], rows[i].separation, pass);
+        const bool moved = bounce[0].active || bounce[1].active;
+        if (moved) applyBounces(*c, A, B, bounce);
         double totalNormal = 0.0;
         for (int i = 0; i < c->pointCount; ++i) {
             ContactConstraintPoint& cp = c->points[i];
-            if (started[i]) {
-                engage(*c, cp, A, B, before[i], rows[i].separation, pass);
-                moved = moved || (c->restitution > 0.0 && before[i] < 0.0);
-            }
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
             totalNormal += cp.normalImpulse;
         }
