@@ -15,9 +15,10 @@ int main() {
         sim.fixedStep();
         sim.graphsManager.addPoint(0, sim.time, ball.getPosition().y());
     }
-    // 1 s at 40 Hz, 4 substeps each (the default), semi-implicit Euler: y = -g h^2 n (n + 1) / 2 with
-    // h = 1/160 s and n = 160 substeps.
-    const double expected = -9.81 * (1.0 / (160.0 * 160.0)) * 160 * 161 / 2;
+    // 1 s at 40 Hz, 8 substeps each (the default), semi-implicit Euler: y = -g h^2 n (n + 1) / 2 with
+    // h = 1/320 s and n = 320 substeps.
+    const double n = 40.0 * physim::WorldSettings{}.substeps;
+    const double expected = -9.81 * (1.0 / (n * n)) * n * (n + 1) / 2;
     std::printf("y = %.6f, expected %.6f\n", ball.getPosition().y(), expected);
     return std::abs(ball.getPosition().y() - expected) < 1e-9 ? 0 : 1;
 }
