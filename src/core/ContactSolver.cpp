@@ -17,6 +17,37 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
     return {omega / a1, a2 * a3, a3};
 }
 
+namespace {
+
+// The rows' impulses along their fixed directions, with the moments prepared once per step.
+inline void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
+                       double lambda) {
+    const Vec2 P = lambda * c.normal;
+    A.v -= c.invMassA * P;
+    A.w -= c.invIA * lambda * p.rnA;
+    B.v += c.invMassB * P;
+    B.w += c.invIB * lambda * p.rnB;
+}
+
+inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const MotionSide& B,
+                          const ContactConstraintPoint& p) {
+    return c.normal.dot(B.v - A.v) + B.w * p.rnB - A.w * p.rnA;
+}
+
+inline void pushTangent(const ContactConstraint& c, MotionSide& A, MotionSide& B, double lambda) {
+    const Vec2 P = lambda * perp(c.normal);
+    A.v -= c.invMassA * P;
+    A.w -= c.invIA * lambda * c.rtA;
+    B.v += c.invMassB * P;
+    B.w += c.invIB * lambda * c.rtB;
+}
+
+inline double tangentSpeed(const ContactConstraint& c, const MotionSide& A, const MotionSide& B) {
+    return perp(c.normal).dot(B.v - A.v) + B.w * c.rtB - A.w * c.rtA;
+}
+
+}  // namespace
+
 void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
                     const Vec2& gravity) {
     const BodyData& A = bodies[contact.a];
@@ -48,6 +79,10 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         ContactConstraintPoint& cp = c.points[i];
         cp.anchorA = mp.point - A.center;
         cp.anchorB = mp.point - B.center;
+        cp.rnA = cross(cp.anchorA, c.normal);
+        cp.rnB = cross(cp.anchorB, c.normal);
+        cp.ndA = c.normal.dot(cp.anchorA);
+        cp.ndB = c.normal.dot(cp.anchorB);
         cp.baseSeparation = mp.separation - c.normal.dot(cp.anchorB - cp.anchorA);
         cp.normalImpulse = mp.normalImpulse;
         cp.maxNormalImpulse = 0.0;
@@ -77,17 +112,15 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.frictionAnchorA = share * sumA;
     c.frictionAnchorB = share * sumB;
     c.tangentMass = massAlong(c, c.frictionAnchorA, c.frictionAnchorB, perp(c.normal));
+    c.rtA = cross(c.frictionAnchorA, perp(c.normal));
+    c.rtB = cross(c.frictionAnchorB, perp(c.normal));
 }
 
 void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states) {
     for (ContactConstraint* c = begin; c != end; ++c) {
         MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
-        const Vec2 n = c->normal, t = perp(n);
-        for (int i = 0; i < c->pointCount; ++i) {
-            const ContactConstraintPoint& cp = c->points[i];
-            applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, cp.normalImpulse * n);
-        }
-        applyImpulse(*c, A, B, c->frictionAnchorA, c->frictionAnchorB, c->tangentImpulse * t);
+        for (int i = 0; i < c->pointCount; ++i) pushNormal(*c, A, B, c->points[i], c->points[i].normalImpulse);
+        pushTangent(*c, A, B, c->tangentImpulse);
         storeSide(states, c->indexA, c->invMassA, A);
         storeSide(states, c->indexB, c->invMassB, B);
     }
@@ -95,13 +128,6 @@ void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverB
 
 namespace {
 
-// A point's normal row this pass: the speculative gap, or the soft push-out (solve) or none (relax).
-struct NormalRow {
-    double separation = 0.0;  // m, now
-    double bias = 0.0;        // m/s
-    double massScale = 1.0;
-    double impulseScale = 0.0;
-};
 
 // A point that starts to push (it had no impulse): remember how it met; if it meets fast enough, it bounces now.
 // It leaves at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
@@ -148,8 +174,7 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // Applies the bounces, both points of a face together when both bounce (a box landing flat stays level), else
 // one at a time. A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2]) {
-    const Vec2 n = c.normal;
-    auto speedAt = [&](int i) { return n.dot(relativeVelocity(A, B, c.points[i].anchorA, c.points[i].anchorB)); };
+    auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]); };
     if (c.pointCount == 2 && bounce[0].active && bounce[1].active && c.invDet > 0.0) {
         const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
         const double x1 = (c.k22 * d1 - c.k12 * d2) * c.invDet, x2 = (c.k11 * d2 - c.k12 * d1) * c.invDet;
@@ -159,7 +184,7 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
             const double q[2] = {(c.k22 * g1 - c.k12 * g2) * c.invDet, (c.k11 * g2 - c.k12 * g1) * c.invDet};
             for (int i = 0; i < 2; ++i) {
                 ContactConstraintPoint& cp = c.points[i];
-                applyImpulse(c, A, B, cp.anchorA, cp.anchorB, x[i] * n);
+                pushNormal(c, A, B, cp, x[i]);
                 cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
                 cp.normalImpulse = 0.0;
             }
@@ -171,7 +196,7 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
         if (!bounce[i].active) continue;
         ContactConstraintPoint& cp = c.points[i];
         const double impulse = std::max(cp.normalMass * (bounce[i].target - speedAt(i)), 0.0);
-        applyImpulse(c, A, B, cp.anchorA, cp.anchorB, impulse * n);
+        pushNormal(c, A, B, cp, impulse);
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
         cp.normalImpulse = 0.0;
         shift(c, cp, A, B, bounce[i].gap * cp.normalMass);
@@ -181,37 +206,50 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
 }  // namespace
 
 void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass) {
+    // The hot loop of the step, in plain scalars: each row reads its two bodies once and writes them back once.
+    SolverBody still{};  // stands for an immovable body; never written (its rows' inverse masses are 0)
+    const double biasRate = pass.softness.biasRate, softMass = pass.softness.massScale;
+    const double softLeak = pass.softness.impulseScale;
     for (ContactConstraint* c = begin; c != end; ++c) {
-        MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
-        const Vec2 n = c->normal;
-        const Vec2 dp = B.dp - A.dp;
-        NormalRow rows[2];
-        for (int i = 0; i < c->pointCount; ++i) {
+        SolverBody& sa = c->indexA == kNullIndex ? still : states[c->indexA];
+        SolverBody& sb = c->indexB == kNullIndex ? still : states[c->indexB];
+        const double nx = c->normal.x(), ny = c->normal.y();
+        const double mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
+        double vAx = sa.v.x(), vAy = sa.v.y(), wA = sa.w;
+        double vBx = sb.v.x(), vBy = sb.v.y(), wB = sb.w;
+        const double normalShift = nx * (sb.dp.x() - sa.dp.x()) + ny * (sb.dp.y() - sa.dp.y());
+        const int count = c->pointCount;
+        double separation[2], bias[2], massScale[2], leak[2], before[2];
+        for (int i = 0; i < count; ++i) {
             const ContactConstraintPoint& cp = c->points[i];
-            NormalRow& r = rows[i];
-            // Separation now: the start's, moved by the bodies' displacement and turn since the step began.
-            const Vec2 prA = A.dq.apply(cp.anchorA), prB = B.dq.apply(cp.anchorB);
-            r.separation = n.dot(dp + prB - prA) + cp.baseSeparation;
-            if (r.separation > 0.0) {
-                r.bias = r.separation * pass.invH;  // speculative: close the gap in this substep, no further
+            // Separation now: the start's, moved by the bodies' displacement and turn since the step began
+            // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
+            const double s = normalShift + (sb.dq.c * cp.ndB + sb.dq.s * cp.rnB) -
+                             (sa.dq.c * cp.ndA + sa.dq.s * cp.rnA) + cp.baseSeparation;
+            separation[i] = s;
+            if (s > 0.0) {  // speculative: close the gap in this substep, no further
+                bias[i] = s * pass.invH;
+                massScale[i] = 1.0;
+                leak[i] = 0.0;
             } else if (pass.useBias) {
-                r.bias = std::max(pass.softness.biasRate * r.separation, -pass.maxPushVelocity);
-                r.massScale = pass.softness.massScale;
-                r.impulseScale = pass.softness.impulseScale;
+                bias[i] = std::max(biasRate * s, -pass.maxPushVelocity);
+                massScale[i] = softMass;
+                leak[i] = softLeak;
+            } else {
+                bias[i] = 0.0;
+                massScale[i] = 1.0;
+                leak[i] = 0.0;
             }
+            before[i] = nx * (vBx - vAx) + ny * (vBy - vAy) + wB * cp.rnB - wA * cp.rnA;
         }
-        double before[2] = {0.0, 0.0};  // each point's normal speed before this pass's impulses
+        double delta[2] = {0.0, 0.0};  // this pass's change of each accumulated impulse
         bool started[2] = {false, false};
-        if (c->pointCount == 2 && c->invDet > 0.0) {
+        if (count == 2 && c->invDet > 0.0) {
             // Both points at once: the 2x2 complementarity problem on the accumulated impulses
             // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
-            ContactConstraintPoint& p1 = c->points[0];
-            ContactConstraintPoint& p2 = c->points[1];
-            before[0] = n.dot(relativeVelocity(A, B, p1.anchorA, p1.anchorB));
-            before[1] = n.dot(relativeVelocity(A, B, p2.anchorA, p2.anchorB));
-            const double x1 = p1.normalImpulse, x2 = p2.normalImpulse;
-            const double b1 = before[0] + rows[0].bias - (c->k11 * x1 + c->k12 * x2);
-            const double b2 = before[1] + rows[1].bias - (c->k12 * x1 + c->k22 * x2);
+            const double x1 = c->points[0].normalImpulse, x2 = c->points[1].normalImpulse;
+            const double b1 = before[0] + bias[0] - (c->k11 * x1 + c->k12 * x2);
+            const double b2 = before[1] + bias[1] - (c->k12 * x1 + c->k22 * x2);
             double y1 = -(c->k22 * b1 - c->k12 * b2) * c->invDet;
             double y2 = -(c->k11 * b2 - c->k12 * b1) * c->invDet;
             if (!(y1 >= 0.0 && y2 >= 0.0)) {
@@ -223,56 +261,84 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
                     if (!(y2 >= 0.0 && c->k12 * y2 + b1 >= 0.0)) y1 = y2 = 0.0;  // neither
                 }
             }
-            const double y[2] = {y1, y2};
-            for (int i = 0; i < 2; ++i) {
-                ContactConstraintPoint& cp = c->points[i];
-                const double x = cp.normalImpulse;
-                const double total = std::max(x + rows[i].massScale * (y[i] - x) - rows[i].impulseScale * x, 0.0);
-                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - x) * n);
-                cp.normalImpulse = total;
-                started[i] = total > 0.0 && x == 0.0;
-            }
+            const double t1 = std::max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, 0.0);
+            const double t2 = std::max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, 0.0);
+            delta[0] = t1 - x1;
+            delta[1] = t2 - x2;
         } else {
-            for (int i = 0; i < c->pointCount; ++i) {
-                ContactConstraintPoint& cp = c->points[i];
-                const NormalRow& r = rows[i];
-                before[i] = n.dot(relativeVelocity(A, B, cp.anchorA, cp.anchorB));
-                const double lambda =
-                    -cp.normalMass * r.massScale * (before[i] + r.bias) - r.impulseScale * cp.normalImpulse;
-                const double total = std::max(cp.normalImpulse + lambda, 0.0);
-                started[i] = total > 0.0 && cp.normalImpulse == 0.0;
-                applyImpulse(*c, A, B, cp.anchorA, cp.anchorB, (total - cp.normalImpulse) * n);
-                cp.normalImpulse = total;
+            // One point at a time (Gauss-Seidel): the second sees the first's impulse.
+            for (int i = 0; i < count; ++i) {
+                const ContactConstraintPoint& cp = c->points[i];
+                const double vn = i == 0 ? before[0]
+                                         : nx * (vBx - vAx) + ny * (vBy - vAy) + wB * cp.rnB - wA * cp.rnA;
+                before[i] = vn;
+                const double x = cp.normalImpulse;
+                const double total = std::max(x - cp.normalMass * massScale[i] * (vn + bias[i]) - leak[i] * x, 0.0);
+                delta[i] = total - x;
+                if (i == 0 && count == 2) {
+                    vAx -= mA * delta[0] * nx;
+                    vAy -= mA * delta[0] * ny;
+                    wA -= iA * delta[0] * cp.rnA;
+                    vBx += mB * delta[0] * nx;
+                    vBy += mB * delta[0] * ny;
+                    wB += iB * delta[0] * cp.rnB;
+                }
             }
         }
-        Bounce bounce[2];
-        for (int i = 0; i < c->pointCount; ++i)
-            if (started[i]) bounce[i] = planBounce(*c, c->points[i], before[i], rows[i].separation, pass);
-        const bool moved = bounce[0].active || bounce[1].active;
-        if (moved) applyBounces(*c, A, B, bounce);
         double totalNormal = 0.0;
-        for (int i = 0; i < c->pointCount; ++i) {
+        for (int i = 0; i < count; ++i) {
             ContactConstraintPoint& cp = c->points[i];
+            const double d = delta[i];
+            if (!(i == 0 && count == 2 && c->invDet <= 0.0)) {  // the one-at-a-time path applied point 0 already
+                vAx -= mA * d * nx;
+                vAy -= mA * d * ny;
+                wA -= iA * d * cp.rnA;
+                vBx += mB * d * nx;
+                vBy += mB * d * ny;
+                wB += iB * d * cp.rnB;
+            }
+            started[i] = cp.normalImpulse == 0.0 && d > 0.0;
+            cp.normalImpulse += d;
             cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
             totalNormal += cp.normalImpulse;
         }
+        if (started[0] || started[1]) {
+            Bounce bounce[2];
+            for (int i = 0; i < count; ++i)
+                if (started[i]) bounce[i] = planBounce(*c, c->points[i], before[i], separation[i], pass);
+            if (bounce[0].active || bounce[1].active) {
+                MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
+                applyBounces(*c, A, B, bounce);
+                storeSideWithPose(states, c->indexA, mA, A);
+                storeSideWithPose(states, c->indexB, mB, B);
+                vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
+                totalNormal = c->points[0].normalImpulse + (count == 2 ? c->points[1].normalImpulse : 0.0);
+            }
+        }
         // Friction after the normal rows, so its bound sees this pass's load.
-        const Vec2 t = perp(n);
-        const Vec2 rA = c->frictionAnchorA, rB = c->frictionAnchorB;
-        const double vt = t.dot(relativeVelocity(A, B, rA, rB));
+        const double tx = -ny, ty = nx;
+        const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
         double tangent = c->tangentImpulse - c->tangentMass * vt;
         if (std::abs(tangent) > c->staticFriction * totalNormal) {
             const double bound = c->dynamicFriction * totalNormal;
             tangent = std::clamp(tangent, -bound, bound);
         }
-        applyImpulse(*c, A, B, rA, rB, (tangent - c->tangentImpulse) * t);
+        const double dt = tangent - c->tangentImpulse;
         c->tangentImpulse = tangent;
-        if (moved) {
-            storeSideWithPose(states, c->indexA, c->invMassA, A);
-            storeSideWithPose(states, c->indexB, c->invMassB, B);
-        } else {
-            storeSide(states, c->indexA, c->invMassA, A);
-            storeSide(states, c->indexB, c->invMassB, B);
+        vAx -= mA * dt * tx;
+        vAy -= mA * dt * ty;
+        wA -= iA * dt * c->rtA;
+        vBx += mB * dt * tx;
+        vBy += mB * dt * ty;
+        wB += iB * dt * c->rtB;
+        // Only bodies a row can move are written back: a kinematic body is read by many rows of one colour.
+        if (mA != 0.0) {
+            sa.v = {vAx, vAy};
+            sa.w = wA;
+        }
+        if (mB != 0.0) {
+            sb.v = {vBx, vBy};
+            sb.w = wB;
         }
     }
 }

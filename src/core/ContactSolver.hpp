@@ -38,6 +38,8 @@ Softness makeSoftness(double hertz, double dampingRatio, double h);
 
 struct ContactConstraintPoint {
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // lever arms from the centres of mass at the start, m
+    double rnA = 0.0, rnB = 0.0;  // anchorA x n, anchorB x n: a unit normal impulse's moments, m
+    double ndA = 0.0, ndB = 0.0;  // n . anchorA, n . anchorB, m (with rnA, rnB: the turned anchors' reach along n)
     double baseSeparation = 0.0;  // separation - n . (anchorB - anchorA), m: the rest comes from displacements
     double normalImpulse = 0.0;   // N s, this substep's (warm started)
     double maxNormalImpulse = 0.0;
@@ -54,6 +56,7 @@ struct ContactConstraint {
     double staticFriction = 0.0, dynamicFriction = 0.0, restitution = 0.0;
     double normalAcceleration = 0.0;  // m/s^2, B's minus A's along the normal from gravity and forces
     Vec2 frictionAnchorA = Vec2::Zero(), frictionAnchorB = Vec2::Zero();
+    double rtA = 0.0, rtB = 0.0;  // the friction anchors x t
     double tangentMass = 0.0;
     double tangentImpulse = 0.0;
     int pointCount = 0;
