@@ -1,0 +1,158 @@
+#pragma once
+// Dynamic bounding-volume tree over axis-aligned boxes, for a broad phase that touches only what moves.
+// Internal: not installed.
+//
+// Leaves are proxies holding the caller's (already enlarged) box and a user value; internal nodes hold the union
+// of their two children's boxes. Insertion picks the sibling that adds the least total perimeter to the tree
+// (the surface-area heuristic in 2D, searched exactly by branch and bound) and then walks to the root refitting
+// boxes and applying tree rotations that lower the perimeter. docs/collision.md ("Dynamic tree") has the design
+// and the measurements.
+//
+// Deterministic: the same calls in the same order give the same nodes, bit for bit. const members (query above
+// all) only read, so several threads may query one tree at once while nobody modifies it.
+
+#include "physim/core/Aabb.hpp"
+
+#include <cassert>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <type_traits>
+#include <vector>
+
+namespace physim {
+
+class DynamicTree {
+public:
+    static constexpr std::int32_t kNull = -1;
+    static constexpr std::int32_t kFree = -1;  ///< Node::height of a free slot
+
+    /// One slot of the node array. A proxy id is the index of its leaf and stays valid until destroyProxy.
+    struct alignas(64) Node {
+        Aabb box;                      // leaf: the caller's box; internal: the union of its children's boxes
+        std::int32_t parent = kNull;   // free node: the next free node
+        std::int32_t child1 = kNull;   // kNull for a leaf (and a free node)
+        std::int32_t child2 = kNull;
+        std::int32_t height = kFree;   // leaf 0, internal 1 + max(children), kFree for a free node
+        std::uint32_t userData = 0;
+
+        bool isLeaf() const { return child1 == kNull; }
+    };
+
+    /// Adds a proxy for `fatBox` (the caller enlarges it); returns its id. Throws std::invalid_argument for a
+    /// box with a NaN or infinite coordinate or lower > upper, leaving the tree untouched.
+    std::int32_t createProxy(const Aabb& fatBox, std::uint32_t userData);
+    /// Removes a proxy; its id may be handed out again. Throws std::invalid_argument if `proxy` is not live.
+    void destroyProxy(std::int32_t proxy);
+    /// Gives a proxy a new box: removes and reinserts its leaf (the id stays). Throws like createProxy and
+    /// destroyProxy, before touching anything.
+    void moveProxy(std::int32_t proxy, const Aabb& fatBox);
+
+    const Aabb& fatAabb(std::int32_t proxy) const {
+        assert(isProxy(proxy));
+        return nodes_[static_cast<std::size_t>(proxy)].box;
+    }
+    std::uint32_t userData(std::int32_t proxy) const {
+        assert(isProxy(proxy));
+        return nodes_[static_cast<std::size_t>(proxy)].userData;
+    }
+    /// True when `proxy` is the id of a live proxy.
+    bool isProxy(std::int32_t proxy) const {
+        return proxy >= 0 && static_cast<std::size_t>(proxy) < nodes_.size() &&
+               nodes_[static_cast<std::size_t>(proxy)].height == 0;
+    }
+
+    /// Calls callback(proxy, userData) for each proxy whose box overlaps `box` (touching counts, as
+    /// Aabb::overlaps), in tree order. A callback returning bool stops the query by returning false.
+    /// Allocates nothing unless the tree is deeper than kQueryStack - 1 levels; a NaN box meets nothing.
+    template <class Callback>
+    void query(const Aabb& box, Callback&& callback) const;
+
+    std::size_t proxyCount() const { return proxyCount_; }
+    /// Levels below the root: 0 for one proxy (and for none).
+    int height() const { return root_ == kNull ? 0 : nodes_[static_cast<std::size_t>(root_)].height; }
+    /// Sum of the perimeters of the internal nodes (the root included) over the root's perimeter: the tree's
+    /// expected query cost up to a constant, lower is better. 0 with fewer than two proxies.
+    double areaRatio() const;
+    /// Rebuilds every internal node top-down by the binned surface-area heuristic; proxy ids stay.
+    void rebuild();
+    /// Checks every invariant (links, heights, boxes, counts, free list); throws std::logic_error naming the first
+    /// one broken.
+    void validate() const;
+
+    /// Removes every proxy (keeps the memory).
+    void clear();
+
+    // Read access to the raw structure, for tests and tools.
+    std::int32_t root() const { return root_; }
+    std::int32_t freeList() const { return freeList_; }
+    std::size_t nodeCount() const { return nodes_.size(); }  ///< slots in the node array, free ones included
+    const Node& node(std::int32_t index) const { return nodes_.at(static_cast<std::size_t>(index)); }
+
+    /// query's fixed stack, in node ids: enough for any tree of height < kQueryStack.
+    static constexpr std::size_t kQueryStack = 128;
+
+private:
+    friend struct DynamicTreeTestAccess;  // tests break invariants on purpose to check validate()
+
+    // An internal node on insertion's branch-and-bound frontier, waiting to have its children looked at.
+    struct Candidate {
+        double bound;          // least cost of pairing the new leaf with anything below this node
+        double inherited;      // perimeter this node's ancestors and the node itself gain from the new leaf
+        std::int32_t height;   // the node's height: equal bounds are opened lowest first
+        std::int32_t node;
+    };
+
+    std::int32_t allocateNode();
+    void freeNode(std::int32_t index);
+    void insertLeaf(std::int32_t leaf);
+    void removeLeaf(std::int32_t leaf);
+    std::int32_t findBestSibling(const Aabb& box);
+    void refitNode(std::int32_t index);  // box and height from the children
+    void refitUpward(std::int32_t index);
+    bool rotate(std::int32_t index);  // true if it rotated
+    void checkProxy(std::int32_t proxy, const char* call) const;
+
+    Node& at(std::int32_t index) { return nodes_[static_cast<std::size_t>(index)]; }
+    const Node& at(std::int32_t index) const { return nodes_[static_cast<std::size_t>(index)]; }
+
+    std::vector<Node> nodes_;
+    std::int32_t root_ = kNull;
+    std::int32_t freeList_ = kNull;
+    std::size_t proxyCount_ = 0;
+    std::vector<Candidate> frontier_;  // insertion's search heap, kept to avoid allocating per insertion
+};
+
+template <class Callback>
+void DynamicTree::query(const Aabb& box, Callback&& callback) const {
+    if (root_ == kNull) return;
+    // Depth-first with both children pushed: at most one pending sibling per level above plus two children,
+    // so height + 1 entries suffice.
+    std::int32_t fixed[kQueryStack];
+    std::vector<std::int32_t> deep;  // used only for trees too deep for `fixed`
+    std::int32_t* stack = fixed;
+    const std::size_t needed = static_cast<std::size_t>(at(root_).height) + 1;
+    if (needed > kQueryStack) {
+        deep.resize(needed);
+        stack = deep.data();
+    }
+    std::size_t top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const std::int32_t id = stack[--top];
+        const Node& n = at(id);
+        if (!n.box.overlaps(box)) continue;
+        if (n.isLeaf()) {
+            if constexpr (std::is_void_v<std::invoke_result_t<Callback&, std::int32_t, std::uint32_t>>) {
+                callback(id, n.userData);
+            } else {
+                if (!callback(id, n.userData)) return;
+            }
+        } else {
+            stack[top++] = n.child2;
+            stack[top++] = n.child1;
+        }
+    }
+}
+
+}  // namespace physim
