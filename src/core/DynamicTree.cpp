@@ -202,6 +202,15 @@ std::int32_t DynamicTree::findBestSibling(const Aabb& box) {
     return best;
 }
 
+void DynamicTree::replaceChild(std::int32_t parent, std::int32_t from, std::int32_t to) {
+    if (parent == kNull) {
+        root_ = to;
+        return;
+    }
+    Node& p = at(parent);
+    (p.child1 == from ? p.child1 : p.child2) = to;
+}
+
 void DynamicTree::insertLeaf(std::int32_t leaf) {
     if (root_ == kNull) {
         root_ = leaf;
@@ -220,12 +229,7 @@ void DynamicTree::insertLeaf(std::int32_t leaf) {
     p.height = at(sibling).height + 1;
     at(sibling).parent = newParent;
     at(leaf).parent = newParent;
-    if (oldParent == kNull) {
-        root_ = newParent;
-    } else {
-        Node& o = at(oldParent);
-        (o.child1 == sibling ? o.child1 : o.child2) = newParent;
-    }
+    replaceChild(oldParent, sibling, newParent);
     refitUpward(newParent);  // the new parent first: a rotation there may pair the leaf lower down
 }
 
@@ -238,12 +242,7 @@ void DynamicTree::removeLeaf(std::int32_t leaf) {
     const std::int32_t grand = at(parent).parent;
     const std::int32_t sibling = at(parent).child1 == leaf ? at(parent).child2 : at(parent).child1;
     at(sibling).parent = grand;
-    if (grand == kNull) {
-        root_ = sibling;
-    } else {
-        Node& g = at(grand);
-        (g.child1 == parent ? g.child1 : g.child2) = sibling;
-    }
+    replaceChild(grand, parent, sibling);
     freeNode(parent);
     at(leaf).parent = kNull;
     // Boxes only shrink and heights only drop: refit until nothing changes. Rotations are left to insertions
@@ -321,10 +320,8 @@ bool DynamicTree::rotate(std::int32_t index) {
     if (best.x == kNull) return false;
 
     const std::int32_t px = at(best.x).parent, py = at(best.y).parent;
-    Node& nodeX = at(px);
-    (nodeX.child1 == best.x ? nodeX.child1 : nodeX.child2) = best.y;
-    Node& nodeY = at(py);
-    (nodeY.child1 == best.y ? nodeY.child1 : nodeY.child2) = best.x;
+    replaceChild(px, best.x, best.y);
+    replaceChild(py, best.y, best.x);
     at(best.x).parent = py;
     at(best.y).parent = px;
     // Refit the changed nodes below A, then A's height (its box is the same union).

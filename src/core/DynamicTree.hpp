@@ -105,6 +105,7 @@ private:
 
     std::int32_t allocateNode();
     void freeNode(std::int32_t index);
+    void replaceChild(std::int32_t parent, std::int32_t from, std::int32_t to);  // parent kNull: the root
     void insertLeaf(std::int32_t leaf);
     void removeLeaf(std::int32_t leaf);
     std::int32_t findBestSibling(const Aabb& box);

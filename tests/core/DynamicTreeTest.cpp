@@ -209,26 +209,25 @@ TEST(DynamicTree, SiblingSearchFindsTheLeastCost) {
     for (const double side : {3.0, 50.0}) {
         DynamicTree tree;
         for (int i = 0; i < 400; ++i) tree.createProxy(randomBox(rng, side), 0);
+        std::vector<double> cost(tree.nodeCount());
         for (int trial = 0; trial < 200; ++trial) {
             const Aabb leaf = randomBox(rng, side);
+            // Every node's cost, top down: the growth of its ancestors, root first, plus its own merged perimeter.
             double least = std::numeric_limits<double>::infinity();
-            for (std::int32_t s = 0; s < static_cast<std::int32_t>(tree.nodeCount()); ++s) {
-                if (tree.node(s).height == DynamicTree::kFree) continue;
-                std::vector<std::int32_t> path;  // root ... parent of s
-                for (std::int32_t a = tree.node(s).parent; a != DynamicTree::kNull; a = tree.node(a).parent) path.push_back(a);
-                double inherited = 0.0;
-                for (auto it = path.rbegin(); it != path.rend(); ++it)
-                    inherited += perimeter(Aabb::merged(tree.node(*it).box, leaf)) - perimeter(tree.node(*it).box);
-                least = std::min(least, perimeter(Aabb::merged(tree.node(s).box, leaf)) + inherited);
+            std::vector<std::pair<std::int32_t, double>> stack{{tree.root(), 0.0}};
+            while (!stack.empty()) {
+                const auto [id, inherited] = stack.back();
+                stack.pop_back();
+                const DynamicTree::Node& n = tree.node(id);
+                const double merged = perimeter(Aabb::merged(n.box, leaf));
+                cost[static_cast<std::size_t>(id)] = merged + inherited;
+                least = std::min(least, merged + inherited);
+                if (n.isLeaf()) continue;
+                stack.emplace_back(n.child1, inherited + (merged - perimeter(n.box)));
+                stack.emplace_back(n.child2, inherited + (merged - perimeter(n.box)));
             }
             const std::int32_t found = Access::bestSibling(tree, leaf);
-            double inherited = 0.0;
-            std::vector<std::int32_t> path;
-            for (std::int32_t a = tree.node(found).parent; a != DynamicTree::kNull; a = tree.node(a).parent) path.push_back(a);
-            for (auto it = path.rbegin(); it != path.rend(); ++it)
-                inherited += perimeter(Aabb::merged(tree.node(*it).box, leaf)) - perimeter(tree.node(*it).box);
-            const double cost = perimeter(Aabb::merged(tree.node(found).box, leaf)) + inherited;
-            ASSERT_LE(cost, least * (1.0 + 1e-12)) << "trial " << trial;
+            ASSERT_LE(cost[static_cast<std::size_t>(found)], least * (1.0 + 1e-12)) << "trial " << trial;
         }
     }
 }
