@@ -14,6 +14,7 @@
 //     scratch kept between steps as in the World).
 //   brute: the same moves, then all n^2/2 pairs of boxes tested.
 // Build: n createProxy calls into an empty tree; rebuild(): the binned top-down rebuild of the same tree.
+// Query: each of the n enlarged boxes queried in the built tree (the cost of a query, from the tree's quality).
 // Patterns: insertion-order cases for the tree's height (a row left to right, a column, a grid in raster order,
 // identical boxes, boxes nested in one another), with the height and area ratio reached.
 // With Box2D 2.4.1 (Debian libbox2d-dev) found at configure time, its b2DynamicTree runs the same build and
@@ -211,6 +212,19 @@ void BM_TreeBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_TreeBuild)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 
+void BM_TreeQuery(benchmark::State& state) {
+    const Scene scene(static_cast<std::size_t>(state.range(0)));
+    DynamicTree tree;
+    for (std::uint32_t i = 0; i < scene.bodies.size(); ++i) tree.createProxy(scene.bodies[i].aabb.fattened(kMargin), i);
+    std::size_t hits = 0;
+    for (auto _ : state) {
+        for (const BodyData& b : scene.bodies) tree.query(b.aabb.fattened(kMargin), [&](std::int32_t, std::uint32_t) { ++hits; });
+        benchmark::DoNotOptimize(hits);
+    }
+    state.counters["hits_per_query"] = static_cast<double>(hits) / static_cast<double>(state.iterations() * scene.bodies.size());
+}
+BENCHMARK(BM_TreeQuery)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
+
 void BM_TreeRebuild(benchmark::State& state) {
     const Scene scene(static_cast<std::size_t>(state.range(0)));
     DynamicTree tree;
@@ -335,6 +349,28 @@ void BM_Box2DBuild(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_Box2DBuild)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
+
+struct Box2DCount {
+    std::size_t hits = 0;
+    bool QueryCallback(std::int32_t) {
+        ++hits;
+        return true;
+    }
+};
+
+void BM_Box2DQuery(benchmark::State& state) {
+    const Scene scene(static_cast<std::size_t>(state.range(0)));
+    b2DynamicTree tree;
+    for (std::uint32_t i = 0; i < scene.bodies.size(); ++i)
+        tree.CreateProxy(toBox2D(scene.bodies[i].aabb), reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
+    Box2DCount count;
+    for (auto _ : state) {
+        for (const BodyData& b : scene.bodies) tree.Query(&count, toBox2D(b.aabb.fattened(kMargin)));
+        benchmark::DoNotOptimize(count.hits);
+    }
+    state.counters["hits_per_query"] = static_cast<double>(count.hits) / static_cast<double>(state.iterations() * scene.bodies.size());
+}
+BENCHMARK(BM_Box2DQuery)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 #endif
 
 }  // namespace

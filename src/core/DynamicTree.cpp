@@ -132,9 +132,10 @@ void DynamicTree::clear() {
 // with it: cost(S) = perimeter(S + L) for the new parent plus, for every ancestor A of S, perimeter(A + L) -
 // perimeter(A). Every node is costed when first seen (its box and its ancestors' growth are then known); an
 // internal node N is queued to be opened with the bound perimeter(L) + (growth of N and its ancestors), below
-// which nothing under N can cost. Best first (as Bittner et al.): the queue is a heap on that bound and the
-// search stops when the smallest bound cannot beat the best found, so only nodes whose bound is below the
-// answer are opened (measured: half the node reads of a depth-first search with the same bound).
+// which nothing under N can cost. Best first, as in Bittner, Hapala, Havran 2013, "Fast Insertion-Based
+// Optimization of Bounding Volume Hierarchies": the queue is a heap on that bound and the search stops when the
+// smallest bound cannot beat the best found, so only nodes whose bound is below the answer are opened
+// (measured: half the node reads of a depth-first search with the same bound).
 // Equal costs go to the lower sibling and equal bounds are opened lowest first: identical boxes (a spawner's
 // burst) would otherwise all pair with the root and make a chain; this grows the shorter side, as a balanced
 // tree would.
@@ -281,10 +282,10 @@ void DynamicTree::refitUpward(std::int32_t index) {
     }
 }
 
-// Tree rotations (Kopta et al. 2012, as used by Bittner et al. and Box2D v3): at node A with children B and C,
-// swap a child with a grandchild on the other side (B<->F, B<->G, C<->D, C<->E) or two grandchildren across
-// (D<->F, D<->G), whichever shrinks the summed perimeter of B and C the most. A's box is unchanged; only strict
-// gains are applied, so rotations never cycle.
+// Tree rotations (Kopta et al. 2012, "Fast, Effective BVH Updates for Animated Scenes"; Box2D v3 uses the
+// child-grandchild ones): at node A with children B (D, E) and C (F, G), swap a child with a grandchild on the
+// other side (B<->F, B<->G, C<->D, C<->E) or two grandchildren across (D<->F, D<->G), whichever shrinks the summed
+// perimeter of B and C the most. A's box is unchanged; only strict gains are applied, so rotations never cycle.
 bool DynamicTree::rotate(std::int32_t index) {
     const Node& a = at(index);
     const std::int32_t b = a.child1, c = a.child2;
