@@ -4,8 +4,8 @@
 //
 // Leaves are proxies holding the caller's (already enlarged) box and a user value; internal nodes hold the union
 // of their two children's boxes. Insertion picks the sibling that adds the least total perimeter to the tree
-// (the surface-area heuristic in 2D, searched exactly by branch and bound) and then walks to the root refitting
-// boxes and applying tree rotations that lower the perimeter. docs/collision.md ("Dynamic tree") has the design
+// (the surface-area heuristic in 2D, searched exactly by branch and bound) and then walks up refitting boxes and
+// applying tree rotations that lower the perimeter. docs/collision.md ("Dynamic tree") has the design
 // and the measurements.
 //
 // Deterministic: the same calls in the same order give the same nodes, bit for bit. const members (query above
@@ -28,7 +28,7 @@ public:
     static constexpr std::int32_t kFree = -1;  ///< Node::height of a free slot
 
     /// One slot of the node array. A proxy id is the index of its leaf and stays valid until destroyProxy.
-    struct Node {
+    struct alignas(64) Node {
         Aabb box;                      // leaf: the caller's box; internal: the union of its children's boxes
         std::int32_t parent = kNull;   // free node: the next free node
         std::int32_t child1 = kNull;   // kNull for a leaf (and a free node)
@@ -95,19 +95,23 @@ public:
 private:
     friend struct DynamicTreeTestAccess;  // tests break invariants on purpose to check validate()
 
-    // A node on the branch-and-bound frontier of insertion, with the perimeter its ancestors gain.
+    // An internal node on insertion's branch-and-bound frontier, waiting to have its children looked at.
     struct Candidate {
+        double bound;          // least cost of pairing the new leaf with anything below this node
+        double inherited;      // perimeter this node's ancestors and the node itself gain from the new leaf
+        std::int32_t height;   // the node's height: equal bounds are opened lowest first
         std::int32_t node;
-        double inherited;
     };
 
     std::int32_t allocateNode();
     void freeNode(std::int32_t index);
+    void replaceChild(std::int32_t parent, std::int32_t from, std::int32_t to);  // parent kNull: the root
     void insertLeaf(std::int32_t leaf);
     void removeLeaf(std::int32_t leaf);
     std::int32_t findBestSibling(const Aabb& box);
+    void refitNode(std::int32_t index);  // box and height from the children
     void refitUpward(std::int32_t index);
-    void rotate(std::int32_t index);
+    bool rotate(std::int32_t index);  // true if it rotated
     void checkProxy(std::int32_t proxy, const char* call) const;
 
     Node& at(std::int32_t index) { return nodes_[static_cast<std::size_t>(index)]; }
@@ -117,7 +121,7 @@ private:
     std::int32_t root_ = kNull;
     std::int32_t freeList_ = kNull;
     std::size_t proxyCount_ = 0;
-    std::vector<Candidate> frontier_;  // insertion's search stack, kept to avoid allocating per insertion
+    std::vector<Candidate> frontier_;  // insertion's search heap, kept to avoid allocating per insertion
 };
 
 template <class Callback>
