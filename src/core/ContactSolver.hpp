@@ -9,8 +9,8 @@
 //     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
 //     bodies would close the gap within the substep, and then stop them exactly at contact;
 //   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
-// A point that meets its partner faster than the restitution threshold bounces at once: its normal speed becomes
-// e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
+// A point that meets its partner faster than the restitution threshold bounces in that substep: its normal speed
+// becomes e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
 // Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses:
 // static while the impulse that stops sliding is within mu_s times that sum, else clamped to mu_d times it. In
 // 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row

@@ -240,11 +240,15 @@ void WorldImpl::solve() {
                 b.sleepTime += dt;
             else
                 b.sleepTime = 0.0;
-            enlarged[i] = proxyOutgrown(b);
+            // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
+            const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
+            enlarged[i] = static_cast<std::uint8_t>((proxyOutgrown(b) ? 1 : 0) |
+                                                    (sim.dynamic && travel > 0.5 * b.coreRadius ? 2 : 0));
         }
     });
+    fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
     for (std::size_t i = 0; i < n; ++i)
-        if (enlarged[i]) moveProxy(bodies[sims[i].body]);
+        if (enlarged[i] & 1) moveProxy(bodies[sims[i].body]);
 }
 
 }  // namespace physim

@@ -181,6 +181,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.unitMass = computeMassProperties(def.shape);
     b.localCenter = b.unitMass.centroid;
     b.extent = extentAbout(def.shape, b.localCenter);
+    b.coreRadius = coreRadius(def.shape);
     b.xf = {def.position, Rotation::fromAngle(def.angle)};
     b.angle = def.angle;
     b.center = b.xf.apply(b.localCenter);
@@ -204,6 +205,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (def.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 
+    w.touched.push_back(index);
     ++w.liveCount;
     if (b.type == BodyType::Dynamic) ++w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) ++w.continuousCount;
@@ -255,6 +257,7 @@ BodyData& World::mutableBody(BodyId id, const char* call) {
     at(id);
     impl_->requireNotStepping(call);
     impl_->touchingValid = false;
+    impl_->touched.push_back(id.index);
     return impl_->bodies[id.index];
 }
 
@@ -628,13 +631,19 @@ void World::step(double dt) {
     w.events.impacts.clear();
     w.touchingValid = false;
 
+    // Bodies made or changed since the last step got proxies before dt was known: grow them for this step's motion.
+    for (const std::uint32_t slot : w.touched) {
+        const BodyData& b = w.bodies[slot];
+        if (b.alive && b.movable() && w.proxyOutgrown(b)) w.moveProxy(b);
+    }
+    w.touched.clear();
     // Pairs need a moved proxy and an awake body: a static body moved next to sleepers wakes them itself.
     runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2 && !w.awake.empty(),
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
     runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
     if (!w.awake.empty()) w.solve();
-    runStage(w.profile, Stage::Continuous, w.continuousCount > 0 && !w.awake.empty(),
+    runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.constraints.size() : 0;

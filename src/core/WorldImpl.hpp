@@ -75,7 +75,9 @@ struct WorldImpl {
     std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<JointConstraint> jointConstraints;
-    std::vector<std::uint8_t> enlarged;          // per awake body: its proxy must move
+    std::vector<std::uint8_t> enlarged;          // per awake body: proxy to move (bit 0), fast (bit 1)
+    bool fastBodies = false;                     // a dynamic body moved more than half its core radius
+    std::vector<std::uint32_t> touched;          // bodies changed since the last step: proxies to check          // per awake body: its proxy must move
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
     std::vector<std::uint32_t> splitStack;
     std::vector<std::uint32_t> splitMembers;
