@@ -142,9 +142,8 @@ namespace {
 // What a point owes when it bounces: the normal speed to reach (m/s) and the gap to open now (m).
 struct Bounce {
     bool active = false;
-    double target = 0.0;
-    double gap = 0.0;          // immovable partner: the separation to open, m
-    double contactTime = 0.0;  // two moving bodies: when in the substep they met, s (solve pass; 0 in relax)
+    double target = 0.0;  // normal speed to leave at, m/s
+    double gap = 0.0;     // separation to open now, m
 };
 
 Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double separation,
@@ -156,13 +155,11 @@ Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, d
     if (!(e > 0.0 && vn < limit)) return {};
     const double speed = -vn - (pass.useBias ? 0.0 : pass.h * c.normalAcceleration);
     const double target = e * speed;
-    if (!pass.useBias) return {true, target, 0.0, 0.0};
-    // Met in the solve pass, a gap s before contact. Against an immovable body: open the gap now so that after this
-    // substep's move (target h) the separation is e s: the mirror of the fall (exact retrace for e = 1). Between
-    // two moving bodies: each goes on as if its velocity changed at the moment they met, s / |vn| into the
-    // substep, so a blow passed down a row of balls within one substep leaves no ball inside another.
+    if (!pass.useBias) return {true, target, 0.0};
+    // Met in the solve pass, a gap s before contact: open the gap now so that after this substep's move
+    // (target h) the separation is e s, the mirror of the approach (an exact retrace for e = 1).
     const double s = std::max(separation, 0.0);
-    return {true, target, (e - 1.0) * s - target * pass.h, s / -vn};
+    return {true, target, (e - 1.0) * s - target * pass.h};
 }
 
 // Moves the bodies apart along the normal at the point as a position "impulse" q (kg m) would.
@@ -181,7 +178,6 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // Applies the bounces, both points of a face together when both bounce (a box landing flat stays level), else
 // one at a time. A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2]) {
-    const bool twoMoving = c.invMassA > 0.0 && c.invMassB > 0.0;
     auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]); };
     if (c.pointCount == 2 && bounce[0].active && bounce[1].active && c.invDet > 0.0) {
         const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
@@ -189,11 +185,10 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
         if (x1 >= 0.0 && x2 >= 0.0) {
             const double x[2] = {x1, x2};
             const double g1 = bounce[0].gap, g2 = bounce[1].gap;
-            double q[2] = {(c.k22 * g1 - c.k12 * g2) * c.invDet, (c.k11 * g2 - c.k12 * g1) * c.invDet};
+            const double q[2] = {(c.k22 * g1 - c.k12 * g2) * c.invDet, (c.k11 * g2 - c.k12 * g1) * c.invDet};
             for (int i = 0; i < 2; ++i) {
                 ContactConstraintPoint& cp = c.points[i];
                 pushNormal(c, A, B, cp, x[i]);
-                if (twoMoving) q[i] = -(cp.normalImpulse + x[i]) * bounce[i].contactTime;
                 cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
                 cp.normalImpulse = 0.0;
             }
@@ -206,12 +201,9 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
         ContactConstraintPoint& cp = c.points[i];
         const double impulse = std::max(cp.normalMass * (bounce[i].target - speedAt(i)), 0.0);
         pushNormal(c, A, B, cp, impulse);
-        // The stop (this pass's impulse) and the bounce together changed the velocities; see planBounce.
-        const double q = twoMoving ? -(cp.normalImpulse + impulse) * bounce[i].contactTime
-                                   : bounce[i].gap * cp.normalMass;
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
         cp.normalImpulse = 0.0;
-        shift(c, cp, A, B, q);
+        shift(c, cp, A, B, bounce[i].gap * cp.normalMass);
     }
 }
 
