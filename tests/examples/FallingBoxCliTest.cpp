@@ -68,11 +68,11 @@ TEST(FallingBoxCli, HeadlessRunWritesTheFinalStateAndGraph) {
     EXPECT_NEAR(box["position"][0].get<double>(), 0.0, 1e-6);
     EXPECT_NEAR(box["angle"].get<double>(), 0.0, 1e-6);
 
-    // One graph point per frame: 160 frames, plus the title comment and the header.
+    // One graph point per frame: 160 frames, plus the title and series comments and the header.
     std::ifstream csv(dir / "graph_0.csv");
     int lines = 0;
     for (std::string l; std::getline(csv, l);) ++lines;
-    EXPECT_EQ(lines, 162);
+    EXPECT_EQ(lines, 163);
     EXPECT_TRUE(std::filesystem::exists(dir / "graphs.png"));
     std::filesystem::remove_all(dir);
 }
