@@ -12,15 +12,19 @@
 #include <TROOT.h>
 #include <TSystem.h>
 
+#include <TMemFile.h>
+#include <unistd.h>
+
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <iostream>
 #include <regex>
 #include <stdexcept>
+#include <thread>
 
 namespace physim {
 
@@ -39,8 +43,15 @@ struct GraphsManager::Root {
     std::unique_ptr<TCanvas> canvas;              // the live window; null headless or once the user closed it
     std::vector<std::unique_ptr<PadPlot>> pads;   // the live canvas's pads
     std::chrono::steady_clock::time_point lastRefresh{};
+    mutable std::thread warmup;  // prepareExport's: joined before ROOT is used again here
 
-    ~Root() { canvas.reset(); }
+    void waitForWarmup() const {
+        if (warmup.joinable()) warmup.join();
+    }
+    ~Root() {
+        waitForWarmup();
+        canvas.reset();
+    }
 };
 
 namespace {
@@ -71,6 +82,51 @@ std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, cons
     const auto [cols, rows] = plot::padGrid(pads, w, h);
     if (pads > 1) canvas->Divide(cols, rows, 0.005f, 0.005f);
     return canvas;
+}
+
+// ROOT's one-time work for an export, on throwaway objects: a pad with every kind of series, legend and title,
+// saved as PNG (painter and image plugins, fonts), and a graph written to a file in memory (streamer infos,
+// compression). Failures are left to the real export to report.
+void warmUpExport() {
+    try {
+        ROOT::EnableThreadSafety();  // ROOT's own locks, should the simulation call ROOT meanwhile
+        gROOT->SetBatch(kTRUE);
+        const Int_t ignoreLevel = gErrorIgnoreLevel;
+        gErrorIgnoreLevel = kWarning;
+        {
+            TCanvas canvas("physim_graphs_warmup", "", 240, 180);
+            TGraph markers, curve;
+            markers.SetMarkerStyle(21);
+            const std::vector<plot::Point> a{{0, 1}, {1, 1.0000001}, {2, 1}}, b{{0, 0}, {1, 1}, {2, 4}};
+            PadPlot pad;
+            pad.draw(canvas, "t;x (s);y (m)",
+                     {{&a, GraphMode::WITH_LINES, &markers, "a"}, {&b, GraphMode::CURVE, &curve, "b"}}, false);
+            const std::string png = (std::filesystem::temp_directory_path() /
+                                     ("physim-warmup-" + std::to_string(::getpid()) + ".png"))
+                                        .string();
+            canvas.SaveAs(png.c_str());
+            std::error_code ec;
+            std::filesystem::remove(png, ec);
+        }
+        TMemFile file("physim-warmup.root", "RECREATE");
+        TGraph g(2);
+        g.SetTitle("t: a;x;y");
+        g.Write("g");
+        file.Close();
+        gErrorIgnoreLevel = ignoreLevel;
+    } catch (...) {
+    }
+}
+
+// "x,y\n" with the shortest decimal form that reads back as the same doubles (exact, and several times faster
+// than an ostream at 17 digits).
+void appendRow(std::string& out, double x, double y) {
+    char buf[64];
+    char* end = std::to_chars(buf, buf + 30, x).ptr;
+    *end++ = ',';
+    end = std::to_chars(end, buf + 62, y).ptr;
+    *end++ = '\n';
+    out.append(buf, end);
 }
 
 // One line on stderr per process: a program restarting its simulation must not repeat it.
@@ -214,7 +270,7 @@ void GraphsManager::drawPads(TCanvas& canvas, bool live, std::vector<std::unique
 }
 
 void GraphsManager::render() {
-    if (!live_ || !root_ || !root_->canvas) return;
+    if (!live_ || !root_ || !root_->canvas) return;  // (live: no warm-up thread)
     // Every frame: ROOT's own interaction (zoom an axis, the value under the mouse, closing) stays responsive.
     gSystem->ProcessEvents();
     if (!root_->canvas->GetCanvasImp()) {
@@ -253,28 +309,35 @@ const std::string& GraphsManager::label(int i) const { return graph(i).label; }
 const std::vector<std::pair<double, double>>& GraphsManager::points(int i) const { return graph(i).points; }
 std::size_t GraphsManager::skippedPoints(int i) const { return graph(i).skipped; }
 
+void GraphsManager::prepareExport() {
+    if (live_ || !root_ || root_->warmup.joinable()) return;
+    root_->warmup = std::thread(warmUpExport);
+}
+
 std::vector<std::string> GraphsManager::writeFiles(const std::string& directory) const {
     namespace fs = std::filesystem;
     fs::create_directories(directory);
-    // graph_<i>.csv of an earlier run with more graphs would read as this run's.
-    static const std::regex csvName(R"(graph_[0-9]+\.csv)");
+    // Files of an earlier run (more graphs, or graphs where this run has none) would read as this run's.
+    static const std::regex ours(R"(graph_[0-9]+\.csv|graphs\.png|graphs\.root)");
     for (const auto& entry : fs::directory_iterator(directory))
-        if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), csvName))
+        if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), ours))
             fs::remove(entry.path());
 
     std::vector<std::string> written;
     for (std::size_t i = 0; i < graphs_.size(); ++i) {
         const fs::path path = fs::path(directory) / ("graph_" + std::to_string(i) + ".csv");
-        std::ofstream out(path);
-        out << "# " << padTitles_[static_cast<std::size_t>(graphs_[i].pad)] << "\n# series: " << graphs_[i].label
-            << "\nx,y\n"
-            << std::setprecision(17);
-        for (const auto& [x, y] : graphs_[i].points) out << x << ',' << y << '\n';
+        std::string text = "# " + padTitles_[static_cast<std::size_t>(graphs_[i].pad)] + "\n# series: " +
+                           graphs_[i].label + "\nx,y\n";
+        text.reserve(text.size() + 40 * graphs_[i].points.size());
+        for (const auto& [x, y] : graphs_[i].points) appendRow(text, x, y);
+        std::ofstream out(path, std::ios::binary);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
         if (!out) throw std::runtime_error("physim: cannot write " + path.string());
         written.push_back(path.string());
     }
     if (!root_) return written;
 
+    root_->waitForWarmup();  // the CSV files above needed no ROOT: written while it finished starting
     const bool wasBatch = gROOT->IsBatch();
     gROOT->SetBatch(kTRUE);  // a canvas of its own, off screen: a live window is left as it is
     {

@@ -20,7 +20,8 @@ constexpr double kLabelPx = 13, kAxisTitlePx = 15, kPadTitlePx = 16, kLegendPx =
 // (measured on the ROOT 6.40 wheel), a horizontal one's about that plus 2 pixels.
 constexpr double kTitleOffsetPx = 1.5625;
 constexpr double kLabelOffsetPx = 5, kGapPx = 7, kEdgePx = 6;
-constexpr double kTopPx = 30, kRightPx = 14;
+// Above the frame: the pad's title, and under it the power of ten ROOT may move to the top of the y axis.
+constexpr double kTopPx = 40, kRightPx = 14;
 constexpr double kLegendRowPx = 18, kLegendSymbolPx = 30, kLegendInsetPx = 8;
 // Markers, pixels apart at most: a series of markers keeps one per 5 pixels of the frame's width, one drawn
 // with lines one per 12 (the line carries the shape). A line keeps two points per pixel column.
@@ -232,7 +233,7 @@ void PadPlot::draw(TVirtualPad& pad, const std::string& title, const std::vector
         title_->SetTextSize(kPadTitlePx);
         title_->SetTextAlign(22);
     }
-    title_->SetText(0.5 * (left + 1 - right), 1 - 0.5 * top, titles.title.c_str());
+    title_->SetText(0.5 * (left + 1 - right), 1 - (kPadTitlePx / 2 + 5) / padH, titles.title.c_str());
     title_->Draw();
 
     legend_.reset();

@@ -97,9 +97,17 @@ public:
 
     /// Writes graph_<i>.csv for each graph (two comment lines, the pad's title and the series' label, then an
     /// "x,y" header and every point), graphs.png with every pad, and graphs.root holding each series as a TGraph
-    /// named graph_<i>. graph_<i>.csv files of an earlier, larger run are removed. Creates `directory`.
+    /// named graph_<i>. Files of these names from an earlier run are removed first. Creates `directory`.
     /// Returns the paths written.
     std::vector<std::string> writeFiles(const std::string& directory) const;
+
+    /// Headless, after build(), in a run that will end with writeFiles: starts ROOT's one-time work (its
+    /// interpreter, painters, image and file formats: most of a first export's cost) on a second thread while
+    /// the simulation runs, so the export at the end costs little more than its own drawing and writing.
+    /// Meanwhile the manager does not use ROOT (points go to plain vectors) and writeFiles, render and the
+    /// destructor wait for the thread; a simulation that calls ROOT itself during the run should not ask for
+    /// this. Does nothing live, before build() or without graphs.
+    void prepareExport();
 
 private:
     struct Graph;
