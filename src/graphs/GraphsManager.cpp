@@ -11,6 +11,7 @@
 #include <TGraph.h>
 #include <TROOT.h>
 #include <TSystem.h>
+#include <TVirtualX.h>
 
 #include <TMemFile.h>
 #include <unistd.h>
@@ -50,7 +51,10 @@ struct GraphsManager::Root {
     }
     ~Root() {
         waitForWarmup();
-        canvas.reset();
+        if (canvas) {
+            canvas.reset();
+            gSystem->ProcessEvents();  // the window goes now, not at the next event (a restart makes a new one)
+        }
     }
 };
 
@@ -63,16 +67,16 @@ struct MarkerStyle {
     Style_t marker;
     Size_t size;
 };
-constexpr MarkerStyle kMarkerStyles[] = {{kBlue + 1, 21, 0.8f},     {kRed + 1, 33, 1.2f},    {kGreen + 3, 22, 1.0f},
-                                         {kMagenta + 2, 23, 1.0f}, {kOrange + 7, 34, 1.0f}, {kCyan + 3, 29, 1.2f},
-                                         {kBlack, 47, 1.0f}};
+constexpr MarkerStyle kMarkerStyles[] = {{kBlue + 1, 21, 1.0f},     {kRed + 1, 33, 1.5f},    {kGreen + 3, 22, 1.2f},
+                                         {kMagenta + 2, 23, 1.2f}, {kOrange + 7, 34, 1.2f}, {kCyan + 3, 29, 1.5f},
+                                         {kBlack, 47, 1.2f}};
 struct LineStyle {
     Color_t color;
     Style_t style;
     Width_t width;
 };
-constexpr LineStyle kCurveStyles[] = {{kOrange - 3, 1, 4}, {kGray + 1, 2, 3}, {kAzure - 4, 1, 4},
-                                      {kPink - 4, 7, 3},   {kSpring - 5, 1, 4}};
+constexpr LineStyle kCurveStyles[] = {{kOrange - 3, 1, 3}, {kGray + 1, 2, 3}, {kAzure - 4, 1, 3},
+                                      {kPink - 4, 7, 3},   {kSpring - 5, 1, 3}};
 
 std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, const std::string& title, int x, int y,
                                     int w, int h, int pads) {
@@ -338,8 +342,12 @@ std::vector<std::string> GraphsManager::writeFiles(const std::string& directory)
     if (!root_) return written;
 
     root_->waitForWarmup();  // the CSV files above needed no ROOT: written while it finished starting
+    // A canvas of its own, off screen, so a live window is left as it is. With an application object ROOT
+    // draws through X11 (gVirtualX): batch mode alone is not enough, its batch drawing interface goes in too.
     const bool wasBatch = gROOT->IsBatch();
-    gROOT->SetBatch(kTRUE);  // a canvas of its own, off screen: a live window is left as it is
+    TVirtualX* const screen = gVirtualX;
+    gROOT->SetBatch(kTRUE);
+    if (gGXBatch) gVirtualX = gGXBatch;
     {
         auto canvas = makeCanvas(this, "export", canvasTitle_, 0, 0, width_, height_,
                                  static_cast<int>(padTitles_.size()));
@@ -353,6 +361,7 @@ std::vector<std::string> GraphsManager::writeFiles(const std::string& directory)
         canvas.reset();  // before the pads' objects
         written.push_back(png.string());
     }
+    gVirtualX = screen;
     gROOT->SetBatch(wasBatch);
 
     // Every series, every point, in one ROOT file (graph_<i>), titled "title: label;x label;y label".

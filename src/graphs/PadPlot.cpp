@@ -23,10 +23,11 @@ constexpr double kLabelOffsetPx = 5, kGapPx = 7, kEdgePx = 6;
 // Above the frame: the pad's title, and under it the power of ten ROOT may move to the top of the y axis.
 constexpr double kTopPx = 40, kRightPx = 14;
 constexpr double kLegendRowPx = 18, kLegendSymbolPx = 30, kLegendInsetPx = 8;
-// Markers, pixels apart at most: a series of markers keeps one per 5 pixels of the frame's width, one drawn
-// with lines one per 12 (the line carries the shape). A line keeps two points per pixel column.
-constexpr double kMarkerEveryPx = 5, kMarkerOnLineEveryPx = 12;
-constexpr double kMarkerRadiusPx = 5;
+// Markers, at most one per so many pixels of the frame's width: about a marker's width for a series of
+// markers (a curve under them still shows between), sparser on a line (the line carries the shape). A line
+// keeps two points per pixel column.
+constexpr double kMarkerEveryPx = 8, kMarkerOnLineEveryPx = 12;
+constexpr double kMarkerRadiusPx = 6;
 // A relative plot spans at least this much (of the start value): a series kept exactly shows as a flat line
 // at 0 rather than as magnified rounding noise.
 constexpr double kRelativeMinSpan = 1e-12;
@@ -109,7 +110,8 @@ void PadPlot::draw(TVirtualPad& pad, const std::string& title, const std::vector
     if (userY) r.ylo = frame_->GetMinimumStored(), r.yhi = frame_->GetMaximumStored();
 
     // Margins from what they hold: the widest y tick label and the axis titles.
-    const double labelW = plot::textWidthPx(plot::widestTickLabel(r.ylo, r.yhi), kLabelPx);
+    // Plus half a digit: the estimate of ROOT's labels and of their font's widths is close, not exact.
+    const double labelW = plot::textWidthPx(plot::widestTickLabel(r.ylo, r.yhi), kLabelPx) + 0.3 * kLabelPx;
     const double yTitleCentre = kLabelOffsetPx + labelW + kGapPx + kAxisTitlePx / 2;
     const double left = (yTitleCentre + kAxisTitlePx / 2 + kEdgePx) / padW;
     const double xTitleCentre = kLabelOffsetPx + kLabelPx + kGapPx + kAxisTitlePx / 2;

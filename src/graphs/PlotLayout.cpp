@@ -187,26 +187,24 @@ std::string widestTickLabel(double lo, double hi, int divisions, int maxDigits) 
             step = f * p;
             break;
         }
-    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+    const double maxAbs = std::max(std::abs(first * step), std::abs(last * step));
+    auto decimalsFor = [](double s) { return std::max(0, -static_cast<int>(std::floor(std::log10(s) + 1e-9))); };
+    const int intDigits = maxAbs >= 1.0 ? static_cast<int>(std::floor(std::log10(maxAbs))) + 1 : 1;
+    // Too many digits: ROOT divides the labels by 10^e, e a multiple of 3 that brings the largest into
+    // [0.1, 100), and writes the power at the axis end (seen: 2e-4 as 0.2 x 10^-3, 5e-13 as 0.5 x 10^-12).
+    double scale = 1.0;
+    if (intDigits + decimalsFor(step) > maxDigits && maxAbs > 0.0)
+        scale = std::pow(10.0, 3.0 * std::floor((std::log10(maxAbs) + 1.0) / 3.0));
+    const int decimals = decimalsFor(step / scale);
     std::string widest = "0";
     double widestPx = textWidthPx(widest, 1.0);
-    const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
     for (double k = first; k <= last && k - first < 100; k += 1.0) {
-        const double v = k * step;
-        const double magnitude = std::abs(v);
-        const int intDigits = magnitude >= 1.0 ? static_cast<int>(std::floor(std::log10(magnitude))) + 1 : 1;
-        std::string label;
-        if (intDigits + decimals > maxDigits) {
-            // ROOT moves a power of ten to the axis end; the labels keep the digits that tell ticks apart.
-            const int shown = std::clamp(static_cast<int>(std::floor(std::log10(magnitude / step))) + 1, 1, maxDigits);
-            label = (v < 0 ? "-8" : "8") + (shown > 1 ? "." + std::string(static_cast<std::size_t>(shown - 1), '8') : "");
-        } else {
-            char buf[64];
-            std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < step * 1e-9 ? 0.0 : v);
-            label = buf;
-        }
-        const double px = textWidthPx(label, 1.0);
-        if (px > widestPx) widest = label, widestPx = px;
+        const double v = k * step / scale;
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, std::abs(v) < 1e-9 * step / scale ? 0.0 : v);
+        const double px = textWidthPx(buf, 1.0);
+        if (px > widestPx) widest = buf, widestPx = px;
     }
     return widest;
 }

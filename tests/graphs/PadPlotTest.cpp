@@ -62,8 +62,8 @@ TEST_F(PadPlotTest, LongSeriesAreThinnedMarkersOverCurvesAndEveryOneNamed) {
     ASSERT_EQ(d.graphs.size(), 2u);
     EXPECT_STREQ(d.graphs[0]->GetTitle(), "analytic") << "the curve is drawn first, under the markers";
     EXPECT_STREQ(d.graphs[1]->GetTitle(), "simulated");
-    // 600 px wide: at most one marker per 5 px, two line points per pixel column.
-    EXPECT_LE(d.graphs[1]->GetN(), 600 / 5);
+    // 600 px wide: at most one marker per 8 px, two line points per pixel column.
+    EXPECT_LE(d.graphs[1]->GetN(), 600 / 8);
     EXPECT_LE(d.graphs[0]->GetN(), 2 * 600 + 2);
     EXPECT_EQ(d.graphs[1]->GetMarkerStyle(), 21) << "the series' style is kept";
     ASSERT_NE(d.legend, nullptr);

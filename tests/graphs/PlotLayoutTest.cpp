@@ -99,8 +99,11 @@ TEST(PlotLayout, WidestTickLabelFollowsRootsDigits) {
     EXPECT_EQ(widestTickLabel(0.0, 4.0).size(), 3u);
     EXPECT_EQ(widestTickLabel(-0.5, 0.5), "-0.5");
     EXPECT_EQ(widestTickLabel(0.0, 20000.0).size(), 5u);
-    // A 10-digit range gets ROOT's common power of ten: labels stay short.
-    EXPECT_LE(widestTickLabel(1.99999999, 2.00000001).size(), 7u);
+    // Too many digits: ROOT's common power of ten (a multiple of 3) and short labels. A relative energy change
+    // of -2.4e-4 is drawn with ticks -0.05 ... -0.2 and "x10^-3".
+    EXPECT_EQ(widestTickLabel(-2.4e-4, 1.2e-5).size(), 5u);
+    EXPECT_EQ(widestTickLabel(-5.5e-13, 5.5e-13), "-0.4");
+    EXPECT_EQ(widestTickLabel(0.0, 2e6).size(), 3u) << "0.2 ... 2.0 x 10^6";
     EXPECT_GT(textWidthPx("-0.5", 13.0), textWidthPx("0", 13.0));
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -92,6 +93,24 @@ TEST(LiveGraphs, BesideTheWindowRefreshingAndClosableWhileTheSimulationRuns) {
     EXPECT_GE(runner.simulation().time, 8.0 - 1e-9) << "the simulation ran to its end after the window closed";
     EXPECT_NE(err.find("graphs window closed; the simulation goes on"), std::string::npos) << err;
     EXPECT_GT(runner.simulation().graphsManager.points(0).size(), 100u) << "points kept coming";
+}
+
+TEST(LiveGraphs, AWindowRunWritesItsFilesToo) {
+    // The export draws off screen while the live window is open (ROOT then draws through X11 otherwise).
+    const auto dir = std::filesystem::temp_directory_path() / "physim_live_graphs_out";
+    std::filesystem::remove_all(dir);
+    RunOptions options;
+    options.seconds = 1.0;
+    options.width = 320;
+    options.height = 240;
+    options.quiet = true;
+    options.outDir = dir.string();
+    Runner runner([] { return std::make_unique<Drop>(); }, options);
+    EXPECT_EQ(runner.run(), 0);
+    EXPECT_TRUE(runner.simulation().graphsManager.canvasOpen());
+    EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u);
+    EXPECT_TRUE(std::filesystem::exists(dir / "graphs.root"));
+    std::filesystem::remove_all(dir);
 }
 
 TEST(LiveGraphs, HeadlessNeverOpensIt) {
