@@ -117,6 +117,7 @@ std::vector<std::string> Runner::writeOutputs(const std::string& directory) cons
 }
 
 int Runner::run() {
+    if (options_.outDir) prepareOutputFolder(*options_.outDir);  // before any simulated time is spent
     const int code = options_.headless ? runHeadless() : runWindow();
     if (options_.outDir) {
         const auto written = writeOutputs(*options_.outDir);

@@ -4,6 +4,7 @@
 #include "PlotLayout.hpp"
 #include "RootApplication.hpp"
 
+#include <Buttons.h>
 #include <TCanvas.h>
 #include <TCanvasImp.h>
 #include <TError.h>
@@ -283,6 +284,12 @@ void GraphsManager::render() {
         root_->pads.clear();
         std::cerr << "physim: graphs window closed; the simulation goes on (--out still writes the graphs)\n";
         return;
+    }
+    // Not while a mouse button is held in the window: redrawing mid-drag would undo the zoom being drawn.
+    switch (root_->canvas->GetEvent()) {
+        case kButton1Down: case kButton2Down: case kButton3Down:
+        case kButton1Motion: case kButton2Motion: case kButton3Motion: return;
+        default: break;
     }
     const auto now = std::chrono::steady_clock::now();
     if (now - root_->lastRefresh < std::chrono::duration<double>(1.0 / refreshHz_)) return;

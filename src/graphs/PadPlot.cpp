@@ -104,8 +104,16 @@ void PadPlot::draw(TVirtualPad& pad, const std::string& title, const std::vector
             plot::paddedRange(yt.apply(ylo), yt.apply(yhi), yt.relative ? kRelativeMinSpan : 0.0);
     }
     if (userX) {
+        // The y range follows the points in the x range zoomed to.
         const TAxis& ax = *frame_->GetXaxis();
         r.xlo = ax.GetBinLowEdge(ax.GetFirst()), r.xhi = ax.GetBinUpEdge(ax.GetLast());
+        double vlo = INFINITY, vhi = -INFINITY;
+        for (const PadSeries& s : series)
+            for (const auto& [x, y] : *s.points)
+                if (x >= r.xlo && x <= r.xhi) vlo = std::min(vlo, y), vhi = std::max(vhi, y);
+        if (vlo <= vhi)
+            std::tie(r.ylo, r.yhi) =
+                plot::paddedRange(yt.apply(vlo), yt.apply(vhi), yt.relative ? kRelativeMinSpan : 0.0);
     }
     if (userY) r.ylo = frame_->GetMinimumStored(), r.yhi = frame_->GetMaximumStored();
 

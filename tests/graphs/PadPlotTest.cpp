@@ -152,6 +152,11 @@ TEST_F(PadPlotTest, ALiveZoomStaysAcrossRefreshes) {
     EXPECT_EQ(frame->GetMaximum(), 60);
     for (TGraph* g : contents(*canvas_).graphs)
         for (int i = 0; i < g->GetN(); ++i) EXPECT_LT(g->GetPointX(i), 205) << "thinned within the zoom";
+    frame->SetMinimum();  // y unzoomed: it follows the points in the zoomed x range, y = x / 2
+    frame->SetMaximum();
+    plot.draw(*canvas_, "t;x;y", {{&pts, GraphMode::WITH_LINES, &marker_, "simulated"}}, true);
+    EXPECT_NEAR(frame->GetMinimum(), 45, 3);
+    EXPECT_NEAR(frame->GetMaximum(), 105, 3);
     x.UnZoom();  // and back: the range follows the data again
     plot.draw(*canvas_, "t;x;y", {{&pts, GraphMode::WITH_LINES, &marker_, "simulated"}}, true);
     EXPECT_GT(x.GetXmax(), 1099);
