@@ -44,7 +44,7 @@ struct GraphsManager::Root {
     std::vector<std::unique_ptr<TGraph>> styles;  // one per series: its style and title; points only on export
     std::unique_ptr<TCanvas> canvas;              // the live window; null headless or once the user closed it
     std::vector<std::unique_ptr<PadPlot>> pads;   // the live canvas's pads
-    std::chrono::steady_clock::time_point lastRefresh{};
+    std::chrono::steady_clock::time_point nextRefresh{};
     mutable std::thread warmup;  // prepareExport's: joined before ROOT is used again here
 
     void waitForWarmup() const {
@@ -133,6 +133,9 @@ void appendRow(std::string& out, double x, double y) {
     *end++ = '\n';
     out.append(buf, end);
 }
+
+// A refresh waits at least this many times as long as the last one took.
+constexpr int kBusyFactor = 5;
 
 // One line on stderr per process: a program restarting its simulation must not repeat it.
 void warnNoDisplayOnce() {
@@ -291,12 +294,18 @@ void GraphsManager::render() {
         case kButton1Motion: case kButton2Motion: case kButton3Motion: return;
         default: break;
     }
-    const auto now = std::chrono::steady_clock::now();
-    if (now - root_->lastRefresh < std::chrono::duration<double>(1.0 / refreshHz_)) return;
-    root_->lastRefresh = now;
+    using Clock = std::chrono::steady_clock;
+    const auto now = Clock::now();
+    if (now < root_->nextRefresh) return;
     drawPads(*root_->canvas, true, root_->pads);
     root_->canvas->Modified();
     root_->canvas->Update();
+    // At most refreshHz times a second, and at most a fifth of the time: on a slow machine (or X server) the
+    // graphs refresh less often rather than slow the simulation's frames.
+    const auto took = Clock::now() - now;
+    root_->nextRefresh = now + std::max(std::chrono::duration_cast<Clock::duration>(
+                                            std::chrono::duration<double>(1.0 / refreshHz_)),
+                                        kBusyFactor * took);
 }
 
 void GraphsManager::reset() {

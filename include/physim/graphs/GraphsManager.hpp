@@ -69,7 +69,9 @@ public:
     /// and warned about on stderr (once per graph).
     /// Throws std::out_of_range for an unknown index, std::logic_error before build().
     void addPoint(int i, double x, double y);
-    /// Live mode: refreshes the canvas, at most `refreshHz` times a second. Headless: does nothing.
+    /// Live mode: lets ROOT handle the window's events (zoom, the value under the mouse, closing), and redraws
+    /// the pads at most `refreshHz` times a second and at most a fifth of the time (a slow refresh waits
+    /// longer), never while a mouse button is held in the window. Headless: does nothing.
     void render();
     /// Removes every point from every graph; the graphs stay.
     void reset();
