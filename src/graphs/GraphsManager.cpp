@@ -10,11 +10,11 @@
 #include <TError.h>
 #include <TFile.h>
 #include <TGraph.h>
+#include <TMemFile.h>
 #include <TROOT.h>
 #include <TSystem.h>
 #include <TVirtualX.h>
 
-#include <TMemFile.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -41,7 +41,7 @@ struct GraphsManager::Graph {
 
 // ROOT objects. The canvas goes before the pads' objects it shows (the destructor's body runs first).
 struct GraphsManager::Root {
-    std::vector<std::unique_ptr<TGraph>> styles;  // one per series: its style and title; points only on export
+    std::vector<std::unique_ptr<TGraph>> styles;  // one per series: its style (defaults, then the modifier)
     std::unique_ptr<TCanvas> canvas;              // the live window; null headless or once the user closed it
     std::vector<std::unique_ptr<PadPlot>> pads;   // the live canvas's pads
     std::chrono::steady_clock::time_point nextRefresh{};
@@ -91,15 +91,18 @@ std::unique_ptr<TCanvas> makeCanvas(const void* owner, const char* purpose, cons
 
 // ROOT's one-time work for an export, on throwaway objects: a pad with every kind of series, legend and title,
 // saved as PNG (painter and image plugins, fonts), and a graph written to a file in memory (streamer infos,
-// compression). Failures are left to the real export to report.
-void warmUpExport() {
+// compression). Failures are left to the real export to report. Names are the manager's own: ROOT replaces a
+// canvas of the same name.
+void warmUpExport(const void* owner) {
     try {
         ROOT::EnableThreadSafety();  // ROOT's own locks, should the simulation call ROOT meanwhile
         gROOT->SetBatch(kTRUE);
         const Int_t ignoreLevel = gErrorIgnoreLevel;
         gErrorIgnoreLevel = kWarning;
         {
-            TCanvas canvas("physim_graphs_warmup", "", 240, 180);
+            char name[96];
+            std::snprintf(name, sizeof name, "physim_graphs_warmup_%p", owner);
+            TCanvas canvas(name, "", 240, 180);
             TGraph markers, curve;
             markers.SetMarkerStyle(21);
             const std::vector<plot::Point> a{{0, 1}, {1, 1.0000001}, {2, 1}}, b{{0, 0}, {1, 1}, {2, 4}};
@@ -107,7 +110,7 @@ void warmUpExport() {
             pad.draw(canvas, "t;x (s);y (m)",
                      {{&a, GraphMode::WITH_LINES, &markers, "a"}, {&b, GraphMode::CURVE, &curve, "b"}}, false);
             const std::string png = (std::filesystem::temp_directory_path() /
-                                     ("physim-warmup-" + std::to_string(::getpid()) + ".png"))
+                                     (std::string(name) + "_" + std::to_string(::getpid()) + ".png"))
                                         .string();
             canvas.SaveAs(png.c_str());
             std::error_code ec;
@@ -331,7 +334,7 @@ std::size_t GraphsManager::skippedPoints(int i) const { return graph(i).skipped;
 
 void GraphsManager::prepareExport() {
     if (live_ || !root_ || root_->warmup.joinable()) return;
-    root_->warmup = std::thread(warmUpExport);
+    root_->warmup = std::thread(warmUpExport, static_cast<const void*>(this));
 }
 
 std::vector<std::string> GraphsManager::writeFiles(const std::string& directory) const {
