@@ -17,7 +17,8 @@ double steadySeconds() {
 
 std::string duration(double s) {
     char buf[64];
-    if (s < 60) std::snprintf(buf, sizeof buf, "%.0f s", s);
+    if (s < 10) std::snprintf(buf, sizeof buf, "%.1f s", s);
+    else if (s < 60) std::snprintf(buf, sizeof buf, "%.0f s", s);
     else if (s < 3600) std::snprintf(buf, sizeof buf, "%.0f min %02.0f s", std::floor(s / 60), std::fmod(s, 60));
     else std::snprintf(buf, sizeof buf, "%.0f h %02.0f min", std::floor(s / 3600), std::floor(std::fmod(s, 3600) / 60));
     return buf;
