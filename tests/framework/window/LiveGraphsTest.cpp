@@ -8,6 +8,8 @@
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Runner.hpp>
 
+#include <SFML/Graphics/RenderWindow.hpp>
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -111,6 +113,24 @@ TEST(LiveGraphs, AWindowRunWritesItsFilesToo) {
     EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u);
     EXPECT_TRUE(std::filesystem::exists(dir / "graphs.root"));
     std::filesystem::remove_all(dir);
+}
+
+TEST(LiveGraphs, ARestartReplacesTheWindow) {
+    // Space makes a new simulation with a new GraphsManager: one graphs window before and after.
+    XClient x;
+    ASSERT_TRUE(x) << "no X display";
+    Runner runner([] { return std::make_unique<Drop>(); }, RunOptions{});
+    sf::RenderWindow window(sf::VideoMode(320, 240), "physim test");
+    runner.restart();
+    for (int i = 0; i < 5; ++i) runner.frame(0.025, &window);
+    const auto first = x.find("physim graphs");
+    ASSERT_TRUE(first);
+    runner.restart();
+    for (int i = 0; i < 5; ++i) runner.frame(0.025, &window);
+    const auto second = x.find("physim graphs");
+    ASSERT_TRUE(second);
+    EXPECT_NE(*first, *second) << "a new window";
+    EXPECT_EQ(x.count("physim graphs"), 1) << "the old one is gone";
 }
 
 TEST(LiveGraphs, HeadlessNeverOpensIt) {

@@ -19,22 +19,28 @@ XClient::~XClient() {
 }
 
 std::optional<XClient::Window> XClient::find(const std::string& part) {
-    return find(DefaultRootWindow(dpy(display_)), part);
+    const auto found = matching(DefaultRootWindow(dpy(display_)), part, 1);
+    return found.empty() ? std::nullopt : std::optional<Window>(found.front());
 }
 
-std::optional<XClient::Window> XClient::find(Window w, const std::string& part) {
+int XClient::count(const std::string& part) {
+    return static_cast<int>(matching(DefaultRootWindow(dpy(display_)), part, 1000).size());
+}
+
+std::vector<XClient::Window> XClient::matching(Window w, const std::string& part, std::size_t limit) {
+    std::vector<Window> found;
     char* name = nullptr;
     if (XFetchName(dpy(display_), w, &name) && name) {
         const bool match = std::strstr(name, part.c_str()) != nullptr;
         XFree(name);
         XWindowAttributes a{};
-        if (match && XGetWindowAttributes(dpy(display_), w, &a) && a.map_state == IsViewable) return w;
+        if (match && XGetWindowAttributes(dpy(display_), w, &a) && a.map_state == IsViewable) found.push_back(w);
     }
     ::Window root = 0, parent = 0, *children = nullptr;
     unsigned n = 0;
-    if (!XQueryTree(dpy(display_), w, &root, &parent, &children, &n)) return std::nullopt;
-    std::optional<Window> found;
-    for (unsigned i = 0; i < n && !found; ++i) found = find(children[i], part);
+    if (!XQueryTree(dpy(display_), w, &root, &parent, &children, &n)) return found;
+    for (unsigned i = 0; i < n && found.size() < limit; ++i)
+        for (Window c : matching(children[i], part, limit - found.size())) found.push_back(c);
     if (children) XFree(children);
     return found;
 }

@@ -2,8 +2,10 @@
 // A test's own connection to the X server, looking at windows as another client (a window manager, xwininfo)
 // does. Xlib stays in XClient.cpp: its macros (None, Status, ...) clash with GoogleTest.
 
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace physim::test {
 
@@ -23,6 +25,8 @@ public:
 
     /// The first viewable window whose name contains `part`.
     std::optional<Window> find(const std::string& part);
+    /// How many viewable windows have a name containing `part`.
+    int count(const std::string& part);
     /// Position on the screen and size.
     XRect geometry(Window w);
     /// The window's pixels, as the server holds them.
@@ -31,7 +35,8 @@ public:
     void close(Window w);
 
 private:
-    std::optional<Window> find(Window w, const std::string& part);
+    /// Viewable windows under `w` (itself included) named with `part`, at most `limit`.
+    std::vector<Window> matching(Window w, const std::string& part, std::size_t limit);
 
     void* display_;  // Display*
 };
