@@ -8,7 +8,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtbb-dev
-  xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  xvfb xauth libgl1-mesa-dri fonts-dejavu-core libx11-dev
   python3 python3-venv
 )
 
