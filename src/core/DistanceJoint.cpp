@@ -15,7 +15,7 @@ constexpr double kMaxCorrection = 0.2;    // m per pass
 
 void prepareJoints(std::vector<BodyData>& bodies, std::vector<JointData>& joints, double h) {
     for (JointData& j : joints) {
-        if (!j.alive || !j.active) continue;
+        if (!j.alive || !j.active || j.type != JointType::Distance) continue;
         BodyData& A = bodies[j.a];
         BodyData& B = bodies[j.b];
         j.rA = A.xf.q.apply(j.localA);
@@ -36,7 +36,7 @@ void prepareJoints(std::vector<BodyData>& bodies, std::vector<JointData>& joints
 
 void solveJointVelocities(std::vector<BodyData>& bodies, std::vector<JointData>& joints) {
     for (JointData& j : joints) {
-        if (!j.alive || !j.active) continue;
+        if (!j.alive || !j.active || j.type != JointType::Distance) continue;
         BodyData& A = bodies[j.a];
         BodyData& B = bodies[j.b];
         const Vec2 dv = relativeVelocity(A, B, j.rA, j.rB);
@@ -48,7 +48,7 @@ void solveJointVelocities(std::vector<BodyData>& bodies, std::vector<JointData>&
 
 void correctJointPositions(std::vector<BodyData>& bodies, std::vector<JointData>& joints) {
     for (JointData& j : joints) {
-        if (!j.alive || !j.active) continue;
+        if (!j.alive || !j.active || j.type != JointType::Distance) continue;
         BodyData& A = bodies[j.a];
         BodyData& B = bodies[j.b];
         const Vec2 rA = A.xf.q.apply(j.localA), rB = B.xf.q.apply(j.localB);

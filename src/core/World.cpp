@@ -528,7 +528,63 @@ void World::destroyJoint(JointId id) {
     --jointCount_;
 }
 
-double World::jointLength(JointId id) const { return joint(id).length; }
+double World::jointLength(JointId id) const {
+    const JointData& j = joint(id);
+    if (j.type != JointType::Distance) throw std::invalid_argument("physim: jointLength needs a distance joint");
+    return j.length;
+}
+
+JointId World::createMouseJoint(const MouseJointDef& def) {
+    requireDynamic(def.body, "a mouse joint");
+    requireFinite("mouse joint target", def.target);
+    requireFinite("mouse joint local anchor", def.localAnchor);
+    requirePositive("mouse joint maxForce (N)", def.maxForce);
+    requirePositive("mouse joint hertz", def.hertz);
+    requireNonNegative("mouse joint dampingRatio", def.dampingRatio);
+    const std::uint32_t index = takeSlot(joints_, jointFreeList_);
+    JointData& j = joints_[index];
+    j.type = JointType::Mouse;
+    j.a = j.b = def.body.index;
+    j.mouse.target = def.target;
+    j.mouse.localAnchor = def.localAnchor;
+    j.mouse.maxForce = def.maxForce;
+    j.mouse.hertz = def.hertz;
+    j.mouse.dampingRatio = def.dampingRatio;
+    ++jointCount_;
+    wake(def.body);
+    return JointId{index, j.generation};
+}
+
+void World::setMouseJointTarget(JointId id, const Vec2& target) {
+    requireFinite("mouse joint target", target);
+    if (joint(id).type != JointType::Mouse)
+        throw std::invalid_argument("physim: setMouseJointTarget needs a mouse joint");
+    JointData& j = joints_[id.index];
+    j.mouse.target = target;
+    bodies_[j.a].awake = true, bodies_[j.a].sleepTime = 0.0;
+}
+
+JointType World::jointType(JointId id) const { return joint(id).type; }
+
+std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
+    const JointData& j = joint(id);
+    if (j.type == JointType::Mouse) return {bodies_[j.a].xf.apply(j.mouse.localAnchor), j.mouse.target};
+    return {bodies_[j.a].xf.apply(j.localA), bodies_[j.b].xf.apply(j.localB)};
+}
+
+std::vector<JointId> World::jointIds() const {
+    std::vector<JointId> ids;
+    for (std::uint32_t i = 0; i < joints_.size(); ++i)
+        if (joints_[i].alive) ids.push_back(JointId{i, joints_[i].generation});
+    return ids;
+}
+
+std::vector<BodyId> World::bodyIds() const {
+    std::vector<BodyId> ids;
+    for (std::uint32_t i = 0; i < bodies_.size(); ++i)
+        if (bodies_[i].alive) ids.push_back(BodyId{i, bodies_[i].generation});
+    return ids;
+}
 
 void World::integrateForces() {
     runStage(profile_, Stage::Forces, dynamicCount_ > 0,
@@ -579,10 +635,14 @@ void World::detectAndSolve() {
         if (jointCount_ > 0) {
             activateJoints();
             prepareJoints(bodies_, joints_, h_);
+            for (JointData& j : joints_)
+                if (j.alive && j.active && j.type == JointType::Mouse) prepareMouseJoint(bodies_[j.a], j.mouse, h_);
         }
         if (!contacts_.empty()) solver_->prepare(bodies_, contacts_, settings_);
         for (int i = 0; i < settings_.velocityIterations; ++i) {
             if (jointCount_ > 0) solveJointVelocities(bodies_, joints_);
+            for (JointData& j : joints_)
+                if (j.alive && j.active && j.type == JointType::Mouse) solveMouseJoint(bodies_[j.a], j.mouse);
             if (!contacts_.empty()) solver_->solveVelocities(bodies_, contacts_);
         }
     });

@@ -1,6 +1,7 @@
 #pragma once
-// Joints: constraints between two bodies, solved with the contacts. For now the distance joint: a massless
-// rigid rod between an anchor on each body (a pendulum's string held taut, a rope's links).
+// Joints: constraints solved with the contacts. The distance joint: a massless rigid rod between an anchor on
+// each body (a pendulum's string held taut, a rope's links). The mouse joint: a soft spring-damper pulling a
+// point of one body towards a target (what a window's mouse drags bodies with).
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Math.hpp"
@@ -20,6 +21,8 @@ struct JointId {
     }
 };
 
+enum class JointType { Distance, Mouse };
+
 struct DistanceJointDef {
     BodyId bodyA;
     BodyId bodyB;
@@ -27,6 +30,18 @@ struct DistanceJointDef {
     Vec2 localAnchorB = Vec2::Zero();  ///< m, in B's frame
     /// m, > 0; <= 0 (the default) takes the anchors' distance when the joint is created.
     double length = 0.0;
+};
+
+/// Pulls `localAnchor` of a dynamic body towards `target` as a spring-damper of natural frequency `hertz` and
+/// damping ratio `dampingRatio` (stiffness from the body's mass), whose force never exceeds `maxForce`: a
+/// dragged body pushes others and stops at walls instead of passing through them.
+struct MouseJointDef {
+    BodyId body;
+    Vec2 target = Vec2::Zero();       ///< world point, m
+    Vec2 localAnchor = Vec2::Zero();  ///< grabbed point in the body's frame, m (body origin = position())
+    double maxForce = 0.0;            ///< N, > 0; e.g. 1000 * mass * |g|
+    double hertz = 5.0;               ///< Hz, > 0
+    double dampingRatio = 0.7;        ///< >= 0 (1: critically damped)
 };
 
 }  // namespace physim

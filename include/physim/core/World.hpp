@@ -113,8 +113,20 @@ public:
     void destroyJoint(JointId id);
     bool contains(JointId id) const;
     std::size_t jointCount() const { return jointCount_; }
-    /// The joint's rod length, m.
+    /// The joint's rod length, m (distance joints).
     double jointLength(JointId id) const;
+    /// A soft pull of a dynamic body's point towards a target (MouseJointDef). Throws std::invalid_argument
+    /// naming the bad value: a body that is not live and dynamic, a non-finite target or anchor, maxForce or
+    /// hertz not > 0, dampingRatio < 0. Wakes the body. Removed by destroyJoint, or with its body.
+    JointId createMouseJoint(const MouseJointDef& def);
+    /// Moves a mouse joint's target (m, finite) and wakes its body.
+    void setMouseJointTarget(JointId id, const Vec2& target);
+    JointType jointType(JointId id) const;
+    /// World points, m: a distance joint's anchors on A and B; a mouse joint's grabbed point and its target.
+    std::pair<Vec2, Vec2> jointAnchors(JointId id) const;
+    /// The live joints and bodies, in slot order (for drawing and statistics).
+    std::vector<JointId> jointIds() const;
+    std::vector<BodyId> bodyIds() const;
 
     // --- stepping -----------------------------------------------------------------------------------
     void step(double dt);
