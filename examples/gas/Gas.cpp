@@ -3,11 +3,13 @@
 // Maxwell-Boltzmann distribution f(v) = (v / s^2) exp(-v^2 / (2 s^2)), with s^2 = <v^2> / 2 fixed by the
 // (conserved) kinetic energy. Graphs: the speed histogram against f(v) (N x bin width x f at each bin centre),
 // and the total kinetic energy against its initial value. Keys: N gives every disc its initial speed again.
+// Parameters: the number of discs, their initial speed.
+
+#include "Scenes.hpp"
 
 #include <physim/core/CircleShape.hpp>
 #include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
-#include <physim/framework/Runner.hpp>
 
 #include <SFML/Window/Event.hpp>
 
@@ -15,16 +17,21 @@
 #include <random>
 #include <vector>
 
+namespace physim::examples {
 namespace {
 
-constexpr int kDiscs = 300;
 constexpr double kRadius = 0.2;   // m
-constexpr double kSpeed = 5.0;    // m/s, every disc's initial speed
 constexpr double kHalfBox = 10.0; // m, inside half-width
-constexpr int kBins = 20;         // histogram bins over [0, 3 kSpeed)
+constexpr int kPerRow = 20;       // discs start on a grid of 20 per row
+constexpr int kBins = 20;         // histogram bins over [0, 3 v0)
 
 class Gas : public physim::Simulation {
 public:
+    Gas() {
+        parameters.add("discs", "number of discs", 300, 2, kPerRow * kPerRow, true);
+        parameters.add("speed", "every disc's initial speed (m/s)", 5.0, 0.5, 20.0);
+    }
+
     std::string title() const override { return "gas: discs relax to the Maxwell-Boltzmann distribution"; }
     std::string keysHelp() const override { return "N: all at the same speed again"; }
 
@@ -50,17 +57,15 @@ public:
             wall.setPosition(pos);
         }
         // Discs on a grid (no overlaps at the start).
-        const int perRow = 20;
-        const double spacing = 2 * kHalfBox / perRow;
-        for (int i = 0; i < kDiscs; ++i) {
+        const double spacing = 2 * kHalfBox / kPerRow;
+        for (int i = 0; i < parameters.getInt("discs"); ++i) {
             auto& disc = spawn<physim::Object>(physim::Mesh::CircleMesh(kRadius, sf::Color(60, 110, 200)),
                                                physim::CircleShape(kRadius));
             makeElastic(disc);
-            disc.setPosition({-kHalfBox + spacing * (i % perRow + 0.5), -kHalfBox + spacing * (i / perRow + 0.5)});
+            disc.setPosition({-kHalfBox + spacing * (i % kPerRow + 0.5), -kHalfBox + spacing * (i / kPerRow + 0.5)});
             discs_.push_back(&disc);
         }
         randomizeDirections();
-        view.pixelsPerMetre = 30.0;
 
         histogram_ = graphsManager.addGraph("Speeds;speed (m/s);discs per bin");
         boltzmann_ = graphsManager.addSeries(histogram_, "Maxwell-Boltzmann");
@@ -75,7 +80,7 @@ public:
     }
 
     void onDrawGraphs() override {
-        const double binWidth = 3 * kSpeed / kBins;
+        const double binWidth = 3 * parameters.get("speed") / kBins;
         std::vector<int> counts(kBins, 0);
         double sumV2 = 0.0;
         for (const physim::Object* d : discs_) {
@@ -84,12 +89,13 @@ public:
             const int bin = static_cast<int>(v / binWidth);
             if (bin < kBins) ++counts[static_cast<std::size_t>(bin)];
         }
-        const double s2 = sumV2 / kDiscs / 2.0;  // s^2 = <v^2> / 2 in two dimensions
+        const double n = static_cast<double>(discs_.size());
+        const double s2 = sumV2 / n / 2.0;  // s^2 = <v^2> / 2 in two dimensions
         std::vector<std::pair<double, double>> measured, theory;
         for (int b = 0; b < kBins; ++b) {
             const double v = (b + 0.5) * binWidth;
             measured.emplace_back(v, counts[static_cast<std::size_t>(b)]);
-            theory.emplace_back(v, kDiscs * binWidth * v / s2 * std::exp(-v * v / (2 * s2)));
+            theory.emplace_back(v, n * binWidth * v / s2 * std::exp(-v * v / (2 * s2)));
         }
         graphsManager.setPoints(histogram_, measured);
         graphsManager.setPoints(boltzmann_, theory);
@@ -109,7 +115,7 @@ private:
         std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
         for (physim::Object* d : discs_) {
             const double a = angle(rng);
-            d->rb.setVelocity({kSpeed * std::cos(a), kSpeed * std::sin(a)});
+            d->rb.setVelocity(parameters.get("speed") * physim::Vec2(std::cos(a), std::sin(a)));
         }
     }
 
@@ -126,4 +132,6 @@ private:
 
 }  // namespace
 
-int main(int argc, char** argv) { return physim::runMain<Gas>(argc, argv); }
+std::unique_ptr<Simulation> makeGas() { return std::make_unique<Gas>(); }
+
+}  // namespace physim::examples

@@ -1,11 +1,12 @@
-// pendulum: six 1 m pendulums released at rest from 10 to 150 degrees. The small-angle period 2 pi sqrt(L/g)
+// pendulum: six 1 m pendulums (the length is a parameter) released at rest from 10 to 150 degrees. The small-angle period 2 pi sqrt(L/g)
 // holds only for small swings; the exact period is T = 4 sqrt(L / g) K(sin(theta0 / 2)), K the complete
 // elliptic integral of the first kind. Graph: each pendulum's measured period (from successive crossings of the
 // vertical) against the exact curve and the small-angle line. Keys: N releases them all again.
 
+#include "Scenes.hpp"
+
 #include <physim/core/CircleShape.hpp>
 #include <physim/framework/Object.hpp>
-#include <physim/framework/Runner.hpp>
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
@@ -14,16 +15,25 @@
 #include <array>
 #include <cmath>
 
+namespace physim::examples {
 namespace {
 
-constexpr double kLength = 1.0;  // m
 constexpr std::array<double, 6> kAmplitudes{10, 30, 60, 90, 120, 150};  // degrees
 constexpr double kSpacing = 2.2;  // m between pivots
 
 class Pendulums : public physim::Simulation {
 public:
+    // Up to 1 m: with pivots 2.2 m apart, the 150 degree swing of a longer one would reach its neighbour's.
+    Pendulums() { parameters.add("length", "length of each pendulum (m)", 1.0, 0.2, 1.0); }
+
     std::string title() const override { return "pendulum: period against amplitude"; }
     std::string keysHelp() const override { return "N: release again"; }
+
+    // Every pivot and the full circle each bob can reach.
+    std::optional<Aabb> viewBounds() const override {
+        const double reach = length() + 0.1, outer = 2.5 * kSpacing + reach;
+        return Aabb{{-outer, -reach}, {outer, reach}};
+    }
 
     void onCreate() override {
         setPhysicsRate(60.0);
@@ -42,12 +52,10 @@ public:
             physim::DistanceJointDef rod;
             rod.bodyA = pivot.rb.bodyId();
             rod.bodyB = s.bob->rb.bodyId();
-            rod.length = kLength;
+            rod.length = length();
             release(s, kAmplitudes[i]);
             world().createDistanceJoint(rod);
         }
-        view.center = {0.0, -0.6};
-        view.pixelsPerMetre = 90.0;
 
         // The exact curve first, so the measured points are drawn over it.
         exact_ = graphsManager.addGraph("Period against amplitude;amplitude (degrees);period (s)", {},
@@ -58,8 +66,8 @@ public:
         const double g = -world().settings().gravity.y();
         for (int deg = 0; deg <= 160; deg += 5) {
             const double a = deg * M_PI / 180.0;
-            graphsManager.addPoint(exact_, deg, 4.0 * std::sqrt(kLength / g) * std::comp_ellint_1(std::sin(a / 2)));
-            graphsManager.addPoint(smallAngle_, deg, 2 * M_PI * std::sqrt(kLength / g));
+            graphsManager.addPoint(exact_, deg, 4.0 * std::sqrt(length() / g) * std::comp_ellint_1(std::sin(a / 2)));
+            graphsManager.addPoint(smallAngle_, deg, 2 * M_PI * std::sqrt(length() / g));
         }
     }
 
@@ -106,11 +114,13 @@ private:
         bool reported = false;
     };
 
+    double length() const { return parameters.get("length"); }  // m
+
     void release(Swing& s, double degrees) {
         const double a = degrees * M_PI / 180.0;
-        s.bob->setPosition({s.pivotX - kLength * std::sin(a), -kLength * std::cos(a)});  // starts on the left
+        s.bob->setPosition({s.pivotX - length() * std::sin(a), -length() * std::cos(a)});  // starts on the left
         s.bob->rb.setVelocity({0.0, 0.0});
-        s.lastX = -kLength * std::sin(a);
+        s.lastX = -length() * std::sin(a);
         s.lastCrossing = -1.0;
         s.reported = false;
     }
@@ -121,4 +131,6 @@ private:
 
 }  // namespace
 
-int main(int argc, char** argv) { return physim::runMain<Pendulums>(argc, argv); }
+std::unique_ptr<Simulation> makePendulum() { return std::make_unique<Pendulums>(); }
+
+}  // namespace physim::examples

@@ -1,11 +1,14 @@
 // projectile: a ball launched at 20 m/s, 60 degrees above the horizontal, with no air resistance.
 // Graphs: the trajectory and the speed against time (the paper's), each with the analytic answer drawn over
 // the simulated points: y(x) = x tan(a) - g x^2 / (2 v0^2 cos^2 a), |v(t)| = sqrt(vx^2 + (vy0 - g t)^2).
-// The ball is recorded until it comes back to launch height. Keys: N launches it again.
+// The ball is recorded until it comes back to launch height; then it lands on the ground 0.5 m below and rolls
+// into a wall past the landing point. Keys: N launches it again. Parameters: launch speed and angle.
+
+#include "Scenes.hpp"
 
 #include <physim/core/CircleShape.hpp>
+#include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
-#include <physim/framework/Runner.hpp>
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
@@ -14,27 +17,44 @@
 #include <cmath>
 #include <vector>
 
+namespace physim::examples {
 namespace {
 
-constexpr double kSpeed = 20.0;                 // m/s
-constexpr double kAngle = 60.0 * M_PI / 180.0;  // rad
-constexpr double kRadius = 0.2;                 // m
+constexpr double kRadius = 0.2;   // m
+constexpr double kGround = -0.5;  // m, the ground's top: below the launch height, so the recorded flight is whole
 
-class Projectile : public physim::Simulation {
+class Projectile : public Simulation {
 public:
-    std::string title() const override { return "projectile: launch at 20 m/s, 60 degrees"; }
+    Projectile() {
+        parameters.add("speed", "launch speed (m/s)", 20.0, 1.0, 40.0);
+        parameters.add("angle", "launch angle above the horizontal (degrees)", 60.0, 5.0, 85.0);
+    }
+
+    std::string title() const override { return "projectile: a launch without air resistance"; }
 
     void onCreate() override {
-        ball_ = &spawn<physim::Object>(physim::Mesh::CircleMesh(kRadius, sf::Color(200, 60, 60)),
-                                       physim::CircleShape(kRadius));
+        ball_ = &spawn<Object>(Mesh::CircleMesh(kRadius, sf::Color(200, 60, 60)), CircleShape(kRadius));
+        // Ground from behind the launch to a wall 4 m past the landing point.
+        const double end = range() + 4.0, length = end + 3.0;
+        auto& ground = spawn<Object>(Mesh::RectangleMesh({length, 1.0}, sf::Color(90, 90, 90)),
+                                     RectangleShape({length, 1.0}));
+        ground.rb.setMass(0.0);
+        ground.setPosition({end - 0.5 * length, kGround - 0.5});
+        auto& wall = spawn<Object>(Mesh::RectangleMesh({0.5, 1.5}, sf::Color(90, 90, 90)), RectangleShape({0.5, 1.5}));
+        wall.rb.setMass(0.0);
+        wall.setPosition({end + 0.25, kGround + 0.75});
         launch();
-        view.center = {17.5, 7.0};
-        view.pixelsPerMetre = 30.0;
         trajectory_ = graphsManager.addGraph("Trajectory;x (m);y (m)");
         trajectoryTheory_ = graphsManager.addSeries(trajectory_, "analytic");
         speed_ = graphsManager.addGraph("Speed;time (s);speed (m/s)");
         speedTheory_ = graphsManager.addSeries(speed_, "analytic");
         graphsManager.build();
+    }
+
+    // The whole flight, the landing and the wall.
+    std::optional<Aabb> viewBounds() const override {
+        const double vy = speed() * std::sin(angle());
+        return Aabb{{-2.0, kGround - 1.0}, {range() + 5.0, std::max(vy * vy / (2 * g()), 1.0) + 1.0}};
     }
 
     std::string keysHelp() const override { return "N: launch again"; }
@@ -47,31 +67,29 @@ public:
     }
 
     void onDrawGraphs() override {
-        const physim::Vec2 p = ball_->getPosition();
+        const Vec2 p = ball_->getPosition();
         if (p.y() < 0.0) return;  // back below launch height: this flight is over
         const double t = time - launchTime_;
-        const double g = -world().settings().gravity.y();
-        const double vx = kSpeed * std::cos(kAngle), vy = kSpeed * std::sin(kAngle);
+        const double vx = speed() * std::cos(angle()), vy = speed() * std::sin(angle());
         trail_.push_back(p);
         graphsManager.addPoint(trajectory_, p.x(), p.y());
-        graphsManager.addPoint(trajectoryTheory_, p.x(), p.x() * std::tan(kAngle) - g * p.x() * p.x() / (2 * vx * vx));
+        graphsManager.addPoint(trajectoryTheory_, p.x(), p.x() * std::tan(angle()) - g() * p.x() * p.x() / (2 * vx * vx));
         graphsManager.addPoint(speed_, t, ball_->rb.velocity().norm());
-        graphsManager.addPoint(speedTheory_, t, std::hypot(vx, vy - g * t));
+        graphsManager.addPoint(speedTheory_, t, std::hypot(vx, vy - g() * t));
     }
 
     // The launch height line, the analytic parabola (grey) and the path flown so far (red), in metres.
     void onRender(sf::RenderWindow* window) override {
         const sf::Transform toPixels = view.worldToPixels(window->getSize());
-        const double g = -world().settings().gravity.y();
-        const double vx = kSpeed * std::cos(kAngle), range = kSpeed * kSpeed * std::sin(2 * kAngle) / g;
-        sf::VertexArray ground(sf::Lines, 2);
-        ground[0] = sf::Vertex({-2.f, 0.f}, sf::Color(90, 90, 90));
-        ground[1] = sf::Vertex({float(range + 2.0), 0.f}, sf::Color(90, 90, 90));
-        window->draw(ground, toPixels);
+        const double vx = speed() * std::cos(angle());
+        sf::VertexArray launchHeight(sf::Lines, 2);
+        launchHeight[0] = sf::Vertex({-2.f, 0.f}, sf::Color(150, 150, 150));
+        launchHeight[1] = sf::Vertex({float(range() + 2.0), 0.f}, sf::Color(150, 150, 150));
+        window->draw(launchHeight, toPixels);
         sf::VertexArray parabola(sf::LineStrip, 101);
         for (int i = 0; i <= 100; ++i) {
-            const double x = range * i / 100.0;
-            parabola[i] = sf::Vertex({float(x), float(x * std::tan(kAngle) - g * x * x / (2 * vx * vx))},
+            const double x = range() * i / 100.0;
+            parabola[i] = sf::Vertex({float(x), float(x * std::tan(angle()) - g() * x * x / (2 * vx * vx))},
                                      sf::Color(150, 150, 150));
         }
         window->draw(parabola, toPixels);
@@ -82,21 +100,30 @@ public:
     }
 
 private:
+    double speed() const { return parameters.get("speed"); }                  // m/s
+    double angle() const { return parameters.get("angle") * M_PI / 180.0; }  // rad
+    double g() const { return -world().settings().gravity.y(); }              // m/s^2
+    double range() const { return speed() * speed() * std::sin(2 * angle()) / g(); }  // m, back at launch height
+
     void launch() {
         trail_.clear();
         ball_->setPosition({0.0, 0.0});
-        ball_->rb.setVelocity({kSpeed * std::cos(kAngle), kSpeed * std::sin(kAngle)});
+        ball_->setRotation(0.0);
+        ball_->rb.setVelocity(speed() * Vec2(std::cos(angle()), std::sin(angle())));
+        ball_->rb.setAngularVelocity(0.0);
         launchTime_ = time;
     }
 
-    physim::Object* ball_ = nullptr;  // owned by the simulation
+    Object* ball_ = nullptr;  // owned by the simulation
     int trajectory_ = -1, speed_ = -1;  // graph indices
     int trajectoryTheory_ = -1;
     int speedTheory_ = -1;
     double launchTime_ = 0.0;
-    std::vector<physim::Vec2> trail_;  // m, one point per frame of the current flight
+    std::vector<Vec2> trail_;  // m, one point per frame of the current flight
 };
 
 }  // namespace
 
-int main(int argc, char** argv) { return physim::runMain<Projectile>(argc, argv); }
+std::unique_ptr<Simulation> makeProjectile() { return std::make_unique<Projectile>(); }
+
+}  // namespace physim::examples

@@ -5,24 +5,33 @@
 // 20 slops at the top. Sleeping is off (as in the core stacking test) so the graphs show the solver holding
 // the stack, not sleep freezing it. Graphs: total energy (kinetic + potential) and the top box's height
 // against time, each over its analytic rest value. Keys: N knocks the top box sideways at 3 m/s.
+// Parameter: the number of boxes in the bottom row (20 above).
+
+#include "Scenes.hpp"
 
 #include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
-#include <physim/framework/Runner.hpp>
 
 #include <SFML/Window/Event.hpp>
 
+#include <string>
 #include <vector>
 
+namespace physim::examples {
 namespace {
 
-constexpr int kBase = 20;        // boxes in the bottom row
 constexpr double kSize = 1.0;    // m, box side (half-size 0.5 m)
 constexpr double kDensity = 1.0; // kg/m^2: 1 kg boxes
 
 class Pyramid : public physim::Simulation {
 public:
-    std::string title() const override { return "pyramid: 210 boxes on a 20-box base"; }
+    Pyramid() { parameters.add("base", "boxes in the bottom row", 20, 1, 30, true); }
+
+    std::string title() const override {
+        const int base = parameters.getInt("base");
+        return "pyramid: " + std::to_string(base * (base + 1) / 2) + " boxes on a " + std::to_string(base) +
+               "-box base";
+    }
 
     void onCreate() override {
         physim::WorldSettings settings = world().settings();
@@ -32,24 +41,29 @@ public:
                                              physim::RectangleShape({100.0, 1.0}));
         ground.rb.setMass(0.0);
         ground.setPosition({0.0, -0.5});  // top face at y = 0
-        for (int row = 0; row < kBase; ++row) {
-            for (int i = 0; i < kBase - row; ++i) {
+        const int base = parameters.getInt("base");
+        for (int row = 0; row < base; ++row) {
+            for (int i = 0; i < base - row; ++i) {
                 auto& box = spawn<physim::Object>(physim::Vec2(kSize, kSize));
                 box.rb.setDensity(kDensity);
-                box.setPosition({-0.5 * kSize * (kBase - row - 1) + kSize * i, kSize * (0.5 + row)});
+                box.setPosition({-0.5 * kSize * (base - row - 1) + kSize * i, kSize * (0.5 + row)});
                 boxes_.push_back(&box);
             }
         }
-        view.center = {0.0, 0.5 * kBase * kSize};
-        view.pixelsPerMetre = 28.0;
         energy_ = graphsManager.addGraph("Total energy;time (s);kinetic + potential (J)");
         energyTheory_ = graphsManager.addSeries(energy_, "sum of m g (0.5 + row)");
         top_ = graphsManager.addGraph("Top box;time (s);height of the centre (m)");
-        topTheory_ = graphsManager.addSeries(top_, "19.5 m");
+        topTheory_ = graphsManager.addSeries(top_, "rest height, (base - 0.5) m");
         graphsManager.build();
     }
 
     std::string keysHelp() const override { return "N: knock the top box"; }
+
+    // The stack, not the whole 100 m of ground.
+    std::optional<Aabb> viewBounds() const override {
+        const double half = 0.5 * kSize * parameters.getInt("base") + 1.0;
+        return Aabb{{-half, -1.0}, {half, 2 * half - 1.0}};
+    }
 
     void onEvent(sf::Event event) override {
         if (event.type == sf::Event::KeyPressed && event.key.code == sf::Keyboard::N)
@@ -59,8 +73,9 @@ public:
     void onDrawGraphs() override {
         const double g = -world().settings().gravity.y();
         double energy = 0.0, rest = 0.0;  // J
-        for (int row = 0, k = 0; row < kBase; ++row) {
-            for (int i = 0; i < kBase - row; ++i, ++k) {
+        const int base = parameters.getInt("base");
+        for (int row = 0, k = 0; row < base; ++row) {
+            for (int i = 0; i < base - row; ++i, ++k) {
                 const physim::RigidBody& rb = boxes_[k]->rb;
                 energy += 0.5 * rb.mass() * rb.velocity().squaredNorm() +
                           0.5 * rb.inertia() * rb.angularVelocity() * rb.angularVelocity() +
@@ -71,7 +86,7 @@ public:
         graphsManager.addPoint(energy_, time, energy);
         graphsManager.addPoint(energyTheory_, time, rest);
         graphsManager.addPoint(top_, time, boxes_.back()->getPosition().y());
-        graphsManager.addPoint(topTheory_, time, kSize * (kBase - 0.5));
+        graphsManager.addPoint(topTheory_, time, kSize * (base - 0.5));
     }
 
 private:
@@ -81,4 +96,6 @@ private:
 
 }  // namespace
 
-int main(int argc, char** argv) { return physim::runMain<Pyramid>(argc, argv); }
+std::unique_ptr<Simulation> makePyramid() { return std::make_unique<Pyramid>(); }
+
+}  // namespace physim::examples

@@ -1,11 +1,12 @@
 // rope: the paper's rope, 20 small discs linked by distance joints (rigid links of 12 cm), hanging from a
 // fixed pivot. It starts horizontal and swings down, whipping as it folds. Graph: the distance from the pivot
 // to the rope's free end against time, with the rope's length, which it can never exceed. Keys: N lays the
-// rope horizontal again.
+// rope horizontal again. Parameter: the number of links.
+
+#include "Scenes.hpp"
 
 #include <physim/core/CircleShape.hpp>
 #include <physim/framework/Object.hpp>
-#include <physim/framework/Runner.hpp>
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/VertexArray.hpp>
@@ -13,14 +14,16 @@
 
 #include <vector>
 
+namespace physim::examples {
 namespace {
 
-constexpr int kLinks = 20;
 constexpr double kLinkLength = 0.12;  // m between neighbouring disc centres
 constexpr double kRadius = 0.05;      // m
 
 class Rope : public physim::Simulation {
 public:
+    Rope() { parameters.add("links", "number of links", 20, 2, 60, true); }
+
     std::string title() const override { return "rope: linked discs swing from a pivot"; }
     std::string keysHelp() const override { return "N: lay it horizontal again"; }
 
@@ -30,7 +33,7 @@ public:
                                         physim::CircleShape(0.04));
         pivot_->rb.setMass(0.0);
         physim::Object* previous = pivot_;
-        for (int i = 1; i <= kLinks; ++i) {
+        for (int i = 1; i <= parameters.getInt("links"); ++i) {
             auto& link = spawn<physim::Object>(physim::Mesh::CircleMesh(kRadius, sf::Color(150, 100, 50)),
                                                physim::CircleShape(kRadius));
             physim::DistanceJointDef joint;
@@ -42,8 +45,6 @@ public:
             previous = &link;
         }
         layHorizontal();
-        view.center = {0.0, -1.0};
-        view.pixelsPerMetre = 200.0;
         distance_ = graphsManager.addGraph("Rope end;time (s);distance from the pivot (m)", {},
                                            physim::GraphMode::WITH_LINES);
         length_ = graphsManager.addSeries(distance_, "rope length");
@@ -56,7 +57,13 @@ public:
 
     void onDrawGraphs() override {
         graphsManager.addPoint(distance_, time, (links_.back()->getPosition() - pivot_->getPosition()).norm());
-        graphsManager.addPoint(length_, time, kLinks * kLinkLength);
+        graphsManager.addPoint(length_, time, length());
+    }
+
+    // The circle the rope's end can reach, above the pivot too (it whips up).
+    std::optional<Aabb> viewBounds() const override {
+        const double r = length() + 0.05;
+        return Aabb{{-r, -r}, {r, 0.3 * r}};
     }
 
     void onRender(sf::RenderWindow* window) override {
@@ -70,8 +77,10 @@ public:
     }
 
 private:
+    double length() const { return static_cast<double>(links_.size()) * kLinkLength; }  // m
+
     void layHorizontal() {
-        for (int i = 0; i < kLinks; ++i) {
+        for (int i = 0; i < static_cast<int>(links_.size()); ++i) {
             links_[static_cast<std::size_t>(i)]->setPosition({(i + 1) * kLinkLength, 0.0});
             links_[static_cast<std::size_t>(i)]->rb.setVelocity({0.0, 0.0});
         }
@@ -84,4 +93,6 @@ private:
 
 }  // namespace
 
-int main(int argc, char** argv) { return physim::runMain<Rope>(argc, argv); }
+std::unique_ptr<Simulation> makeRope() { return std::make_unique<Rope>(); }
+
+}  // namespace physim::examples
