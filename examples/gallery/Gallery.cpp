@@ -21,14 +21,25 @@ void Gallery::close() { imgui_.reset(); }
 
 bool Gallery::handleEvent(const sf::Event& event) { return imgui_ && imgui_->processEvent(event); }
 
-std::optional<sf::Vector2f> Gallery::sceneEntryCentre(std::size_t i) const {
-    if (i >= entryCentres_.size()) return std::nullopt;
-    return entryCentres_[i];
+namespace {
+
+sf::FloatRect lastItemRect() {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
+}  // namespace
+
+std::optional<sf::FloatRect> Gallery::itemRect(const std::string& name) const {
+    for (const auto& [item, rect] : itemRects_)
+        if (item == name) return rect;
+    return std::nullopt;
 }
 
 void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds) {
     if (!imgui_) return;
     imgui_->newFrame(frameSeconds);
+    itemRects_.clear();
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(panelWidth, static_cast<float>(window.getSize().y)));
     ImGui::Begin("physim gallery", nullptr,
@@ -47,12 +58,10 @@ void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds
 
 void Gallery::drawScenes(Runner& runner) {
     ImGui::TextUnformatted("Scenes");
-    entryCentres_.clear();
     std::optional<std::size_t> chosen;
     for (std::size_t i = 0; i < scenes_.size(); ++i) {
         if (ImGui::Selectable(scenes_[i].name.c_str(), i == current_)) chosen = i;
-        const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
-        entryCentres_.emplace_back(0.5f * (lo.x + hi.x), 0.5f * (lo.y + hi.y));
+        itemRects_.emplace_back(scenes_[i].name, lastItemRect());
     }
     ImGui::Separator();
     ImGui::TextWrapped("%s", runner.simulation().title().c_str());
@@ -86,6 +95,7 @@ void Gallery::drawParameters(Runner& runner) {
         } else {
             ImGui::SliderScalar("##value", ImGuiDataType_Double, &edits_[i], &p.min, &p.max, "%.3g");
         }
+        itemRects_.emplace_back(p.name, lastItemRect());
         if (ImGui::IsItemDeactivatedAfterEdit()) changed = i;
         ImGui::PopID();
     }

@@ -7,11 +7,13 @@
 #include "ImGuiSfml.hpp"
 #include "Scenes.hpp"
 
-#include <SFML/System/Vector2.hpp>
+#include <SFML/Graphics/Rect.hpp>
 
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace physim::examples {
@@ -31,8 +33,9 @@ public:
     float width() const override { return panelWidth; }
 
     std::size_t current() const { return current_; }
-    /// Where scene i's entry was drawn in the last frame (px, its centre), for tests that click it.
-    std::optional<sf::Vector2f> sceneEntryCentre(std::size_t i) const;
+    /// Where a control was drawn in the last frame (px), for tests that click it: a scene's entry by its name,
+    /// a parameter's slider by the parameter's name.
+    std::optional<sf::FloatRect> itemRect(const std::string& name) const;
 
 private:
     void drawScenes(Runner& runner);
@@ -44,7 +47,7 @@ private:
     std::size_t current_;
     std::unique_ptr<ImGuiSfml> imgui_;
     std::vector<double> edits_;  // slider values while the user moves them (applied when let go)
-    std::vector<sf::Vector2f> entryCentres_;
+    std::vector<std::pair<std::string, sf::FloatRect>> itemRects_;  // this frame's, for itemRect
 };
 
 }  // namespace physim::examples

@@ -17,8 +17,9 @@
 namespace physim {
 namespace {
 
-constexpr float kNormalPixels = 28.f;   // drawn length of a contact normal
-constexpr float kPointPixels = 3.5f;    // radius of a contact point's dot
+constexpr float kNormalPixels = 36.f;   // drawn length of a contact normal
+constexpr float kPointPixels = 4.f;     // radius of a contact point's dot
+constexpr float kLinePixels = 2.f;      // width of every line
 constexpr float kCrossPixels = 6.f;     // half-length of a centre-of-mass cross
 constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance covered in this time
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
@@ -26,16 +27,19 @@ const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kV
 const sf::Color kSleepVeil(235, 235, 235, 160);  // the window's background, half see-through
 
 sf::Color faded(sf::Color c) {
-    c.a = 100;
+    c.a = 140;
     return c;
 }
 
-// Pixel-space lines, drawn in one call.
+// Pixel-space lines kLinePixels wide (quads: GL lines are one pixel), drawn in one call.
 class Lines {
 public:
     void add(sf::Vector2f a, sf::Vector2f b, sf::Color c) {
-        lines_.append(sf::Vertex(a, c));
-        lines_.append(sf::Vertex(b, c));
+        const sf::Vector2f d = b - a;
+        const float len = std::hypot(d.x, d.y);
+        if (len <= 0.f) return;
+        const sf::Vector2f n = (0.5f * kLinePixels / len) * sf::Vector2f(-d.y, d.x);
+        for (const sf::Vector2f& p : {a + n, b + n, b - n, a - n}) lines_.append(sf::Vertex(p, c));
     }
     void arrow(sf::Vector2f from, sf::Vector2f to, sf::Color c) {
         add(from, to, c);
@@ -50,14 +54,17 @@ public:
     void draw(sf::RenderTarget& target) const { target.draw(lines_); }
 
 private:
-    sf::VertexArray lines_{sf::Lines};
+    sf::VertexArray lines_{sf::Quads};
 };
 
 void drawContacts(sf::RenderTarget& target, const sf::Transform& toPixels, const std::vector<Manifold>& contacts,
                   bool resting, Lines& lines) {
+    // Resting contacts: the same colours, see-through, the points as rings.
     sf::CircleShape dot(kPointPixels);
     dot.setOrigin(kPointPixels, kPointPixels);
-    dot.setFillColor(resting ? faded(kPoint) : kPoint);
+    dot.setFillColor(resting ? sf::Color::Transparent : kPoint);
+    dot.setOutlineColor(faded(kPoint));
+    dot.setOutlineThickness(resting ? -1.5f : 0.f);
     for (const Manifold& m : contacts) {
         const sf::Vector2f n(static_cast<float>(m.normal.x()), static_cast<float>(-m.normal.y()));  // y down
         for (int i = 0; i < m.pointCount; ++i) {

@@ -1,6 +1,7 @@
 #include "physim/framework/Stats.hpp"
 
 #include "physim/core/World.hpp"
+#include "physim/framework/DebugDraw.hpp"
 
 #include <cstdio>
 #include <stdexcept>
@@ -23,6 +24,7 @@ WorldStats computeStats(const World& world) {
     }
     s.contacts = world.contacts().size();
     for (const Manifold& m : world.contacts()) s.contactPoints += static_cast<std::size_t>(m.pointCount);
+    s.restingContacts = restingContacts(world).size();
     s.joints = world.jointCount();
     return s;
 }
@@ -62,8 +64,8 @@ std::string formatStats(const WorldStats& stats, const StepTimes& times) {
     std::snprintf(line, sizeof line, "bodies %zu: %zu awake, %zu asleep, %zu static/kinematic\n", stats.bodies,
                   stats.awake, stats.asleep, stats.immovable);
     text += line;
-    std::snprintf(line, sizeof line, "contacts %zu (%zu points), joints %zu\n", stats.contacts,
-                  stats.contactPoints, stats.joints);
+    std::snprintf(line, sizeof line, "contacts %zu (%zu points) + %zu at rest, joints %zu\n", stats.contacts,
+                  stats.contactPoints, stats.restingContacts, stats.joints);
     text += line;
     std::snprintf(line, sizeof line, "energy: kinetic %.4g J, potential %.4g J, sum %.6g J\n", stats.kinetic,
                   stats.potential, stats.kinetic + stats.potential);

@@ -82,6 +82,8 @@ TEST(DebugDraw, RestingContactsOfSleepingBodies) {
     EXPECT_EQ(resting[0].bodyA, awake.bodyA);
     EXPECT_EQ(resting[0].bodyB, awake.bodyB);
     EXPECT_LT((resting[0].normal - awake.normal).norm(), 1e-12) << "the normal points the same way";
+    EXPECT_EQ(computeStats(world).restingContacts, 1u);
+    EXPECT_EQ(computeStats(world).contacts, 0u);
 }
 
 }  // namespace

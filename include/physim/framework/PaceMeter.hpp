@@ -2,6 +2,7 @@
 // How fast the simulation really runs in a window: simulated seconds per real second over the last second,
 // and whether the catch-up cap (maxStepsPerFrame) is what holds it below the time scale asked for.
 
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 
@@ -15,18 +16,19 @@ public:
     void clear();
     /// Simulated seconds per real second over the last second of running frames; 0 before any.
     double pace() const;
-    /// True when the cap dropped steps in the last second and the pace fell below `timeScale` (by more than
-    /// 3%, frame timing jitter).
+    /// True when the pace fell below `timeScale` (by more than 3%, frame timing jitter) and the cap dropped
+    /// steps in at least a quarter of the last second's frames: a sustained limit, not one slow frame (the
+    /// first after a start, a window being moved).
     bool cappedBelow(double timeScale) const;
 
 private:
     struct Frame {
         double real, simulated;
-        std::uint64_t dropped;
+        bool capped;
     };
     std::deque<Frame> frames_;  // the last second of running frames
     double real_ = 0.0, simulated_ = 0.0;
-    std::uint64_t dropped_ = 0;
+    std::size_t capped_ = 0;    // frames in frames_ that the cap cut short
 };
 
 }  // namespace physim

@@ -19,6 +19,7 @@ struct WorldStats {
     std::size_t immovable = 0;     ///< static and kinematic bodies
     std::size_t contacts = 0;      ///< manifolds of the last step (pairs that touch and are simulated)
     std::size_t contactPoints = 0;
+    std::size_t restingContacts = 0;  ///< touching pairs at rest the step skips (DebugDraw's restingContacts)
     std::size_t joints = 0;
     double kinetic = 0.0;          ///< J: sum of m v^2 / 2 + I w^2 / 2 over dynamic bodies
     double potential = 0.0;        ///< J: sum of -m g . x over dynamic bodies (zero at the world origin)
