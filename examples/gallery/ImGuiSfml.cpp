@@ -46,7 +46,8 @@ int mouseButton(sf::Mouse::Button b) {
 }  // namespace
 
 ImGuiSfml::ImGuiSfml(sf::RenderWindow& window) : window_(window) {
-    if (ImGui::GetCurrentContext()) throw std::logic_error("physim: one ImGuiSfml at a time (ImGui's context is global)");
+    if (ImGui::GetCurrentContext())
+        throw std::logic_error("physim: one ImGuiSfml at a time (ImGui's context is global)");
     IMGUI_CHECKVERSION();
     context_ = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -55,7 +56,8 @@ ImGuiSfml::ImGuiSfml(sf::RenderWindow& window) : window_(window) {
     mapKeys(io);
     if (std::filesystem::exists(kFont)) io.Fonts->AddFontFromFileTTF(kFont, 15.0f);
     ImGui::StyleColorsLight();
-    if (!window_.setActive(true)) throw std::runtime_error("physim: the window's OpenGL context cannot be made current");
+    if (!window_.setActive(true))
+        throw std::runtime_error("physim: the window's OpenGL context cannot be made current");
     ImGui_ImplOpenGL2_Init();
 }
 

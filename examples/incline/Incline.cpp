@@ -64,7 +64,8 @@ public:
             auto& stop = spawn<physim::Object>(
                 physim::Mesh::RectangleMesh({kStop, 1.2}, sf::Color(90, 90, 90)), physim::RectangleShape({kStop, 1.2}));
             stop.rb.setMass(0.0);
-            stop.setPosition(lane.centre + (kHalfLength - 0.5 * kStop) * lane.down() + (0.5 * kThickness + 0.6) * lane.normal());
+            stop.setPosition(lane.centre + (kHalfLength - 0.5 * kStop) * lane.down() +
+                             (0.5 * kThickness + 0.6) * lane.normal());
             stop.setRotation(lane.theta);
             lane.block = &spawn<physim::Object>(physim::Vec2(kBlock, kBlock));
             lane.block->rb.setStaticFriction(muStatic);

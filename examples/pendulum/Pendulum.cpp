@@ -1,6 +1,6 @@
-// pendulum: six 1 m pendulums (the length is a parameter) released at rest from 10 to 150 degrees. The small-angle period 2 pi sqrt(L/g)
-// holds only for small swings; the exact period is T = 4 sqrt(L / g) K(sin(theta0 / 2)), K the complete
-// elliptic integral of the first kind. Graph: each pendulum's measured period (from successive crossings of the
+// pendulum: six 1 m pendulums (the length is a parameter) released at rest from 10 to 150 degrees. The
+// small-angle period 2 pi sqrt(L/g) holds only for small swings; the exact period is
+// T = 4 sqrt(L / g) K(sin(theta0 / 2)), K the complete elliptic integral of the first kind. Graph: each pendulum's measured period (from successive crossings of the
 // vertical) against the exact curve and the small-angle line. Keys: N releases them all again.
 
 #include "Scenes.hpp"

@@ -73,7 +73,8 @@ public:
         const double vx = speed() * std::cos(angle()), vy = speed() * std::sin(angle());
         trail_.push_back(p);
         graphsManager.addPoint(trajectory_, p.x(), p.y());
-        graphsManager.addPoint(trajectoryTheory_, p.x(), p.x() * std::tan(angle()) - g() * p.x() * p.x() / (2 * vx * vx));
+        graphsManager.addPoint(trajectoryTheory_, p.x(),
+                               p.x() * std::tan(angle()) - g() * p.x() * p.x() / (2 * vx * vx));
         graphsManager.addPoint(speed_, t, ball_->rb.velocity().norm());
         graphsManager.addPoint(speedTheory_, t, std::hypot(vx, vy - g() * t));
     }

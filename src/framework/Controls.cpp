@@ -35,7 +35,8 @@ std::optional<BodyId> bodyAt(const World& world, const Vec2& point, double pixel
     const Transform at{point, Rotation{}};
     const std::vector<BodyId> ids = world.bodyIds();
     for (auto it = ids.rbegin(); it != ids.rend(); ++it)
-        if (world.type(*it) == BodyType::Dynamic && collide(probe, at, world.shape(*it), world.transform(*it)).pointCount > 0)
+        if (world.type(*it) == BodyType::Dynamic &&
+            collide(probe, at, world.shape(*it), world.transform(*it)).pointCount > 0)
             return *it;
     return std::nullopt;
 }

@@ -3,6 +3,7 @@
 // restarts the scene with the new value; a click in the scene still grabs a body, a click on the panel does not.
 
 #include "Gallery.hpp"
+#include "support/SfmlEvents.hpp"
 
 #include <SFML/Graphics/RenderWindow.hpp>
 #include <SFML/Graphics/Texture.hpp>
@@ -15,18 +16,10 @@
 namespace physim::examples {
 namespace {
 
-sf::Event mouseButton(sf::Event::EventType type, sf::Vector2i at) {
-    sf::Event e;
-    e.type = type;
-    e.mouseButton = {sf::Mouse::Left, at.x, at.y};
-    return e;
-}
+using test::mouseMove;
 
-sf::Event mouseMove(sf::Vector2i at) {
-    sf::Event e;
-    e.type = sf::Event::MouseMoved;
-    e.mouseMove = {at.x, at.y};
-    return e;
+sf::Event mouseButton(sf::Event::EventType type, sf::Vector2i at) {
+    return test::mouseButton(type, sf::Mouse::Left, at);
 }
 
 sf::Vector2i centreOf(const sf::FloatRect& r) {

@@ -3,11 +3,11 @@
 // promises: a dragged body follows the cursor, O runs exactly one step, the time scale sets how many steps a
 // real second runs, zoom keeps the point under the cursor, a pan drags the scene with the cursor.
 
+#include "support/SfmlEvents.hpp"
+
 #include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Runner.hpp>
-
-#include <SFML/Window/Event.hpp>
 
 #include <gtest/gtest.h>
 
@@ -52,33 +52,10 @@ sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p) {
     return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
 }
 
-sf::Event mouseButton(sf::Event::EventType type, sf::Mouse::Button button, sf::Vector2i at) {
-    sf::Event e;
-    e.type = type;
-    e.mouseButton = {button, at.x, at.y};
-    return e;
-}
-
-sf::Event mouseMove(sf::Vector2i at) {
-    sf::Event e;
-    e.type = sf::Event::MouseMoved;
-    e.mouseMove = {at.x, at.y};
-    return e;
-}
-
-sf::Event wheel(float delta, sf::Vector2i at) {
-    sf::Event e;
-    e.type = sf::Event::MouseWheelScrolled;
-    e.mouseWheelScroll = {sf::Mouse::VerticalWheel, delta, at.x, at.y};
-    return e;
-}
-
-sf::Event key(sf::Keyboard::Key code) {
-    sf::Event e;
-    e.type = sf::Event::KeyPressed;
-    e.key = {code, false, false, false, false};
-    return e;
-}
+using test::keyPress;
+using test::mouseButton;
+using test::mouseMove;
+using test::wheel;
 
 int runFrames(Runner& runner, int frames) {
     int steps = 0;
@@ -123,7 +100,8 @@ TEST(Controls, DraggedBodyStopsOnTheFloor) {
     Runner runner = makeRunner();
     runner.restart();
     Simulation& sim = runner.simulation();
-    runner.handleEvent(mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(sim, Vec2::Zero())), nullptr);
+    runner.handleEvent(mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(sim, Vec2::Zero())),
+                       nullptr);
     runner.handleEvent(mouseMove(pixelOf(sim, {0.0, -5.0})), nullptr);  // 2 m inside the 1 m floor
     runFrames(runner, 120);
     // The floor's top is at y = -3; the box's half height 0.5; the solver leaves up to linearSlop of overlap.
@@ -135,21 +113,21 @@ TEST(Controls, SingleStepAdvancesExactlyOneStep) {
     runner.restart();
     Simulation& sim = runner.simulation();
     runFrames(runner, 10);
-    runner.handleEvent(key(sf::Keyboard::P), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::P), nullptr);
     ASSERT_TRUE(sim.paused);
     EXPECT_EQ(runFrames(runner, 10), 0) << "paused: no steps";
     const std::uint64_t steps = sim.world().stepCount();
     const double t = sim.time;
-    runner.handleEvent(key(sf::Keyboard::O), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::O), nullptr);
     EXPECT_EQ(runner.frame(0.5, nullptr), 1) << "one step, however long the frame";
     EXPECT_EQ(sim.world().stepCount(), steps + 1);
     EXPECT_DOUBLE_EQ(sim.time, t + sim.fixedTimeStep());
     EXPECT_EQ(runFrames(runner, 10), 0) << "and only one";
     EXPECT_TRUE(sim.paused);
 
-    runner.handleEvent(key(sf::Keyboard::P), nullptr);  // running again: O pauses, then steps
+    runner.handleEvent(keyPress(sf::Keyboard::P), nullptr);  // running again: O pauses, then steps
     runFrames(runner, 3);
-    runner.handleEvent(key(sf::Keyboard::O), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::O), nullptr);
     EXPECT_TRUE(sim.paused);
     EXPECT_EQ(runner.frame(kFrame, nullptr), 1);
 }
@@ -160,14 +138,14 @@ TEST(Controls, TimeScaleChangesStepsPerRealSecond) {
     Runner runner = makeRunner();
     runner.restart();
     EXPECT_NEAR(runFrames(runner, 60), 40, 1);
-    runner.handleEvent(key(sf::Keyboard::LBracket), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::LBracket), nullptr);
     EXPECT_EQ(runner.controls().timeScale(), 0.5);
     EXPECT_NEAR(runFrames(runner, 60), 20, 1);
-    runner.handleEvent(key(sf::Keyboard::RBracket), nullptr);
-    runner.handleEvent(key(sf::Keyboard::RBracket), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
     EXPECT_EQ(runner.controls().timeScale(), 2.0);
     EXPECT_NEAR(runFrames(runner, 60), 80, 1);
-    for (int i = 0; i < 10; ++i) runner.handleEvent(key(sf::Keyboard::RBracket), nullptr);
+    for (int i = 0; i < 10; ++i) runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
     EXPECT_EQ(runner.controls().timeScale(), Controls::maxTimeScale) << "capped";
     EXPECT_THROW(runner.controls().setTimeScale(0.0), std::invalid_argument);
     EXPECT_THROW(runner.controls().setTimeScale(NAN), std::invalid_argument);
@@ -228,7 +206,7 @@ TEST(Controls, RightDragPansWithTheCursorAndFRefits) {
     runner.handleEvent(mouseMove({0, 0}), nullptr);
     EXPECT_LT((sim.view.toWorld(to, kWindow) - grabbed).norm(), 1e-12) << "released: moving no longer pans";
 
-    runner.handleEvent(key(sf::Keyboard::F), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::F), nullptr);
     runner.frame(0.0, nullptr);
     EXPECT_EQ(sim.view, fitted) << "F fits the view again";
 }
@@ -243,11 +221,11 @@ TEST(Controls, KeysToggleDebugDrawingAndStatistics) {
         {sf::Keyboard::Num5, &DebugDrawOptions::centres}, {sf::Keyboard::Num6, &DebugDrawOptions::sleep}};
     for (const auto& [code, option] : keys) {
         EXPECT_FALSE(sim.debugDraw.*option);
-        runner.handleEvent(key(code), nullptr);
+        runner.handleEvent(keyPress(code), nullptr);
         EXPECT_TRUE(sim.debugDraw.*option) << code;
     }
     EXPECT_FALSE(runner.controls().statsShown());
-    runner.handleEvent(key(sf::Keyboard::Tab), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::Tab), nullptr);
     EXPECT_TRUE(runner.controls().statsShown());
 }
 
@@ -258,7 +236,7 @@ TEST(Controls, RestartKeepsParametersAndDrawingANewSceneStartsFresh) {
     runner.restart();
     runner.simulation().parameters.set("width", 2.0);
     runner.simulation().debugDraw.boxes = true;
-    runner.handleEvent(key(sf::Keyboard::Space), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::Space), nullptr);
     EXPECT_EQ(runner.simulation().parameters.get("width"), 2.0);
     EXPECT_TRUE(runner.simulation().debugDraw.boxes);
     EXPECT_NEAR(scene(runner).box->rb.mass(), 2.0, 1e-12) << "made with the kept width: 2 m x 1 m at 1 kg/m^2";
@@ -277,11 +255,63 @@ TEST(Controls, RestartDuringADragLetsGo) {
         mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(runner.simulation(), Vec2::Zero())),
         nullptr);
     ASSERT_TRUE(runner.controls().dragJoint().has_value());
-    runner.handleEvent(key(sf::Keyboard::Space), nullptr);
+    runner.handleEvent(keyPress(sf::Keyboard::Space), nullptr);
     EXPECT_FALSE(runner.controls().dragJoint().has_value());
     runner.handleEvent(mouseMove({10, 10}), nullptr);  // no stale joint to move
     runner.handleEvent(mouseButton(sf::Event::MouseButtonReleased, sf::Mouse::Left, {10, 10}), nullptr);
     EXPECT_EQ(runner.simulation().world().jointCount(), 0u);
+}
+
+}  // namespace
+}  // namespace physim
+
+namespace physim {
+namespace {
+
+// The README's scene: a 20 m ground and a box 5 m up, no view set. At the start every body is inside the
+// scene area (the part of the window below the overlay); a simulation that sets its view keeps it.
+class Drop : public Simulation {
+public:
+    void onCreate() override {
+        auto& ground = spawn<Object>(Vec2(20.0, 1.0));
+        ground.rb.setMass(0.0);
+        ground.setPosition({0.0, -0.5});
+        spawn<Object>(Vec2(1.0, 1.0)).setPosition({0.0, 5.0});
+    }
+};
+
+class HandSetView : public Drop {
+public:
+    void onCreate() override {
+        Drop::onCreate();
+        view.center = {17.5, 7.0};
+        view.pixelsPerMetre = 30.0;
+    }
+};
+
+TEST(Controls, TheStartViewShowsEveryBodyUnlessTheSceneSetsIt) {
+    for (const auto& size : {sf::Vector2u(1280, 720), sf::Vector2u(640, 360), sf::Vector2u(300, 900)}) {
+        RunOptions options;
+        options.headless = true;
+        options.width = static_cast<int>(size.x);
+        options.height = static_cast<int>(size.y);
+        Runner runner([] { return std::make_unique<Drop>(); }, options);
+        runner.restart();
+        const Simulation& sim = runner.simulation();
+        const sf::FloatRect area = runner.sceneArea();
+        const sf::Transform toPixels = sim.view.worldToPixels(size);
+        for (BodyId id : sim.world().bodyIds()) {
+            const Aabb box = computeAabb(sim.world().shape(id), sim.world().transform(id));
+            for (const Vec2& corner : {box.lower, box.upper}) {
+                const sf::Vector2f p = toPixels.transformPoint(float(corner.x()), float(corner.y()));
+                EXPECT_TRUE(area.contains(p)) << size.x << "x" << size.y << ": (" << p.x << ", " << p.y << ")";
+            }
+        }
+    }
+    Runner runner([] { return std::make_unique<HandSetView>(); }, RunOptions{});
+    runner.restart();
+    EXPECT_EQ(runner.simulation().view.center, Vec2(17.5, 7.0));
+    EXPECT_EQ(runner.simulation().view.pixelsPerMetre, 30.0);
 }
 
 }  // namespace

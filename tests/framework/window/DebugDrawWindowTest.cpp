@@ -31,7 +31,8 @@ struct Canvas {
         drawDebug(texture, view, world, options);
         texture.display();
         image = texture.getTexture().copyToImage();
-        if (const char* dir = std::getenv("PHYSIM_TEST_SHOTS")) image.saveToFile(std::string(dir) + "/" + name + ".png");
+        if (const char* dir = std::getenv("PHYSIM_TEST_SHOTS"))
+            image.saveToFile(std::string(dir) + "/" + name + ".png");
     }
     sf::Color at(const Vec2& world) const {
         const sf::Vector2f p = view.worldToPixels(texture.getSize()).transformPoint(float(world.x()), float(world.y()));
