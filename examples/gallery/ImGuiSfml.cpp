@@ -48,6 +48,8 @@ int mouseButton(sf::Mouse::Button b) {
 ImGuiSfml::ImGuiSfml(sf::RenderWindow& window) : window_(window) {
     if (ImGui::GetCurrentContext())
         throw std::logic_error("physim: one ImGuiSfml at a time (ImGui's context is global)");
+    if (!window_.setActive(true))  // before anything is made that would need undoing
+        throw std::runtime_error("physim: the window's OpenGL context cannot be made current");
     IMGUI_CHECKVERSION();
     context_ = ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -56,8 +58,6 @@ ImGuiSfml::ImGuiSfml(sf::RenderWindow& window) : window_(window) {
     mapKeys(io);
     if (std::filesystem::exists(kFont)) io.Fonts->AddFontFromFileTTF(kFont, 15.0f);
     ImGui::StyleColorsLight();
-    if (!window_.setActive(true))
-        throw std::runtime_error("physim: the window's OpenGL context cannot be made current");
     ImGui_ImplOpenGL2_Init();
 }
 

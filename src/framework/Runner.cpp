@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace physim {
@@ -307,10 +308,11 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
             std::cerr << program << ": --param: " << e.what() << "\n";
             return 2;
         }
+        std::optional<DisplayConnection> display;  // held open until the run ends (Display.hpp says why)
         if (!options.headless) {
-            const std::string problem = displayProblem();
-            if (!problem.empty()) {
-                std::cerr << program << ": " << problem << "; use --headless (or run under xvfb-run)\n";
+            display.emplace();
+            if (!display->problem().empty()) {
+                std::cerr << program << ": " << display->problem() << "; use --headless (or run under xvfb-run)\n";
                 return 2;
             }
         }
