@@ -246,6 +246,14 @@ bool World::contains(BodyId id) const {
 
 std::size_t World::bodyCount() const { return impl_->liveCount; }
 
+std::vector<BodyId> World::bodies() const {
+    std::vector<BodyId> ids;
+    ids.reserve(impl_->liveCount);
+    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
+        if (impl_->bodies[i].alive) ids.push_back(BodyId{i, impl_->bodies[i].generation});
+    return ids;
+}
+
 const BodyData& World::at(BodyId id) const {
     if (!contains(id))
         throw std::invalid_argument("physim: body id (index " + std::to_string(id.index) + ", generation " +

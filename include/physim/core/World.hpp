@@ -48,6 +48,8 @@ public:
     void destroyBody(BodyId id);
     bool contains(BodyId id) const;
     std::size_t bodyCount() const;
+    /// The live bodies in creation-slot order (for drawing and inspection).
+    std::vector<BodyId> bodies() const;
 
     BodyType type(BodyId id) const;
     const Geometry& shape(BodyId id) const;
