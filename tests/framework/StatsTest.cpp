@@ -54,8 +54,9 @@ TEST(Stats, StepTimesAverageTheLastSteps) {
     EXPECT_THROW(StepTimes(0), std::invalid_argument);
 }
 
-// A box that fell asleep on the ground: the step no longer computes its contact (nothing in it is active),
-// but debug drawing still finds it, with the same manifold the step had when the box was awake.
+// A box that fell asleep on the ground: the world no longer lists its contact (World::contacts() holds awake
+// bodies' only, from the step that puts them to sleep on), but debug drawing still finds it, with the same
+// manifold the step had when the box was awake.
 TEST(DebugDraw, RestingContactsOfSleepingBodies) {
     World world;
     BodyDef ground;
@@ -73,9 +74,9 @@ TEST(DebugDraw, RestingContactsOfSleepingBodies) {
     EXPECT_TRUE(restingContacts(world).empty()) << "awake contacts are the step's own";
     for (int i = 0; i < 120 && world.isAwake(id); ++i) world.step(1.0 / 60.0);
     ASSERT_FALSE(world.isAwake(id));
-    EXPECT_TRUE(restingContacts(world).empty()) << "the step that put it to sleep still lists the contact";
+    EXPECT_TRUE(world.contacts().empty()) << "asleep, the world lists no contact for the pair";
     world.step(1.0 / 60.0);
-    EXPECT_TRUE(world.contacts().empty()) << "asleep, the step skips the pair";
+    EXPECT_TRUE(world.contacts().empty()) << "and the step skips it";
     const std::vector<Manifold> resting = restingContacts(world);
     ASSERT_EQ(resting.size(), 1u);
     EXPECT_EQ(resting[0].pointCount, 2);
