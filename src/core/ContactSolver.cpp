@@ -73,6 +73,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     };
     c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
     c.tangentImpulse = 0.0;
+    c.sliding = contact.sliding;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();
     for (int i = 0; i < m.pointCount; ++i) {
         const ContactPoint& mp = m.points[i];
@@ -322,11 +323,14 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
         // Friction after the normal rows, so its bound sees this pass's load.
         const double tx = -ny, ty = nx;
         const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
-        double tangent = c->tangentImpulse - c->tangentMass * vt;
-        if (std::abs(tangent) > c->staticFriction * totalNormal) {
-            const double bound = c->dynamicFriction * totalNormal;
-            tangent = std::clamp(tangent, -bound, bound);
-        }
+        // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's
+        // last word, decides which it is for the next substep: sliding when even the bound leaves the faces moving
+        // against each other faster than slipSpeed (a transient of one pass does not break a face loose).
+        const double bound = (c->sliding ? c->dynamicFriction : c->staticFriction) * totalNormal;
+        const double tangent = std::clamp(c->tangentImpulse - c->tangentMass * vt, -bound, bound);
+        if (!pass.useBias)
+            c->sliding = c->tangentMass > 0.0 &&
+                         std::abs(vt + (tangent - c->tangentImpulse) / c->tangentMass) > pass.slipSpeed;
         const double dt = tangent - c->tangentImpulse;
         c->tangentImpulse = tangent;
         vAx -= mA * dt * tx;
@@ -348,6 +352,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
 }
 
 void storeImpulses(const ContactConstraint& c, ContactData& contact) {
+    contact.sliding = c.sliding;
     Manifold& m = contact.manifold;
     const double share = c.pointCount > 0 ? c.tangentImpulse / c.pointCount : 0.0;
     for (int i = 0; i < c.pointCount; ++i) {

@@ -151,6 +151,7 @@ void WorldImpl::solve() {
     contactPass.softness = contactSoftness;
     contactPass.maxPushVelocity = settings.contactPushMaxVelocity;
     contactPass.restitutionThreshold = settings.restitutionThreshold;
+    contactPass.slipSpeed = 0.1 * settings.linearSlop / dt;
     auto solvePass = [&](bool useBias) {
         contactPass.useBias = useBias;
         pass([&](ContactConstraint* b, ContactConstraint* e, int) { solveContacts(b, e, st, contactPass); },
