@@ -588,7 +588,11 @@ std::size_t World::jointCount() const { return impl_->jointCount; }
 JointType World::jointType(JointId id) const {
     return joint(id).kind == JointKind::Mouse ? JointType::Mouse : JointType::Distance;
 }
-double World::jointLength(JointId id) const { return joint(id).length; }
+double World::jointLength(JointId id) const {
+    const JointData& j = joint(id);
+    if (j.kind != JointKind::Distance) throw std::invalid_argument("physim: jointLength needs a distance joint");
+    return j.length;
+}
 
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);

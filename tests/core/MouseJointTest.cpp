@@ -1,11 +1,12 @@
-// Mouse joints: a soft spring-damper (implicit Euler) from a body's point to a target, its force clamped.
-// Checked against the implicit spring-damper recurrence step by step, its static sag g / w^2, the clamp's
-// reduced free fall, contacts winning over the pull, and bad input.
+// Mouse joints: a soft spring-damper from a body's point to a target, its force clamped, solved in the soft step.
+// Checked against the exact damped oscillator (first-order convergence in the substep), its frequency, its
+// static sag g / w^2, the clamp's reduced free fall, contacts winning over the pull, and bad input.
 
 #include "physim/core/World.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -45,30 +46,49 @@ MouseJointDef grab(BodyId body, const Vec2& target, double hertz = 5.0, double d
     return def;
 }
 
-// Implicit Euler of m x'' = -k x - d x' over one substep h: m (v' - v) = -h (k x' + d v'), x' = x + h v'.
-// The joint must follow this recurrence; rounding over a few hundred substeps stays below 1e-12 m.
-TEST(MouseJoint, FollowsTheImplicitSpringDamperStepByStep) {
+// x(t) of x'' + 2 zeta w x' + w^2 x = 0 from rest at x0.
+double dampedOscillator(double x0, double zeta, double w, double t) {
+    if (zeta >= 1.0) return x0 * std::exp(-w * t) * (1.0 + w * t);  // critical (the only zeta >= 1 used)
+    const double wd = w * std::sqrt(1.0 - zeta * zeta);
+    return x0 * std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta * w / wd * std::sin(wd * t));
+}
+
+// A point mass (rotation locked) on the joint is the damped oscillator m x'' = -k x - d x' with k = m w^2 and
+// d = 2 m zeta w. The soft step is first order in its substep h: over one period of a 3 Hz spring the largest
+// distance from the exact path must halve as h halves (8 -> 16 -> 32 substeps; measured ratios 0.51 to 0.53,
+// e.g. 0.118, 0.063, 0.032 m undamped). A wrong stiffness or damping would not converge: the ratio would go to 1.
+TEST(MouseJoint, ConvergesToTheExactSpringDamperAtFirstOrder) {
+    const double w = 2 * M_PI * 3.0;
+    const int steps = 20;  // 1/3 s at 60 Hz: one period
     for (const double zeta : {0.0, 0.3, 1.0}) {
-        World world(noSleep(Vec2::Zero()));
-        const BodyId body = disc(world, {0.5, -0.2});
-        world.createMouseJoint(grab(body, Vec2::Zero(), 3.0, zeta));
-        const double m = 1.0, w = 2 * M_PI * 3.0, k = m * w * w, d = 2 * m * zeta * w;
-        const double h = kDt / world.settings().substeps;
-        Vec2 x(0.5, -0.2), v = Vec2::Zero();
-        for (int step = 0; step < 120; ++step) {
-            world.step(kDt);
-            for (int s = 0; s < world.settings().substeps; ++s) {
-                v = (m * v - h * k * x) / (m + h * d + h * h * k);
-                x += h * v;
+        std::vector<double> errors;
+        for (const int substeps : {8, 16, 32}) {
+            WorldSettings settings = noSleep(Vec2::Zero());
+            settings.substeps = substeps;
+            World world(settings);
+            const Vec2 start(0.5, -0.2);
+            const BodyId body = disc(world, start);
+            world.createMouseJoint(grab(body, Vec2::Zero(), 3.0, zeta));
+            double error = 0.0;
+            for (int step = 1; step <= steps; ++step) {
+                world.step(kDt);
+                const double t = step * kDt;
+                const Vec2 exact(dampedOscillator(start.x(), zeta, w, t), dampedOscillator(start.y(), zeta, w, t));
+                error = std::max(error, (world.position(body) - exact).norm());
             }
-            ASSERT_NEAR((world.position(body) - x).norm(), 0.0, 1e-12) << "zeta " << zeta << ", step " << step;
-            ASSERT_NEAR((world.velocity(body) - v).norm(), 0.0, 1e-10) << "zeta " << zeta << ", step " << step;
+            errors.push_back(error);
+        }
+        for (std::size_t i = 1; i < errors.size(); ++i) {
+            EXPECT_GT(errors[i] / errors[i - 1], 0.45) << "zeta " << zeta << ": errors " << errors[i - 1] << ", "
+                                                        << errors[i];
+            EXPECT_LT(errors[i] / errors[i - 1], 0.56) << "zeta " << zeta << ": errors " << errors[i - 1] << ", "
+                                                        << errors[i];
         }
     }
 }
 
-// Undamped, the anchor oscillates about the target at `hertz`: implicit Euler turns by atan(w h) per substep
-// instead of w h, lengthening the period by w h / atan(w h) = 0.6% at 5 Hz and h = 1/240 s. 1% allows that.
+// Undamped, the anchor oscillates about the target at `hertz`: the soft step's first-order error lengthens the
+// period slightly (0.2% measured at 5 Hz and h = 1/480 s). 1% allows that.
 TEST(MouseJoint, UndampedPullOscillatesAtItsFrequency) {
     World world(noSleep(Vec2::Zero()));
     const BodyId body = disc(world, {0.3, 0.0});
@@ -115,10 +135,11 @@ TEST(MouseJoint, MaxForceCapsThePull) {
     EXPECT_NEAR(world.position(body).y(), -0.5 * kG * h * h * n * (n + 1) / 2, 1e-9);
 }
 
-// The pull is a force; contacts are constraints. Dragged 2 m into a static wall with up to 1000 times its
-// weight, a disc stops at the wall's face. It arrives at 31 m/s, so the step that finds the contact overlaps by
-// up to one substep of travel (13 mm measured, 128 mm possible); the position passes then bring the overlap
-// back to the linearSlop (5 mm) that every resting contact keeps, and it stays there against the pull.
+// The pull is a force; contacts are constraints. Dragged towards a target 2 m inside a static wall, a disc stops
+// at the wall's face: it arrives at 31 m/s, and never gets deeper than one substep of travel. Resting there, the
+// wall's soft contact (a spring of w_c = 2 pi contactHertz, capped at a quarter of the substep rate) holds the
+// joint's pull k_j (2.2 m - overlap): the overlap is 2.2 k_j / (k_c + k_j) with k = m w^2 (3.81 mm here;
+// measured to 1e-7 m). 1e-5 m allows for the rest of the settling.
 TEST(MouseJoint, DraggedBodyStopsAtAWall) {
     World world(noSleep(Vec2::Zero()));
     BodyDef wall;
@@ -133,9 +154,12 @@ TEST(MouseJoint, DraggedBodyStopsAtAWall) {
         world.step(kDt);
         deepest = std::max(deepest, world.position(body).x() + 0.2 - 1.0);
     }
-    const double slop = world.settings().linearSlop;
-    EXPECT_LT(deepest, 31.0 * kDt / world.settings().substeps) << "never deeper than one substep of travel";
-    EXPECT_NEAR(world.position(body).x() + 0.2 - 1.0, slop, 1e-4) << "resting against the face";
+    const WorldSettings& s = world.settings();
+    EXPECT_LT(deepest, 31.0 * kDt / s.substeps) << "never deeper than one substep of travel";
+    const double contactW = 2 * M_PI * std::min(s.contactHertz, s.substeps / kDt / 4.0);
+    const double jointW = 2 * M_PI * 5.0;
+    const double overlap = 2.2 * jointW * jointW / (contactW * contactW + jointW * jointW);
+    EXPECT_NEAR(world.position(body).x() + 0.2 - 1.0, overlap, 1e-5) << "resting against the face";
     world.setMouseJointTarget(joint, {-1.0, 0.5});  // and follows the cursor back out
     for (int i = 0; i < 120; ++i) world.step(kDt);
     EXPECT_LT((world.position(body) - Vec2(-1.0, 0.5)).norm(), 1e-3);
@@ -152,9 +176,13 @@ TEST(MouseJoint, DraggedBodyPushesOthers) {
     EXPECT_GT((world.position(pushed) - world.position(body)).norm(), 0.4 - world.settings().linearSlop - 1e-3);
 }
 
-// A box grabbed by a corner swings about it. The implicit spring only removes energy; what remains is
-// symplectic Euler's bounded O(h) wobble of kinetic + potential + the spring's k C^2 / 2 (2.4e-4 J measured
-// on a swing whose potential energy spans 2.8 J). 1e-3 J bounds the wobble; over 10 s the energy must fall.
+// A box grabbed by a corner swings about it, and the pull must not pump energy into the swing. The joint's
+// stiffness is w^2 times the grabbed point's effective mass K^-1 (K = 1/m + r x I^-1 x r, as Box2D's), not
+// m w^2: off the centre of mass it is softer across the lever arm and turns with the box, so kinetic +
+// potential + k C^2 / 2 with k = m w^2 is not exactly kept even as h -> 0. Measured: above the start by at most
+// 26 mJ, a tenth of a second in (36 mJ as h -> 0), on a swing whose potential energy spans 0.83 J; then the
+// step's damping wins: at least 21 mJ below the start over the last 5 s, 49 mJ below after 10 s. 50 mJ bounds
+// the early excess; over the last 5 s the energy must stay below the start, and it must end lower.
 TEST(MouseJoint, OffCentreGrabAddsNoEnergy) {
     World world(noSleep());
     BodyDef def;
@@ -174,7 +202,7 @@ TEST(MouseJoint, OffCentreGrabAddsNoEnergy) {
     double swing = 0.0;
     for (int i = 0; i < 600; ++i) {
         world.step(kDt);
-        ASSERT_LE(energy(), start + 1e-3) << "step " << i;
+        ASSERT_LE(energy(), start + (i < 300 ? 0.05 : 0.0)) << "step " << i;
         swing = std::max(swing, std::abs(world.angle(box)));
     }
     EXPECT_LT(energy(), start);
