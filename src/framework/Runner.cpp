@@ -76,8 +76,12 @@ Runner::Runner(SimulationFactory factory, RunOptions options)
       windowSize_(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)) {
     if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
 #ifdef PHYSIM_WITH_CUDA
-    // Built with the CUDA layer: large continuous batches go to the GPU, or a line says why they stay on the CPU.
-    continuousSolver_ = cuda::makeContinuousSolver(std::clog);
+    // Built with the CUDA layer: large continuous batches go to the GPU, or a line says why they stay on the CPU
+    // (not under --quiet). A GPU that fails later is always reported.
+    std::ostream silent(nullptr);
+    cuda::GpuSolverOptions gpu;
+    gpu.log = &std::clog;
+    continuousSolver_ = cuda::makeContinuousSolver(options_.quiet ? silent : std::clog, gpu);
 #endif
 }
 
