@@ -69,7 +69,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.normal = m.normal;
     c.pointCount = m.pointCount;
     auto acceleration = [&](const BodyData& b, bool moves) -> Vec2 {
-        return moves ? Vec2((b.useGravity ? gravity : Vec2::Zero()) + b.invMass * b.force) : Vec2::Zero();
+        return moves ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
     };
     c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
     c.tangentImpulse = 0.0;
