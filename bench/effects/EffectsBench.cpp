@@ -229,35 +229,31 @@ std::vector<Row> rows() {
                      return s;
                  }});
     // Friction and rotation on everything (walls too), or on nothing but one far-off body that touches nothing.
-    auto material = [](double friction, bool farBody) {
-        return [friction, farBody] {
+    auto farBody = [](World& w, double friction, double spin) {
+        BodyDef d;
+        d.position = {1000.0, 0.0};
+        d.gravityScale = 0.0;
+        d.staticFriction = friction;
+        d.angularVelocity = spin;
+        w.createBody(d);
+    };
+    auto material = [farBody](double friction, bool far) {
+        return [=] {
             Scene s = circles();
             for (const BodyId b : s.bodies) s.world->setMaterial(b, 0.0, friction, friction);
             for (std::uint32_t i = 0; i < 3; ++i)  // the walls: created first
                 s.world->setMaterial(BodyId{i, 1}, 0.0, friction, friction);
-            if (farBody) {
-                BodyDef d;
-                d.position = {1000.0, 0.0};
-                d.gravityScale = 0.0;
-                d.staticFriction = 0.6;
-                s.world->createBody(d);
-            }
+            if (far) farBody(*s.world, 0.6, 0.0);
             return s;
         };
     };
     r.push_back({"friction", "400 circles", "every body mu 0.6 (without: all 0; unused: one far-off body mu 0.6)",
                  material(0.0, false), material(0.0, true), material(0.6, false)});
-    auto rotation = [](bool locked, bool farBody) {
-        return [locked, farBody] {
+    auto rotation = [farBody](bool locked, bool far) {
+        return [=] {
             Scene s = circles();
             for (const BodyId b : s.bodies) s.world->setFixedRotation(b, locked);
-            if (farBody) {
-                BodyDef d;
-                d.position = {1000.0, 0.0};
-                d.gravityScale = 0.0;
-                d.angularVelocity = 1.0;
-                s.world->createBody(d);
-            }
+            if (far) farBody(*s.world, 0.0, 1.0);
             return s;
         };
     };

@@ -189,32 +189,36 @@ double World::jointAngle(JointId id) const {
     return impl_->bodies[j.b].angle - impl_->bodies[j.a].angle - j.referenceAngle;
 }
 
+namespace {
+
+// The revolute joint a setter changes (std::invalid_argument for another kind), its bodies woken.
+JointData& revoluteToChange(WorldImpl& w, const JointData& j, JointId id, const char* call) {
+    w.requireNotStepping(call);
+    if (j.kind != JointKind::Revolute)
+        throw std::invalid_argument(std::string("physim: ") + call + " needs a revolute joint");
+    w.wakeBody(j.a);
+    w.wakeBody(j.b);
+    return w.joints[id.index];
+}
+
+}  // namespace
+
 void World::setJointMotor(JointId id, bool enable, double speed, double maxTorque) {
     requireMotor(speed, maxTorque);
-    const JointData& j = joint(id);
-    impl_->requireNotStepping("setJointMotor");
-    if (j.kind != JointKind::Revolute) throw std::invalid_argument("physim: setJointMotor needs a revolute joint");
-    JointData& m = impl_->joints[id.index];
+    JointData& m = revoluteToChange(*impl_, joint(id), id, "setJointMotor");
     m.enableMotor = enable;
     m.motorSpeed = speed;
     m.maxMotorTorque = maxTorque;
     if (!enable) m.motorImpulse = 0.0;
-    impl_->wakeBody(j.a);
-    impl_->wakeBody(j.b);
 }
 
 void World::setJointLimits(JointId id, bool enable, double lower, double upper) {
     requireLimits(lower, upper);
-    const JointData& j = joint(id);
-    impl_->requireNotStepping("setJointLimits");
-    if (j.kind != JointKind::Revolute) throw std::invalid_argument("physim: setJointLimits needs a revolute joint");
-    JointData& m = impl_->joints[id.index];
+    JointData& m = revoluteToChange(*impl_, joint(id), id, "setJointLimits");
     m.enableLimit = enable;
     m.lowerAngle = lower;
     m.upperAngle = upper;
     if (!enable) m.lowerImpulse = m.upperImpulse = 0.0;
-    impl_->wakeBody(j.a);
-    impl_->wakeBody(j.b);
 }
 
 }  // namespace physim
