@@ -348,6 +348,9 @@ int main(int argc, char** argv) {
         else if (arg == "--only") only = value();
         else usageError("unknown argument '" + arg + "'");
     }
+    const std::vector<Row> all = rows();
+    if (!only.empty() && std::none_of(all.begin(), all.end(), [&](const Row& r) { return r.effect == only; }))
+        usageError("--only: no effect named '" + only + "'");
     std::FILE* out = nullptr;
     if (!json.empty()) {
         out = std::fopen(json.c_str(), "w");
@@ -357,7 +360,7 @@ int main(int argc, char** argv) {
     std::printf("| effect | scene | used means | without (ms) | unused (ms) | used (ms) | unused / without | used / without |\n");
     std::printf("|---|---|---|---:|---:|---:|---:|---:|\n");
     bool first = true;
-    for (const Row& row : rows()) {
+    for (const Row& row : all) {
         if (!only.empty() && row.effect != only) continue;
         const Measured m = measure(row, rounds, steps);
         std::printf("| %s | %s | %s | %.4f | %.4f | %.4f | %.3f | %.2f |\n", row.effect.c_str(), row.scene.c_str(),
