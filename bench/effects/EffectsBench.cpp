@@ -2,11 +2,13 @@
 // in three forms, measured in one run: without the effect, with it available but unused (the world held it and
 // let it go, or holds it where it does nothing), and using it. Time is the stepping thread's CPU time (the worlds
 // step on one thread), so time spent descheduled on a shared machine does not count; rounds alternate the three
-// forms and each form's fastest round counts (what load is left, cache and memory contention, only adds time).
+// forms; each form's time is its fastest round (what load is left, cache and memory contention, only adds time)
+// and each ratio the median over rounds of that round's ratio (the three forms of a round share its load).
 //
-// Usage: effects_bench [--json FILE] [--rounds N (default 15)] [--steps N per round (default 10)]
+// Usage: effects_bench [--json FILE] [--rounds N (default 41)] [--steps N per round (default 5)]
 //        [--only NAME]
-// Writes [{"effect":..., "without_ms":x, "unused_ms":x, "used_ms":x}, ...] to FILE and a Markdown table to stdout.
+// Writes [{"effect":..., "without_ms":x, "unused_ms":x, "used_ms":x, "unused_ratio":x, "used_ratio":x}, ...] to
+// FILE and a Markdown table to stdout.
 
 #include "physim/core/World.hpp"
 
@@ -260,23 +262,24 @@ std::vector<Row> rows() {
     r.push_back({"rotation", "400 circles",
                  "every body free to turn (without: all locked; unused: one far-off body turning)",
                  rotation(true, false), rotation(true, true), rotation(false, false)});
-    r.push_back({"sleep bookkeeping", "400 circles", "sleep on, and allowed (the pile settles and sleeps)",
-                 [] { return circles(); },
-                 [] {
-                     Scene s = circles();
-                     WorldSettings settings = s.world->settings();
-                     settings.enableSleep = true;
-                     s.world->setSettings(settings);
-                     for (const BodyId b : s.bodies) s.world->setAllowSleep(b, false);
-                     return s;
-                 },
-                 [] {
-                     Scene s = circles();
-                     WorldSettings settings = s.world->settings();
-                     settings.enableSleep = true;
-                     s.world->setSettings(settings);
-                     return s;
-                 }});
+    // Sleep: its bookkeeping (islands, rest timers, the Sleep stage) costs only while sleep is on; here nothing may
+    // fall asleep, so the three forms do the same simulation. What sleeping saves is the next row's.
+    auto sleepOn = [](bool on, bool off) {
+        return [=] {
+            Scene s = circles();
+            WorldSettings settings = s.world->settings();
+            settings.enableSleep = on;
+            s.world->setSettings(settings);
+            if (off) {
+                settings.enableSleep = false;
+                s.world->setSettings(settings);
+            }
+            for (const BodyId b : s.bodies) s.world->setAllowSleep(b, false);
+            return s;
+        };
+    };
+    r.push_back({"sleep bookkeeping", "400 circles", "sleep on, no body allowed to sleep (unused: turned on and off again)",
+                 sleepOn(false, false), sleepOn(true, true), sleepOn(true, false)});
     r.push_back({"sleeping pile", "20-box-base pyramid (210 boxes)",
                  "awake pile (sleep off); without: ground only; unused: the pile asleep",
                  [] { return pyramid(false); }, [] { return pyramid(true); },
@@ -298,23 +301,37 @@ double threadMilliseconds() {
 }
 
 struct Measured {
-    double without = 0.0, unused = 0.0, used = 0.0;  // ms per step
+    double without = 0.0, unused = 0.0, used = 0.0;  // ms per step, each form's fastest round
+    double unusedRatio = 0.0, usedRatio = 0.0;        // median over rounds of the round's unused / without, used / without
 };
 
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    const std::size_t n = v.size();
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// Each round steps the three forms back to back (in a rotating order), so a round's three times share the
+// machine's load of that moment: the median of the rounds' ratios is the comparison that load disturbs least.
 Measured measure(const Row& row, int rounds, int steps) {
-    const auto fastest = [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); };
     Scene scenes[3] = {row.without(), row.unused(), row.usedBuild()};
     for (Scene& s : scenes)
         for (int i = 0; i < 120; ++i) s.world->step(kDt);  // settle: 2 s (the pile sleeps after about 1.5 s)
-    std::vector<double> times[3];
-    for (int r = 0; r < rounds; ++r)
+    std::vector<double> times[3], unusedRatio, usedRatio;
+    for (int r = 0; r < rounds; ++r) {
+        double t[3];
         for (int k = 0; k < 3; ++k) {
-            const int which = (k + r) % 3;  // rotate the order each round
+            const int which = (k + r) % 3;
             const double start = threadMilliseconds();
             for (int i = 0; i < steps; ++i) scenes[which].world->step(kDt);
-            times[which].push_back((threadMilliseconds() - start) / steps);
+            t[which] = (threadMilliseconds() - start) / steps;
+            times[which].push_back(t[which]);
         }
-    return {fastest(times[0]), fastest(times[1]), fastest(times[2])};
+        unusedRatio.push_back(t[1] / t[0]);
+        usedRatio.push_back(t[2] / t[0]);
+    }
+    const auto fastest = [](const std::vector<double>& v) { return *std::min_element(v.begin(), v.end()); };
+    return {fastest(times[0]), fastest(times[1]), fastest(times[2]), median(unusedRatio), median(usedRatio)};
 }
 
 [[noreturn]] void usageError(const std::string& message) {
@@ -335,7 +352,7 @@ int positiveInt(const std::string& flag, const char* text) {
 
 int main(int argc, char** argv) {
     std::string json, only;
-    int rounds = 15, steps = 10;
+    int rounds = 41, steps = 5;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto value = [&]() -> const char* {
@@ -364,11 +381,13 @@ int main(int argc, char** argv) {
         if (!only.empty() && row.effect != only) continue;
         const Measured m = measure(row, rounds, steps);
         std::printf("| %s | %s | %s | %.4f | %.4f | %.4f | %.3f | %.2f |\n", row.effect.c_str(), row.scene.c_str(),
-                    row.used.c_str(), m.without, m.unused, m.used, m.unused / m.without, m.used / m.without);
+                    row.used.c_str(), m.without, m.unused, m.used, m.unusedRatio, m.usedRatio);
         std::fflush(stdout);
         if (out) {
-            std::fprintf(out, "%s\n  {\"effect\": \"%s\", \"without_ms\": %.6f, \"unused_ms\": %.6f, \"used_ms\": %.6f}",
-                         first ? "" : ",", row.effect.c_str(), m.without, m.unused, m.used);
+            std::fprintf(out,
+                         "%s\n  {\"effect\": \"%s\", \"without_ms\": %.6f, \"unused_ms\": %.6f, \"used_ms\": %.6f, "
+                         "\"unused_ratio\": %.4f, \"used_ratio\": %.4f}",
+                         first ? "" : ",", row.effect.c_str(), m.without, m.unused, m.used, m.unusedRatio, m.usedRatio);
         }
         first = false;
     }
