@@ -8,6 +8,7 @@ const std::vector<Scene>& scenes() {
         {"gas", makeGas},                {"pendulum", makePendulum},          {"rope", makeRope},
         {"projectile", makeProjectile},  {"incline", makeIncline},            {"collisions", makeCollisions},
         {"newtons_cradle", makeNewtonsCradle}, {"pyramid", makePyramid},
+        {"drag", makeDrag},              {"orbits", makeOrbits},              {"galaxy", makeGalaxy},
     };
     return all;
 }

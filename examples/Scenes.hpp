@@ -21,6 +21,9 @@ std::unique_ptr<Simulation> makeIncline();
 std::unique_ptr<Simulation> makeCollisions();
 std::unique_ptr<Simulation> makeNewtonsCradle();
 std::unique_ptr<Simulation> makePyramid();
+std::unique_ptr<Simulation> makeDrag();
+std::unique_ptr<Simulation> makeOrbits();
+std::unique_ptr<Simulation> makeGalaxy();
 
 struct Scene {
     std::string name;  ///< the example's program name

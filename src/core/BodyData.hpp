@@ -48,6 +48,8 @@ struct BodyData {
 
     BodyType type = BodyType::Dynamic;
     bool useGravity = true;
+    double gravityScale = 1.0;
+    bool attracting = false;        // in the gravitation effect: never sleeps (the others pull it all the time)
     bool fixedRotation = false;
     bool allowSleep = true;
     bool alive = false;
@@ -72,6 +74,9 @@ struct BodyData {
     double sleepTime = 0.0;         // s spent below the sleep tolerances
 
     bool movable() const { return type != BodyType::Static; }
+    /// Multiplies the world's gravity for this body.
+    double gravityFactor() const { return useGravity ? gravityScale : 0.0; }
+    bool canSleep() const { return allowSleep && !attracting; }
     bool awake() const { return awakeIndex != kNullIndex; }
 };
 

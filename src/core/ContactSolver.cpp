@@ -69,7 +69,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.normal = m.normal;
     c.pointCount = m.pointCount;
     auto acceleration = [&](const BodyData& b, bool moves) -> Vec2 {
-        return moves ? Vec2((b.useGravity ? gravity : Vec2::Zero()) + b.invMass * b.force) : Vec2::Zero();
+        return moves ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
     };
     c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
     c.tangentImpulse = 0.0;
@@ -331,25 +331,28 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
                 totalNormal = c->points[0].normalImpulse + (count == 2 ? c->points[1].normalImpulse : 0.0);
             }
         }
-        // Friction after the normal rows, so its bound sees this pass's load.
-        const double tx = -ny, ty = nx;
-        const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
-        // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's
-        // last word, decides which it is for the next substep: sliding when even the bound leaves the faces moving
-        // against each other faster than slipSpeed (a transient of one pass does not break a face loose).
-        const double bound = (c->sliding ? c->dynamicFriction : c->staticFriction) * totalNormal;
-        const double tangent = std::clamp(c->tangentImpulse - c->tangentMass * vt, -bound, bound);
-        if (!pass.useBias)
-            c->sliding = c->tangentMass > 0.0 &&
-                         std::abs(vt + (tangent - c->tangentImpulse) / c->tangentMass) > pass.slipSpeed;
-        const double dt = tangent - c->tangentImpulse;
-        c->tangentImpulse = tangent;
-        vAx -= mA * dt * tx;
-        vAy -= mA * dt * ty;
-        wA -= iA * dt * c->rtA;
-        vBx += mB * dt * tx;
-        vBy += mB * dt * ty;
-        wB += iB * dt * c->rtB;
+        // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
+        if (c->staticFriction > 0.0 || c->dynamicFriction > 0.0) {
+            const double tx = -ny, ty = nx;
+            const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
+            // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the
+            // substep's last word, decides which it is for the next substep: sliding when even the bound leaves the
+            // faces moving against each other faster than slipSpeed (a transient of one pass does not break a
+            // face loose).
+            const double bound = (c->sliding ? c->dynamicFriction : c->staticFriction) * totalNormal;
+            const double tangent = std::clamp(c->tangentImpulse - c->tangentMass * vt, -bound, bound);
+            if (!pass.useBias)
+                c->sliding = c->tangentMass > 0.0 &&
+                             std::abs(vt + (tangent - c->tangentImpulse) / c->tangentMass) > pass.slipSpeed;
+            const double dt = tangent - c->tangentImpulse;
+            c->tangentImpulse = tangent;
+            vAx -= mA * dt * tx;
+            vAy -= mA * dt * ty;
+            wA -= iA * dt * c->rtA;
+            vBx += mB * dt * tx;
+            vBy += mB * dt * ty;
+            wB += iB * dt * c->rtB;
+        }
         // Only bodies a row can move are written back: a kinematic body is read by many rows of one colour.
         if (mA != 0.0) {
             sa.v = {vAx, vAy};

@@ -83,7 +83,7 @@ void ContinuousStage::run(WorldImpl& w) {
     candidates_.clear();
     for (std::uint32_t i = 0; i < w.awake.size(); ++i) {
         const BodyData& b = w.bodies[w.awake[i]];
-        if (b.type != BodyType::Dynamic) continue;
+        if (b.type != BodyType::Dynamic || b.proxy == kNullIndex) continue;  // a body that touches nothing
         const Sweep s = sweepOf(w, w.awake[i]);
         const bool continuous = b.detection != CollisionDetection::Discrete;
         const double travel = (s.p1 - s.p0).norm() + std::abs(s.a1 - s.a0) * b.extent;

@@ -66,8 +66,7 @@ void WorldImpl::solve() {
                 sim.center0 = b.center;
                 sim.q0 = b.xf.q;
                 sim.angle0 = b.angle;
-                sim.acceleration = dynamic ? Vec2((b.useGravity ? gravity : Vec2::Zero()) + b.invMass * b.force)
-                                           : Vec2::Zero();
+                sim.acceleration = dynamic ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
                 sim.angularAcceleration = dynamic ? b.invInertia * b.torque : 0.0;
                 sim.invInertia = dynamic ? b.invInertia : 0.0;
                 sim.body = awake[i];
@@ -81,7 +80,7 @@ void WorldImpl::solve() {
     constraints.clear();
     jointConstraints.clear();
     colourStart.assign(kColours + 2, 0);
-    if (!awakeContacts.empty() || jointCount > 0) {
+    if (!awakeContacts.empty() || rowJointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         const std::size_t words = (n + 63) / 64;
         colourBits.assign(static_cast<std::size_t>(kColours) * words, 0);
@@ -121,7 +120,7 @@ void WorldImpl::solve() {
         jointConstraints.clear();
         for (std::uint32_t j = 0; j < joints.size(); ++j) {
             const JointData& joint = joints[j];
-            if (!joint.alive) continue;
+            if (!joint.alive || !joint.isRow()) continue;
             const bool active = bodies[joint.b].awake() || (joint.twoBodies() && bodies[joint.a].awake());
             if (!active) continue;
             JointConstraint row;
@@ -161,6 +160,7 @@ void WorldImpl::solve() {
 
     for (int sub = 0; sub < substeps; ++sub) {
         contactPass.substep = sub;
+        if (effects.perSubstep()) effects.substep(*this, h);
         {
             StageTimer timer(profile, Stage::Integrate);
             executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
@@ -236,7 +236,7 @@ void WorldImpl::solve() {
             b.force.setZero();
             b.torque = 0.0;
             b.aabb = computeAabb(b.shape, b.xf);
-            if (sleep && b.allowSleep && sim.dynamic && b.v.norm() <= linearTolerance &&
+            if (sleep && b.canSleep() && sim.dynamic && b.v.norm() <= linearTolerance &&
                 std::abs(b.w) <= angularTolerance)
                 b.sleepTime += dt;
             else
@@ -244,7 +244,8 @@ void WorldImpl::solve() {
             // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
             const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
             enlarged[i] = static_cast<std::uint8_t>((proxyOutgrown(b) ? 1 : 0) |
-                                                    (sim.dynamic && travel > 0.5 * b.coreRadius ? 2 : 0));
+                                                    (sim.dynamic && b.proxy != kNullIndex &&
+                                                     travel > 0.5 * b.coreRadius ? 2 : 0));
         }
     });
     fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });

@@ -18,6 +18,17 @@ std::string_view stageName(Stage s) {
     return "?";
 }
 
+std::string_view effectName(Effect e) {
+    switch (e) {
+        case Effect::Drag: return "drag";
+        case Effect::Springs: return "springs";
+        case Effect::Gravitation: return "gravitation";
+        case Effect::Callbacks: return "force callbacks";
+        case Effect::Count: break;
+    }
+    return "?";
+}
+
 double StepProfile::total() const { return std::accumulate(seconds.begin(), seconds.end(), 0.0); }
 
 }  // namespace physim

@@ -52,6 +52,8 @@ void validate(const BodyDef& def) {
     requireInRange("body restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("body static friction", def.staticFriction);
     requireNonNegative("body dynamic friction", def.dynamicFriction);
+    requireFinite("body gravity scale", def.gravityScale);
+    validate(def.drag);
     validate(def.shape);
     checkPrecision(def.precision);
 }
@@ -198,6 +200,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.staticFriction = def.staticFriction;
     b.dynamicFriction = def.dynamicFriction;
     b.useGravity = def.useGravity;
+    b.gravityScale = def.gravityScale;
     b.fixedRotation = def.fixedRotation;
     b.allowSleep = def.allowSleep;
     b.detection = def.collisionDetection;
@@ -209,10 +212,15 @@ BodyId World::createBody(const BodyDef& def) {
     }
     if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
     b.aabb = computeAabb(b.shape, b.xf);
-    b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
+    if (def.collides) b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
     w.addAwakeBody(index);
-    if (def.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
+    if (def.type == BodyType::Static && def.collides) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
+    w.effects.drag.set(index, def.drag, b.shape);
+    if (def.attracting) {
+        b.attracting = true;
+        w.effects.gravitation.add(index);
+    }
 
     w.touched.push_back(index);
     ++w.shapeRevision;
@@ -239,7 +247,9 @@ void World::destroyBody(BodyId id) {
     BodyData& b = w.bodies[index];
     w.removeFromIsland(index);
     w.removeAwakeBody(index);
-    w.broadPhase.destroyProxy(b.proxy);
+    if (b.proxy != kNullIndex) w.broadPhase.destroyProxy(b.proxy);
+    b.proxy = kNullIndex;
+    w.effects.bodyDestroyed(index);
     --w.liveCount;
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) --w.continuousCount;
@@ -317,6 +327,7 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
     b.angle = angle;
     b.center = b.xf.apply(b.localCenter);
     b.aabb = computeAabb(b.shape, b.xf);
+    if (b.proxy == kNullIndex) return;
     impl_->broadPhase.moveProxy(b.proxy, impl_->proxyBox(b, kAabbMargin));
     if (b.type == BodyType::Static) impl_->wakeOverlapping(impl_->broadPhase.fatBox(b.proxy));
 }
@@ -377,7 +388,9 @@ void World::setType(BodyId id, BodyType type) {
         b.w = 0.0;
     }
     if (type == BodyType::Dynamic) ++w.dynamicCount;
-    if (wasStatic != (type == BodyType::Static)) {
+    if (b.proxy == kNullIndex) {
+        // touches nothing: no proxy to rebuild
+    } else if (wasStatic != (type == BodyType::Static)) {
         w.broadPhase.destroyProxy(b.proxy);
         b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, type == BodyType::Static);
     } else {
@@ -501,6 +514,24 @@ void unlinkJoint(WorldImpl& w, std::uint32_t index) {
 
 }  // namespace
 
+std::uint32_t WorldImpl::addJoint(const JointData& data) {
+    const std::uint32_t index = takeSlot(joints, freeJoints);
+    JointData& j = joints[index];
+    const std::uint32_t generation = j.generation;
+    j = data;
+    j.generation = generation;
+    j.alive = true;
+    linkJoint(*this, index);
+    ++jointCount;
+    if (j.isRow()) ++rowJointCount;
+    wakeBody(j.b);
+    if (j.twoBodies()) {
+        wakeBody(j.a);
+        if (bodies[j.a].type == BodyType::Dynamic && bodies[j.b].type == BodyType::Dynamic) linkBodies(j.a, j.b);
+    }
+    return index;
+}
+
 JointId World::createDistanceJoint(const DistanceJointDef& def) {
     const BodyData& A = at(def.bodyA);
     const BodyData& B = at(def.bodyB);
@@ -515,21 +546,19 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
     if (!(length > 1e-9))
         throw std::invalid_argument("physim: distance joint length must be > 0 m, got " + std::to_string(length));
-    WorldImpl& w = *impl_;
-    const std::uint32_t index = takeSlot(w.joints, w.freeJoints);
-    JointData& j = w.joints[index];
+    requireNonNegative("distance joint hertz", def.hertz);
+    requireNonNegative("distance joint dampingRatio", def.dampingRatio);
+    JointData j;
     j.kind = JointKind::Distance;
     j.a = def.bodyA.index;
     j.b = def.bodyB.index;
     j.localA = def.localAnchorA;
     j.localB = def.localAnchorB;
     j.length = length;
-    linkJoint(w, index);
-    ++w.jointCount;
-    w.wakeBody(j.a);
-    w.wakeBody(j.b);
-    if (w.bodies[j.a].type == BodyType::Dynamic && w.bodies[j.b].type == BodyType::Dynamic) w.linkBodies(j.a, j.b);
-    return JointId{index, j.generation};
+    j.hertz = def.hertz;
+    j.dampingRatio = def.dampingRatio;
+    const std::uint32_t index = impl_->addJoint(j);
+    return JointId{index, impl_->joints[index].generation};
 }
 
 JointId World::createMouseJoint(const MouseJointDef& def) {
@@ -541,9 +570,7 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
     requirePositive("mouse joint maxForce", def.maxForce);
     requirePositive("mouse joint hertz", def.hertz);
     requireNonNegative("mouse joint dampingRatio", def.dampingRatio);
-    WorldImpl& w = *impl_;
-    const std::uint32_t index = takeSlot(w.joints, w.freeJoints);
-    JointData& j = w.joints[index];
+    JointData j;
     j.kind = JointKind::Mouse;
     j.a = j.b = def.body.index;
     j.localB = def.localAnchor;
@@ -551,10 +578,8 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
     j.maxForce = def.maxForce;
     j.hertz = def.hertz;
     j.dampingRatio = def.dampingRatio;
-    linkJoint(w, index);
-    ++w.jointCount;
-    w.wakeBody(j.b);
-    return JointId{index, j.generation};
+    const std::uint32_t index = impl_->addJoint(j);
+    return JointId{index, impl_->joints[index].generation};
 }
 
 void World::setMouseJointTarget(JointId id, const Vec2& target) {
@@ -590,6 +615,8 @@ void World::destroyJoint(JointId id) {
             w.unlinkBodies(j.a, j.b);
     }
     unlinkJoint(w, id.index);
+    if (j.isRow()) --w.rowJointCount;
+    else w.effects.springs.remove(id.index);
     w.joints[id.index].alive = false;
     w.freeJoints.push_back(id.index);
     --w.jointCount;
@@ -597,7 +624,14 @@ void World::destroyJoint(JointId id) {
 
 std::size_t World::jointCount() const { return impl_->jointCount; }
 JointType World::jointType(JointId id) const {
-    return joint(id).kind == JointKind::Mouse ? JointType::Mouse : JointType::Distance;
+    switch (joint(id).kind) {
+        case JointKind::Distance: return JointType::Distance;
+        case JointKind::Mouse: return JointType::Mouse;
+        case JointKind::Spring: return JointType::Spring;
+        case JointKind::Revolute: return JointType::Revolute;
+        case JointKind::Weld: return JointType::Weld;
+    }
+    return JointType::Distance;
 }
 double World::jointLength(JointId id) const {
     const JointData& j = joint(id);
@@ -608,7 +642,7 @@ double World::jointLength(JointId id) const {
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);
     const Vec2 onB = impl_->bodies[j.b].xf.apply(j.localB);
-    if (j.kind == JointKind::Mouse) return {j.target, onB};
+    if (!j.twoBodies()) return {j.target, onB};
     return {impl_->bodies[j.a].xf.apply(j.localA), onB};
 }
 
@@ -641,6 +675,15 @@ void World::step(double dt) {
     if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
     WorldImpl& w = *impl_;
     w.requireNotStepping("step");
+    if (w.effects.callbacks.running()) throw std::logic_error("physim: World::step called from a force callback");
+    w.profile = StepProfile{};
+    // The user's forces first, outside the step proper: they may apply forces as between steps.
+    if (w.effects.callbacks.active()) {
+        const auto start = std::chrono::steady_clock::now();
+        w.effects.callbacks.run(*this, dt);
+        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+        recordEffect(w.profile, Effect::Callbacks, elapsed.count());
+    }
     struct SteppingGuard {
         WorldImpl& w;
         explicit SteppingGuard(WorldImpl& world) : w(world) { w.stepping = true; }
@@ -648,7 +691,6 @@ void World::step(double dt) {
     } guard(w);
 
     w.dt = dt;
-    w.profile = StepProfile{};
     w.events.begin.clear();
     w.events.end.clear();
     w.events.impacts.clear();

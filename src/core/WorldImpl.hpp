@@ -9,6 +9,8 @@
 //   ContactSolver.cpp  the contact constraint rows
 //   Joints.cpp         the joint rows (distance, mouse)
 //   ContinuousStage.cpp time of impact for fast bodies
+//   WorldEffects.cpp   the public API of the effects and of the revolute, weld and spring joints
+//   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
 #include "BodyData.hpp"
 #include "BroadPhase.hpp"
@@ -20,6 +22,7 @@
 #include "JointData.hpp"
 #include "PairSet.hpp"
 #include "SolverData.hpp"
+#include "effects/Effects.hpp"
 
 #include "physim/core/Contact.hpp"
 #include "physim/core/StepProfile.hpp"
@@ -60,11 +63,13 @@ struct WorldImpl {
     std::vector<JointData> joints;
     std::vector<std::uint32_t> freeJoints;
     std::size_t jointCount = 0;
+    std::size_t rowJointCount = 0;  // joints solved as rows (all but springs)
     std::vector<IslandData> islands;
     std::vector<std::uint32_t> freeIslands;
 
     BroadPhase broadPhase;
     ContinuousStage continuous;
+    Effects effects;
 
     // Step scratch, kept between steps so a running scene allocates nothing.
     std::vector<BodyPair> newPairs;
@@ -101,9 +106,14 @@ struct WorldImpl {
     // World.cpp
     void requireNotStepping(const char* call) const;
     void wakeOverlapping(const Aabb& box);  // sleeping bodies whose proxies overlap the box wake
+    /// Takes a joint slot for `data`, links it to its bodies (and their islands) and wakes them.
+    std::uint32_t addJoint(const JointData& data);
     /// The box a proxy needs at the body's pose and velocity (the next step's motion and turn), grown by margin.
     Aabb proxyBox(const BodyData& b, double margin) const;
-    bool proxyOutgrown(const BodyData& b) const { return !broadPhase.fatBox(b.proxy).contains(proxyBox(b, 0.0)); }
+    /// A body that collides (has a proxy) whose motion left its proxy's box.
+    bool proxyOutgrown(const BodyData& b) const {
+        return b.proxy != kNullIndex && !broadPhase.fatBox(b.proxy).contains(proxyBox(b, 0.0));
+    }
     void moveProxy(const BodyData& b) { broadPhase.moveProxy(b.proxy, proxyBox(b, kAabbMargin)); }
 
     // Contacts.cpp

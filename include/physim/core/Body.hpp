@@ -1,6 +1,7 @@
 #pragma once
 // Body description handed to World::createBody, and the handle the world gives back.
 
+#include "physim/core/Drag.hpp"
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
 #include "physim/core/TimeOfImpact.hpp"
@@ -38,11 +39,17 @@ struct BodyDef {
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
     bool useGravity = true;
+    double gravityScale = 1.0;         ///< finite: the body feels gravityScale times the world's gravity
     bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it
     bool allowSleep = true;            ///< false: this body, and any island it touches, never sleeps
     /// Discrete, or continuous (sampled or exact time of impact; dynamic bodies only, docs/ccd.md).
     CollisionDetection collisionDetection = CollisionDetection::Discrete;
     double precision = kDefaultPrecision;  ///< sampled method's spacing, fraction of the step, in (0, 1]
+    /// false: the body touches nothing (no broad-phase proxy, no contacts): a star, a tracer particle.
+    bool collides = true;
+    /// true: the body takes part in Newtonian gravitation between bodies (GravitationSettings, World.hpp).
+    bool attracting = false;
+    DragDef drag{};                    ///< air drag (none by default)
 };
 
 }  // namespace physim

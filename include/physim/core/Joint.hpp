@@ -1,7 +1,13 @@
 #pragma once
-// Joints: constraints solved with the contacts. The distance joint is a massless rigid rod between an anchor on
-// each body (a pendulum's string held taut, a rope's links); the mouse joint is a soft spring with a force cap
-// pulling a body's anchor towards a target point (dragging a body with the mouse).
+// Joints. Constraints solved with the contacts:
+//   distance  a massless rigid rod between an anchor on each body (a pendulum's string held taut, the paper's
+//             rope's links), or with `hertz` > 0 a soft one (a spring solved implicitly: a soft rope's links);
+//   mouse     a soft spring with a force cap pulling a body's anchor towards a target point (dragging);
+//   revolute  a pin: two bodies share a point and turn freely about it, within optional angle limits, driven by
+//             an optional motor;
+//   weld      two bodies share a point and their relative angle: glued.
+// And one force, evaluated every substep (docs/effects.md):
+//   spring    Hooke's law with damping between an anchor on each body, or from a body's anchor to a world point.
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Math.hpp"
@@ -21,7 +27,7 @@ struct JointId {
     }
 };
 
-enum class JointType { Distance, Mouse };
+enum class JointType { Distance, Mouse, Spring, Revolute, Weld };
 
 struct DistanceJointDef {
     BodyId bodyA;
@@ -30,6 +36,11 @@ struct DistanceJointDef {
     Vec2 localAnchorB = Vec2::Zero();  ///< m, in B's frame
     /// m, > 0; <= 0 (the default) takes the anchors' distance when the joint is created.
     double length = 0.0;
+    /// Hz, >= 0. 0: a rigid rod. > 0: a soft link that pulls back like a spring of this frequency for the masses
+    /// it joins (stiffness k = m_eff (2 pi hertz)^2, m_eff the link's effective mass: m for one body of mass m
+    /// against a fixed one, m / 2 between two of mass m), solved implicitly, so any stiffness is stable.
+    double hertz = 0.0;
+    double dampingRatio = 1.0;  ///< >= 0, of the soft link; 1 is critical
 };
 
 struct MouseJointDef {
@@ -39,6 +50,39 @@ struct MouseJointDef {
     double maxForce = 0.0;             ///< N, > 0: the pull never exceeds it (e.g. 1000 m |g|)
     double hertz = 5.0;                ///< spring frequency, Hz, > 0
     double dampingRatio = 0.7;         ///< >= 0; 1 is critical damping
+};
+
+/// A Hooke spring: F on B = -(stiffness (L - restLength) + damping dL/dt) u, L = |anchorB - anchorA| and u the
+/// unit vector from anchorA to anchorB (N; its reaction, -F, acts on A). Evaluated every substep as a force
+/// (explicit): stable while the spring's frequency sqrt(k / m) stays well below the substep rate; for stiffer
+/// links use a soft distance joint (DistanceJointDef::hertz).
+struct SpringJointDef {
+    BodyId bodyA;                      ///< null: the spring's first end is the world point localAnchorA
+    BodyId bodyB;                      ///< a body
+    Vec2 localAnchorA = Vec2::Zero();  ///< m, in A's frame (origin-relative), or a world point when bodyA is null
+    Vec2 localAnchorB = Vec2::Zero();  ///< m, in B's frame (origin-relative)
+    double restLength = -1.0;          ///< m, >= 0; < 0 (the default) takes the anchors' distance at creation
+    double stiffness = 0.0;            ///< k, N/m, > 0
+    double damping = 0.0;              ///< c, N s/m, >= 0 (along the spring)
+};
+
+/// A pin at a world point: each body keeps the point where it is at creation, and the bodies turn freely about
+/// it. The joint angle is angle(B) - angle(A) minus its value at creation, rad.
+struct RevoluteJointDef {
+    BodyId bodyA, bodyB;
+    Vec2 anchor = Vec2::Zero();        ///< the pin, world point, m
+    bool enableLimit = false;
+    double lowerAngle = 0.0;           ///< rad, <= upperAngle
+    double upperAngle = 0.0;           ///< rad
+    bool enableMotor = false;
+    double motorSpeed = 0.0;           ///< rad/s of B relative to A
+    double maxMotorTorque = 0.0;       ///< N m, >= 0
+};
+
+/// Glues two bodies at a world point: their relative pose stays what it is at creation.
+struct WeldJointDef {
+    BodyId bodyA, bodyB;
+    Vec2 anchor = Vec2::Zero();        ///< world point, m
 };
 
 }  // namespace physim

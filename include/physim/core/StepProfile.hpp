@@ -9,7 +9,7 @@ namespace physim {
 /// The stages of one fixed step, in order. A stage the scene's content does not call for is skipped before
 /// it does any work (StepProfile::ran tells which ran).
 enum class Stage : std::size_t {
-    Forces,       ///< gravity and accumulated forces into velocities
+    Forces,       ///< gravity, accumulated forces and the force effects into velocities
     BroadPhase,   ///< candidate pairs whose bounding boxes overlap
     NarrowPhase,  ///< contact manifolds of the candidate pairs
     Continuous,   ///< time of impact for fast bodies
@@ -21,17 +21,34 @@ enum class Stage : std::size_t {
 
 std::string_view stageName(Stage s);
 
+/// The force effects (docs/effects.md). Each runs, inside the Forces stage, only while the world holds something
+/// that uses it: a body with drag, a spring joint, two attracting bodies, a force callback.
+enum class Effect : std::size_t {
+    Drag,         ///< air drag, every substep
+    Springs,      ///< spring joints, every substep
+    Gravitation,  ///< Newtonian gravitation between attracting bodies, every substep
+    Callbacks,    ///< user force callbacks, at the start of the step
+    Count
+};
+
+std::string_view effectName(Effect e);
+
 /// Wall-clock cost of the last step, per stage.
 struct StepProfile {
     static constexpr std::size_t stageCount = static_cast<std::size_t>(Stage::Count);
     std::array<double, stageCount> seconds{};
     std::array<bool, stageCount> ran{};
+    static constexpr std::size_t effectCount = static_cast<std::size_t>(Effect::Count);
+    std::array<double, effectCount> effectSeconds{};  ///< part of the Forces stage's seconds
+    std::array<bool, effectCount> effectRan{};
     std::size_t candidatePairs = 0;
     std::size_t manifolds = 0;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
     double secondsOf(Stage s) const { return seconds[static_cast<std::size_t>(s)]; }
     bool didRun(Stage s) const { return ran[static_cast<std::size_t>(s)]; }
+    bool didRun(Effect e) const { return effectRan[static_cast<std::size_t>(e)]; }
+    double secondsOf(Effect e) const { return effectSeconds[static_cast<std::size_t>(e)]; }
     double total() const;
 };
 

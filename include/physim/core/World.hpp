@@ -6,7 +6,9 @@
 //   BroadPhase   proxies that left their enlarged boxes find new candidate pairs; new pairs become contacts
 //   NarrowPhase  every awake contact's manifold, found once per step with a speculative margin; touching begins
 //                and ends (contactEvents()), touched sleepers wake
-//   Forces       gravity and accumulated forces become accelerations for the step
+//   Forces       gravity and accumulated forces become accelerations for the step; the force effects the world
+//                holds (force callbacks at the step's start; gravitation, springs and drag every substep) act
+//                (docs/effects.md)
 //   Solve        the soft step (docs/architecture.md): `substeps` times integrate, warm start, solve, integrate
 //   Integrate    positions, relax; then restitution; poses and boxes updated
 //   Continuous   time of impact for fast bodies (docs/ccd.md)
@@ -16,6 +18,8 @@
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
+#include "physim/core/ForceCallback.hpp"
+#include "physim/core/Gravitation.hpp"
 #include "physim/core/Joint.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
@@ -124,6 +128,32 @@ public:
     /// Instant change of momentum (N s) at a world point (m): also changes the angular velocity.
     void applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint);
 
+    // --- effects (docs/effects.md): each costs nothing while no body uses it ---------------------------
+    /// Finite; the body feels scale times the world's gravity (when useGravity). Wakes it.
+    void setGravityScale(BodyId id, double scale);
+    double gravityScale(BodyId id) const;
+    /// Validates (std::invalid_argument naming the field) and gives the body this drag; all zero removes it.
+    /// Wakes it.
+    void setDrag(BodyId id, const DragDef& drag);
+    DragDef drag(BodyId id) const;
+    /// false: the body touches nothing (its contacts end, waking what they held); true: it collides again.
+    void setCollides(BodyId id, bool collides);
+    bool collides(BodyId id) const;
+    /// true: the body pulls, and is pulled by, every other attracting body (gravitation()); such a body never
+    /// sleeps. Static and kinematic bodies have no mass, so they neither pull nor are pulled. Wakes it.
+    void setAttracting(BodyId id, bool attracting);
+    bool attracting(BodyId id) const;
+    std::size_t attractingCount() const;
+    /// Validates (std::invalid_argument naming the field) and sets the law of gravitation between bodies.
+    void setGravitation(const GravitationSettings& settings);
+    const GravitationSettings& gravitation() const;
+    /// A force written by the user, called at the start of every step (ForceCallback.hpp). Throws
+    /// std::invalid_argument for an empty callback.
+    ForceCallbackId addForceCallback(ForceCallback callback);
+    /// Throws std::invalid_argument for an unknown id.
+    void removeForceCallback(ForceCallbackId id);
+    std::size_t forceCallbackCount() const;
+
     // --- joints -------------------------------------------------------------------------------------
     /// A rigid rod between two anchors. Throws std::invalid_argument for an unknown or repeated body, two
     /// immovable bodies, non-finite anchors or length, or a zero length. Destroying either body removes it.
@@ -131,15 +161,31 @@ public:
     /// A soft spring pulling an anchor of a dynamic body towards a target point, its force capped at maxForce
     /// (dragging with the mouse). Throws std::invalid_argument naming a bad value.
     JointId createMouseJoint(const MouseJointDef& def);
+    /// A Hooke spring with damping (SpringJointDef), a force. Throws std::invalid_argument naming a bad value
+    /// (unknown or repeated body, no dynamic body, stiffness <= 0, negative damping, non-finite anchors).
+    JointId createSpringJoint(const SpringJointDef& def);
+    /// A pin (RevoluteJointDef). Throws std::invalid_argument naming a bad value (unknown or repeated body, two
+    /// immovable bodies, non-finite anchor, lowerAngle > upperAngle, negative maxMotorTorque).
+    JointId createRevoluteJoint(const RevoluteJointDef& def);
+    /// A weld (WeldJointDef). Throws std::invalid_argument as createRevoluteJoint.
+    JointId createWeldJoint(const WeldJointDef& def);
+    /// Revolute and weld joints: angle(B) - angle(A) minus its value at creation, rad.
+    double jointAngle(JointId id) const;
+    /// Revolute joints: the motor (rad/s of B relative to A, N m >= 0). Wakes the bodies.
+    void setJointMotor(JointId id, bool enable, double speed, double maxTorque);
+    /// Revolute joints: the limits, rad, lower <= upper. Wakes the bodies.
+    void setJointLimits(JointId id, bool enable, double lower, double upper);
     /// Moves a mouse joint's target (m); wakes its body.
     void setMouseJointTarget(JointId id, const Vec2& target);
     void destroyJoint(JointId id);
     bool contains(JointId id) const;
     std::size_t jointCount() const;
     JointType jointType(JointId id) const;
-    /// The joint's rod length, m (distance joints; others are refused with std::invalid_argument).
+    /// The joint's rod length (distance joints) or rest length (springs), m; other joints are refused with
+    /// std::invalid_argument.
     double jointLength(JointId id) const;
-    /// The joint's anchors in world coordinates, m (a mouse joint's first anchor is its target).
+    /// The joint's anchors in world coordinates, m (a mouse joint's, or a spring to a point's, first anchor is
+    /// its target).
     std::pair<Vec2, Vec2> jointAnchors(JointId id) const;
     /// The joints in creation-slot order (for drawing and inspection).
     std::vector<JointId> joints() const;

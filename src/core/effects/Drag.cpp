@@ -1,0 +1,88 @@
+#include "Drag.hpp"
+
+#include "../WorldImpl.hpp"
+
+#include "physim/core/Validate.hpp"
+
+#include <cmath>
+
+namespace physim {
+namespace {
+
+constexpr std::size_t kGrain = 256;
+
+// Mean width of a convex shape over all directions: perimeter / pi (Cauchy's formula), m.
+double meanWidth(const Geometry& g) {
+    if (const auto* c = std::get_if<Circle>(&g)) return 2.0 * c->radius;
+    const Polygon& p = std::get<Polygon>(g);
+    double perimeter = 0.0;
+    for (int i = 0; i < p.count; ++i) perimeter += (p.vertices[(i + 1) % p.count] - p.vertices[i]).norm();
+    return perimeter / M_PI;
+}
+
+}  // namespace
+
+void validate(const DragDef& d) {
+    requireNonNegative("drag linear coefficient", d.linear);
+    requireNonNegative("drag coefficient", d.dragCoefficient);
+    requireNonNegative("drag fluid density", d.fluidDensity);
+    requireNonNegative("drag width", d.width);
+    requireNonNegative("drag angular coefficient", d.angular);
+}
+
+void DragEffect::set(std::uint32_t slot, const DragDef& def, const Geometry& shape) {
+    if (isNone(def)) {
+        remove(slot);
+        return;
+    }
+    const double width = def.width > 0.0 ? def.width : meanWidth(shape);
+    const Coefficients c{def.linear, 0.5 * def.fluidDensity * def.dragCoefficient * width, def.angular};
+    const std::size_t at = members_.add(slot);
+    if (at == defs_.size()) {
+        defs_.push_back(def);
+        coefficients_.push_back(c);
+    } else {
+        defs_[at] = def;
+        coefficients_[at] = c;
+    }
+}
+
+DragDef DragEffect::get(std::uint32_t slot) const {
+    const std::int32_t at = members_.positionOf(slot);
+    return at == Members::kAbsent ? DragDef{} : defs_[static_cast<std::size_t>(at)];
+}
+
+void DragEffect::remove(std::uint32_t slot) {
+    const std::int32_t at = members_.remove(slot);
+    if (at == Members::kAbsent) return;
+    defs_[static_cast<std::size_t>(at)] = defs_.back();
+    coefficients_[static_cast<std::size_t>(at)] = coefficients_.back();
+    defs_.pop_back();
+    coefficients_.pop_back();
+}
+
+void DragEffect::apply(WorldImpl& w, double h) const {
+    const std::vector<std::uint32_t>& slots = members_.items();
+    w.executor.parallelFor(slots.size(), kGrain, [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t k = begin; k < end; ++k) {
+            const BodyData& b = w.bodies[slots[k]];
+            if (!b.awake() || b.type != BodyType::Dynamic) continue;
+            const std::size_t i = static_cast<std::size_t>(b.awakeIndex);
+            SolverBody& s = w.states[i];
+            const SolverBodySim& sim = w.sims[i];
+            const Coefficients& c = coefficients_[k];
+            // The velocity the substep's kick is about to give (the other effects' kicks are in s.v already).
+            const Vec2 v = s.v + h * sim.acceleration;
+            const double speed = v.norm();
+            if (speed > 0.0) {
+                // Backward Euler: the new speed u solves u (1 + h (linear + quadratic u) / m) = |v|.
+                const double lin = 1.0 + h * b.invMass * c.linear, quad = h * b.invMass * c.quadratic;
+                s.v += (2.0 / (lin + std::sqrt(lin * lin + 4.0 * quad * speed)) - 1.0) * v;
+            }
+            const double w0 = s.w + h * sim.angularAcceleration;
+            s.w += (1.0 / (1.0 + h * b.invInertia * c.angular) - 1.0) * w0;
+        }
+    });
+}
+
+}  // namespace physim
