@@ -249,6 +249,13 @@ PHYSIM_HOST_DEVICE inline double gapAdvance(double e, double b, double c, double
     return maxOf(safe, minOf(reach, firstRoot(e, b, j * reach - c)));
 }
 
+/// min(current, gapAdvance(...)), without its square roots when the bound of the second derivative alone already
+/// keeps the gap above target until `current`.
+PHYSIM_HOST_DEVICE inline double shorterAdvance(double current, double e, double b, double c, double k, double j) {
+    if (current < INFINITY && e + (b - 0.5 * k * current) * current >= 0.0) return current;
+    return minOf(current, gapAdvance(e, b, c, k, j));
+}
+
 /// A body over the interval: its pose at the current time and its constant rates (per unit t).
 struct Moving {
     Xf xf;
@@ -259,33 +266,35 @@ struct Moving {
 };
 
 /// How long (in t) the shapes certainly stay more than `target` apart, given that at the current time they are
-/// d.distance > target apart along the closest-point normal n. Every bound follows a separating line carried along
-/// with the motion: the gap across such a line never exceeds the distance, so while it stays above target nothing
-/// touches. The gap is a minimum over the shapes' bounding points of smooth functions of time, each advanced by
-/// gapAdvance; the line is placed three ways, each safe, and the largest advance is taken:
-///   - turning with a (a's extent along it fixed; best for a face of a against b),
-///   - turning with b (the same, roles swapped),
-///   - fixed in the world (every pair of points; best for corners passing each other),
-/// and the classic first-order bound, best for long advances: no point closes the gap along n faster than
-/// (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t.
+/// d.distance > target apart along the closest-point normal n; any advance of at least `remaining` (the rest of
+/// the motion) is as good as another. Every bound follows a separating line carried along with the motion: the gap
+/// across such a line never exceeds the distance, so while it stays above target nothing touches.
+///   - First order (classic conservative advancement; best for long advances): the line fixed in the world, where
+///     no point closes the gap faster than (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t.
+///   - Second order, when something turns: the line turning with a (a's extent along it then fixed; best for a
+///     face of a against b), and turning with b. The gap is then a minimum over the other shape's bounding points
+///     of smooth functions of time, each advanced by gapAdvance.
 /// Derivative bounds (w: turn per unit t, V = motion_b - motion_a, D = c_b - c_a between the origins, whose length
 /// is largest at an end of the interval as they move on lines, r: a point's offset from its origin). Seen from a,
 /// a point of b is at Rot(-w_a t) D(t) + Rot((w_b - w_a) t) r (up to constant rotations), so
 ///   g'' = n . (-w_a^2 D - 2 w_a perp(V) - (w_b - w_a)^2 r),   |g''| <= 2 |w_a| |V| + w_a^2 |D| + (w_b - w_a)^2 |r|,
-///   |g'''| <= |w_a|^3 |D| + 3 w_a^2 |V| + |w_b - w_a|^3 |r|;
-/// in the world a point turning about its moving origin has g'' = -w^2 n . r, |g''| <= w^2 |r|, |g'''| <= |w|^3 |r|.
+///   |g'''| <= |w_a|^3 |D| + 3 w_a^2 |V| + |w_b - w_a|^3 |r|.
 PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Motion& ma, const Moving& va, const Shape& b,
-                                             const Motion& mb, const Moving& vb, const Distance& d, double target) {
+                                             const Motion& mb, const Moving& vb, const Distance& d, double target,
+                                             double remaining) {
     const Vec n = d.normal;
     const Vec v = vb.velocity - va.velocity;
-    const double speed = ::sqrt(lengthSquared(v));
-    const double apart = maxOf(::sqrt(lengthSquared(vb.xf.p - va.xf.p)), ::sqrt(lengthSquared(mb.p1 - ma.p1)));
     const double reachA = turningReach(a), reachB = turningReach(b);
-    const double wa = va.spin, wb = vb.spin, dw = wb - wa;
-    const double wa2 = wa * wa, wb2 = wb * wb, dw2 = dw * dw;
+    const double wa = va.spin, wb = vb.spin;
 
     const double closing = -dot(v, n) + ::fabs(wa) * reachA + ::fabs(wb) * reachB;
     double best = closing > 0.0 ? (d.distance - target) / closing : INFINITY;
+    // Without turning, both second-order bounds are this one.
+    if (best >= remaining || (wa == 0.0 && wb == 0.0)) return best;
+
+    const double speed = ::sqrt(lengthSquared(v));
+    const double apart = maxOf(::sqrt(lengthSquared(vb.xf.p - va.xf.p)), ::sqrt(lengthSquared(mb.p1 - ma.p1)));
+    const double dw = wb - wa, wa2 = wa * wa, wb2 = wb * wb, dw2 = dw * dw;
 
     // Turning with a: each bounding point of b against a's extent along n (measured from a's origin).
     double extentA = -INFINITY;
@@ -299,40 +308,25 @@ PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Motion& ma, c
         const Vec q = vb.xf.apply(b.vertices[j]);
         const double e = dot(n, q - va.xf.p) - b.radius - extentA - target;
         const double c = cA - dw2 * dot(n, q - vb.xf.p);
-        frame = minOf(frame, gapAdvance(e, dot(n, vb.at(q) - va.at(q)), c, kA, jA));
+        frame = shorterAdvance(frame, e, dot(n, vb.at(q) - va.at(q)), c, kA, jA);
     }
     best = maxOf(best, frame);
+    if (best >= remaining) return best;
 
-    // Turning with b: each bounding point of a against b's extent along n.
+    // Turning with b: each bounding point of a against b's extent along n; the gap is that extent minus the
+    // point's height, so the roles swap and the signs of its derivatives flip.
     double extentB = INFINITY;
     for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, vb.xf.q.apply(b.vertices[j])));
     extentB -= b.radius;
     const double kB = 2.0 * ::fabs(wb) * speed + wb2 * apart + dw2 * reachA;
     const double jB = ::fabs(wb) * wb2 * apart + 3.0 * wb2 * speed + ::fabs(dw) * dw2 * reachA;
-    const double cB = dot(n, -wb2 * (vb.xf.p - va.xf.p) - (2.0 * wb) * perp(v));  // a's points seen from b, negated
+    const double cB = dot(n, -wb2 * (vb.xf.p - va.xf.p) - (2.0 * wb) * perp(v));
     frame = INFINITY;
     for (int i = 0; i < a.count && frame > best; ++i) {
         const Vec p = va.xf.apply(a.vertices[i]);
         const double e = extentB - dot(n, p - vb.xf.p) - a.radius - target;
         const double c = cB + dw2 * dot(n, p - va.xf.p);
-        frame = minOf(frame, gapAdvance(e, dot(n, vb.at(p) - va.at(p)), c, kB, jB));
-    }
-    best = maxOf(best, frame);
-
-    // Fixed in the world: every pair of bounding points.
-    const double kWorld = wa2 * reachA + wb2 * reachB;
-    const double jWorld = ::fabs(wa) * wa2 * reachA + ::fabs(wb) * wb2 * reachB;
-    frame = INFINITY;
-    for (int i = 0; i < a.count && frame > best; ++i) {
-        const Vec p = va.xf.apply(a.vertices[i]);
-        const Vec velocityP = va.at(p);
-        const double curvatureP = wa2 * dot(n, p - va.xf.p);
-        for (int j = 0; j < b.count && frame > best; ++j) {
-            const Vec q = vb.xf.apply(b.vertices[j]);
-            const double e = dot(n, q - p) - a.radius - b.radius - target;
-            const double c = curvatureP - wb2 * dot(n, q - vb.xf.p);
-            frame = minOf(frame, gapAdvance(e, dot(n, vb.at(q) - velocityP), c, kWorld, jWorld));
-        }
+        frame = shorterAdvance(frame, e, dot(n, vb.at(p) - va.at(p)), c, kB, jB);
     }
     return maxOf(best, frame);
 }
@@ -360,11 +354,12 @@ PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, con
             r.point = 0.5 * (d.pointA + d.pointB);
             return r;
         }
-        const double step = safeAdvance(a, ma, va, b, mb, vb, d, target);
-        if (!(step < 1.0 - t)) return r;  // no contact before t = 1 (NaN, impossible for valid input, lands here too)
+        const double step = safeAdvance(a, ma, va, b, mb, vb, d, target, 1.0 - t);
+        if (step >= 1.0 - t) return r;  // apart until the end
+        if (!(step >= 0.0)) break;      // NaN: only from input so large that the bounds overflow; nothing proven
         t += step;
     }
-    r.iterations = maxIterations;
+    if (r.iterations > maxIterations) r.iterations = maxIterations;
     r.state = kFailed;
     r.t = t;
     return r;

@@ -77,7 +77,7 @@ struct ToiResult {
 /// tolerance (m, > 0: Hit at that t, or Touching at t = 0) or t reaches 1 (Separated). The advance takes the best of
 /// several bounds: the classic one (no point closes the gap along the closest-point normal faster than
 /// (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b), and second-order ones that follow separating lines
-/// turning with a, with b or fixed in the world, which converge on grazing, fast-spinning pairs. Never reports a
+/// turning with a and with b, which converge on grazing, fast-spinning pairs. Never reports a
 /// time past the first contact (up to rounding), and never Separated for shapes that come closer than
 /// tolerance / 2. Failed when maxIterations distance evaluations settle neither: callers treat it as no impact
 /// found (the World's discrete contacts then see the pair).
