@@ -256,14 +256,31 @@ PHYSIM_HOST_DEVICE inline double shorterAdvance(double current, double e, double
     return minOf(current, gapAdvance(e, b, c, k, j));
 }
 
-/// A body over the interval: its pose at the current time and its constant rates (per unit t).
-struct Moving {
-    Xf xf;
-    Vec velocity;  ///< m per unit t
-    double spin;   ///< rad per unit t
-    /// Velocity of the body's material point at world point p.
-    PHYSIM_HOST_DEVICE Vec at(Vec p) const { return velocity + spin * perp(p - xf.p); }
+/// What the advancement's bounds need of a pair's motion; the same at every step.
+struct PairRates {
+    Vec velocityA, velocityB;  ///< m per unit t
+    double spinA, spinB;       ///< rad per unit t
+    double reachA, reachB;     ///< m, turningReach
+    double speed;              ///< m per unit t, |velocityB - velocityA|
+    double apart;              ///< m, the origins' largest distance over the motion (at t = 0 or 1: they move on lines)
 };
+
+PHYSIM_HOST_DEVICE inline PairRates pairRates(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb) {
+    const Vec va = ma.p1 - ma.p0, vb = mb.p1 - mb.p0;
+    return {va,
+            vb,
+            ma.a1 - ma.a0,
+            mb.a1 - mb.a0,
+            turningReach(a),
+            turningReach(b),
+            ::sqrt(lengthSquared(vb - va)),
+            maxOf(::sqrt(lengthSquared(mb.p0 - ma.p0)), ::sqrt(lengthSquared(mb.p1 - ma.p1)))};
+}
+
+/// Velocity (m per unit t) of the material point at world point p of a body whose origin is at `origin`.
+PHYSIM_HOST_DEVICE inline Vec pointVelocity(Vec velocity, double spin, Vec origin, Vec p) {
+    return velocity + spin * perp(p - origin);
+}
 
 /// How long (in t) the shapes certainly stay more than `target` apart, given that at the current time they are
 /// d.distance > target apart along the closest-point normal n; any advance of at least `remaining` (the rest of
@@ -279,36 +296,32 @@ struct Moving {
 /// a point of b is at Rot(-w_a t) D(t) + Rot((w_b - w_a) t) r (up to constant rotations), so
 ///   g'' = n . (-w_a^2 D - 2 w_a perp(V) - (w_b - w_a)^2 r),   |g''| <= 2 |w_a| |V| + w_a^2 |D| + (w_b - w_a)^2 |r|,
 ///   |g'''| <= |w_a|^3 |D| + 3 w_a^2 |V| + |w_b - w_a|^3 |r|.
-PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Motion& ma, const Moving& va, const Shape& b,
-                                             const Motion& mb, const Moving& vb, const Distance& d, double target,
-                                             double remaining) {
+PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb,
+                                             const PairRates& m, const Distance& d, double target, double remaining) {
     const Vec n = d.normal;
-    const Vec v = vb.velocity - va.velocity;
-    const double reachA = turningReach(a), reachB = turningReach(b);
-    const double wa = va.spin, wb = vb.spin;
+    const Vec v = m.velocityB - m.velocityA;
+    const double wa = m.spinA, wb = m.spinB;
 
-    const double closing = -dot(v, n) + ::fabs(wa) * reachA + ::fabs(wb) * reachB;
+    const double closing = -dot(v, n) + ::fabs(wa) * m.reachA + ::fabs(wb) * m.reachB;
     double best = closing > 0.0 ? (d.distance - target) / closing : INFINITY;
     // Without turning, both second-order bounds are this one.
     if (best >= remaining || (wa == 0.0 && wb == 0.0)) return best;
-
-    const double speed = ::sqrt(lengthSquared(v));
-    const double apart = maxOf(::sqrt(lengthSquared(vb.xf.p - va.xf.p)), ::sqrt(lengthSquared(mb.p1 - ma.p1)));
     const double dw = wb - wa, wa2 = wa * wa, wb2 = wb * wb, dw2 = dw * dw;
 
     // Turning with a: each bounding point of b against a's extent along n (measured from a's origin).
     double extentA = -INFINITY;
-    for (int i = 0; i < a.count; ++i) extentA = maxOf(extentA, dot(n, va.xf.q.apply(a.vertices[i])));
+    for (int i = 0; i < a.count; ++i) extentA = maxOf(extentA, dot(n, xa.q.apply(a.vertices[i])));
     extentA += a.radius;
-    const double kA = 2.0 * ::fabs(wa) * speed + wa2 * apart + dw2 * reachB;
-    const double jA = ::fabs(wa) * wa2 * apart + 3.0 * wa2 * speed + ::fabs(dw) * dw2 * reachB;
-    const double cA = dot(n, -wa2 * (vb.xf.p - va.xf.p) - (2.0 * wa) * perp(v));
+    const double kA = 2.0 * ::fabs(wa) * m.speed + wa2 * m.apart + dw2 * m.reachB;
+    const double jA = ::fabs(wa) * wa2 * m.apart + 3.0 * wa2 * m.speed + ::fabs(dw) * dw2 * m.reachB;
+    const double cA = dot(n, -wa2 * (xb.p - xa.p) - (2.0 * wa) * perp(v));
     double frame = INFINITY;
     for (int j = 0; j < b.count && frame > best; ++j) {
-        const Vec q = vb.xf.apply(b.vertices[j]);
-        const double e = dot(n, q - va.xf.p) - b.radius - extentA - target;
-        const double c = cA - dw2 * dot(n, q - vb.xf.p);
-        frame = shorterAdvance(frame, e, dot(n, vb.at(q) - va.at(q)), c, kA, jA);
+        const Vec q = xb.apply(b.vertices[j]);
+        const double e = dot(n, q - xa.p) - b.radius - extentA - target;
+        const double c = cA - dw2 * dot(n, q - xb.p);
+        const Vec relative = pointVelocity(m.velocityB, wb, xb.p, q) - pointVelocity(m.velocityA, wa, xa.p, q);
+        frame = shorterAdvance(frame, e, dot(n, relative), c, kA, jA);
     }
     best = maxOf(best, frame);
     if (best >= remaining) return best;
@@ -316,17 +329,18 @@ PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Motion& ma, c
     // Turning with b: each bounding point of a against b's extent along n; the gap is that extent minus the
     // point's height, so the roles swap and the signs of its derivatives flip.
     double extentB = INFINITY;
-    for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, vb.xf.q.apply(b.vertices[j])));
+    for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, xb.q.apply(b.vertices[j])));
     extentB -= b.radius;
-    const double kB = 2.0 * ::fabs(wb) * speed + wb2 * apart + dw2 * reachA;
-    const double jB = ::fabs(wb) * wb2 * apart + 3.0 * wb2 * speed + ::fabs(dw) * dw2 * reachA;
-    const double cB = dot(n, -wb2 * (vb.xf.p - va.xf.p) - (2.0 * wb) * perp(v));
+    const double kB = 2.0 * ::fabs(wb) * m.speed + wb2 * m.apart + dw2 * m.reachA;
+    const double jB = ::fabs(wb) * wb2 * m.apart + 3.0 * wb2 * m.speed + ::fabs(dw) * dw2 * m.reachA;
+    const double cB = dot(n, -wb2 * (xb.p - xa.p) - (2.0 * wb) * perp(v));
     frame = INFINITY;
     for (int i = 0; i < a.count && frame > best; ++i) {
-        const Vec p = va.xf.apply(a.vertices[i]);
-        const double e = extentB - dot(n, p - vb.xf.p) - a.radius - target;
-        const double c = cB + dw2 * dot(n, p - va.xf.p);
-        frame = shorterAdvance(frame, e, dot(n, vb.at(p) - va.at(p)), c, kB, jB);
+        const Vec p = xa.apply(a.vertices[i]);
+        const double e = extentB - dot(n, p - xb.p) - a.radius - target;
+        const double c = cB + dw2 * dot(n, p - xa.p);
+        const Vec relative = pointVelocity(m.velocityB, wb, xb.p, p) - pointVelocity(m.velocityA, wa, xa.p, p);
+        frame = shorterAdvance(frame, e, dot(n, relative), c, kB, jB);
     }
     return maxOf(best, frame);
 }
@@ -341,11 +355,11 @@ PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, con
                                            double tolerance, int maxIterations) {
     Toi r{kSeparated, 0, 1.0, 0.0, {0.0, 0.0}, {0.0, 0.0}};
     const double target = 0.5 * tolerance;
+    const PairRates rates = pairRates(a, ma, b, mb);
     double t = 0.0;
     for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
-        const Moving va{ma.at(t), ma.p1 - ma.p0, ma.a1 - ma.a0};
-        const Moving vb{mb.at(t), mb.p1 - mb.p0, mb.a1 - mb.a0};
-        const Distance d = shapeDistance(a, va.xf, b, vb.xf);
+        const Xf xa = ma.at(t), xb = mb.at(t);
+        const Distance d = shapeDistance(a, xa, b, xb);
         if (d.distance < tolerance) {
             r.state = t == 0.0 ? kTouching : kHit;
             r.t = t;
@@ -354,7 +368,7 @@ PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, con
             r.point = 0.5 * (d.pointA + d.pointB);
             return r;
         }
-        const double step = safeAdvance(a, ma, va, b, mb, vb, d, target, 1.0 - t);
+        const double step = safeAdvance(a, xa, b, xb, rates, d, target, 1.0 - t);
         if (step >= 1.0 - t) return r;  // apart until the end
         if (!(step >= 0.0)) break;      // NaN: only from input so large that the bounds overflow; nothing proven
         t += step;
