@@ -1,28 +1,27 @@
-// The dynamic AABB tree as a broad phase for scenes where few bodies move, against the sort-and-sweep broad
-// phase (findCandidatePairs) and brute force on the same boxes.
+// The dynamic AABB tree as a broad phase for scenes where few bodies move, and the World's BroadPhase built on
+// it, against brute force and Box2D 2.4.1's tree on the same boxes.
 //
 // Scene: n unrotated boxes 0.2 to 0.8 m a side at about one per 2 m^2 (each overlaps a few others whatever n),
 // 1 in 10 static. Each step 10% of the boxes move, each by 0.2 to 0.5 m per axis (back and forth, so the density
 // stays), far enough to leave an enlarged box of margin 0.1 m. Timed per step:
-//   tree_moved: for each moved box, moveProxy with its box enlarged by the margin, then a query of that box in
+//   tree: for each moved box, moveProxy with its box enlarged by the margin, then a query of that box in
 //     the dynamic tree and the static tree; the pairs found (those of moved boxes: the new candidates) sorted
 //     and deduplicated. This is what a broad phase that tracks only what moves does.
-//   tree_all: the same updates, then every dynamic box queries both trees with its enlarged box and keeps the
-//     pairs whose own boxes overlap, each once, sorted: exactly the sweep's output (checked after the run), for a
-//     like-for-like comparison.
-//   sweep: the same moves, then findCandidatePairs over all bodies (it refreshes every box and sorts; its
-//     scratch kept between steps as in the World).
+//   broadphase: the same moves given to BroadPhase::moveProxy (static boxes in its static tree), then
+//     findNewPairs on a 1-thread Executor: the World's broad phase. Before timing, one step's pairs are checked
+//     against brute force over the enlarged boxes (every pair with a moved box).
 //   brute: the same moves, then all n^2/2 pairs of boxes tested.
 // Build: n createProxy calls into an empty tree; rebuild(): the binned top-down rebuild of the same tree.
 // Query: each of the n enlarged boxes queried in the built tree (the cost of a query, from the tree's quality).
 // Patterns: insertion-order cases for the tree's height (a row left to right, a column, a grid in raster order,
 // identical boxes, boxes nested in one another), with the height and area ratio reached.
 // With Box2D 2.4.1 (Debian libbox2d-dev) found at configure time, its b2DynamicTree runs the same build and
-// tree_moved step, for reference (it holds the same enlarged boxes, in float).
+// tree step, for reference (it holds the same enlarged boxes, in float).
 // Run: build/<dir>/bench/broadphase/broadphase_bench (docs/collision.md, "Dynamic tree", has the table).
 
 #include "BroadPhase.hpp"
 #include "DynamicTree.hpp"
+#include "Executor.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -42,31 +41,32 @@ namespace {
 constexpr double kMargin = 0.1;    // m, how much the trees' boxes are enlarged
 constexpr std::size_t kMovedPerStep = 10;  // one box in this many moves each step
 
-bool contains(const Aabb& outer, const Aabb& inner) {
-    return outer.lower.x() <= inner.lower.x() && outer.lower.y() <= inner.lower.y() &&
-           inner.upper.x() <= outer.upper.x() && inner.upper.y() <= outer.upper.y();
-}
+// One box of the scene: where it is and the jump it makes when it moves.
+struct Box {
+    Aabb aabb;            // m, unrotated: the box the trees hold, before enlarging
+    Vec2 jump;            // m, added or subtracted on each move
+    bool movable = true;  // false: static, never moves
+};
 
 struct Scene {
-    std::vector<BodyData> bodies;  // box shapes, unrotated: computeAabb gives the boxes the trees hold
-    std::vector<Vec2> jump;        // each dynamic body's move, m
-    std::vector<std::uint32_t> dynamic;  // indices of the dynamic bodies
+    std::vector<Box> bodies;
+    std::vector<std::uint32_t> dynamic;  // indices of the movable boxes
     std::size_t step = 0;
 
-    explicit Scene(std::size_t n) : bodies(n), jump(n) {
+    explicit Scene(std::size_t n) : bodies(n) {
         std::mt19937_64 rng(5);
         std::uniform_real_distribution<double> u(0.0, 1.0);
         const double side = std::sqrt(2.0 * static_cast<double>(n));
         for (std::uint32_t i = 0; i < n; ++i) {
-            BodyData& b = bodies[i];
-            b.alive = true;
-            b.type = i % 10 == 0 ? BodyType::Static : BodyType::Dynamic;
-            b.shape = makeBox(0.1 + 0.3 * u(rng), 0.1 + 0.3 * u(rng));
-            b.xf = {Vec2(side * u(rng), side * u(rng)), Rotation{}};
-            b.aabb = computeAabb(b.shape, b.xf);
+            Box& b = bodies[i];
+            b.movable = i % 10 != 0;
+            const double hx = 0.1 + 0.3 * u(rng), hy = 0.1 + 0.3 * u(rng);  // half sides
+            const double x = side * u(rng), y = side * u(rng);
+            b.aabb = {Vec2(x - hx, y - hy), Vec2(x + hx, y + hy)};
             const auto component = [&] { return (u(rng) < 0.5 ? -1.0 : 1.0) * (0.2 + 0.3 * u(rng)); };
-            jump[i] = Vec2(component(), component());
-            if (b.movable()) dynamic.push_back(i);
+            const double jx = component(), jy = component();
+            b.jump = Vec2(jx, jy);
+            if (b.movable) dynamic.push_back(i);
         }
     }
 
@@ -78,9 +78,9 @@ struct Scene {
         for (std::size_t j = 0; j < count; ++j) {
             const std::size_t k = step * count + j;
             const std::uint32_t i = dynamic[k % dynamic.size()];
-            BodyData& b = bodies[i];
-            b.xf.p += ((k / dynamic.size()) % 2 ? -1.0 : 1.0) * jump[i];
-            b.aabb = computeAabb(b.shape, b.xf);
+            Aabb& box = bodies[i].aabb;
+            const Vec2 delta = ((k / dynamic.size()) % 2 ? -1.0 : 1.0) * bodies[i].jump;
+            box = {box.lower + delta, box.upper + delta};
             moved(i);
         }
         ++step;
@@ -94,13 +94,13 @@ struct Trees {
 
     explicit Trees(const Scene& s) : proxy(s.bodies.size()) {
         for (std::uint32_t i = 0; i < s.bodies.size(); ++i) {
-            const BodyData& b = s.bodies[i];
-            proxy[i] = (b.movable() ? moving : fixed).createProxy(b.aabb.fattened(kMargin), i);
+            const Box& b = s.bodies[i];
+            proxy[i] = (b.movable ? moving : fixed).createProxy(b.aabb.fattened(kMargin), i);
         }
     }
     // A body's proxy follows only when its box leaves the enlarged one.
-    void update(const BodyData& b, std::uint32_t i) {
-        if (!contains(moving.fatAabb(proxy[i]), b.aabb)) moving.moveProxy(proxy[i], b.aabb.fattened(kMargin));
+    void update(const Box& b, std::uint32_t i) {
+        if (!moving.fatAabb(proxy[i]).contains(b.aabb)) moving.moveProxy(proxy[i], b.aabb.fattened(kMargin));
     }
 };
 
@@ -109,7 +109,7 @@ void finishPairs(std::vector<BodyPair>& pairs) {
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
 
-void BM_TreeStep(benchmark::State& state, bool allPairs) {
+void BM_TreeStep(benchmark::State& state) {
     Scene scene(static_cast<std::size_t>(state.range(0)));
     Trees trees(scene);
     std::vector<BodyPair> pairs;
@@ -119,42 +119,21 @@ void BM_TreeStep(benchmark::State& state, bool allPairs) {
         moved.clear();
         pairs.clear();
         scene.advance([&](std::uint32_t i) {
-            const bool escaped = !contains(trees.moving.fatAabb(trees.proxy[i]), scene.bodies[i].aabb);
+            const bool escaped = !trees.moving.fatAabb(trees.proxy[i]).contains(scene.bodies[i].aabb);
             reinserted += escaped;
             trees.update(scene.bodies[i], i);
             moved.push_back(i);
         });
-        if (allPairs) {
-            const std::vector<BodyData>& bodies = scene.bodies;
-            for (const std::uint32_t i : scene.dynamic) {
-                const Aabb& box = trees.moving.fatAabb(trees.proxy[i]);
-                trees.moving.query(box, [&](std::int32_t, std::uint32_t other) {
-                    if (other > i && bodies[i].aabb.overlaps(bodies[other].aabb)) pairs.emplace_back(i, other);
-                });
-                trees.fixed.query(box, [&](std::int32_t, std::uint32_t other) {
-                    if (bodies[i].aabb.overlaps(bodies[other].aabb))
-                        pairs.emplace_back(std::min(i, other), std::max(i, other));
-                });
-            }
-            std::sort(pairs.begin(), pairs.end());
-        } else {
-            for (const std::uint32_t i : moved) {
-                const Aabb& box = trees.moving.fatAabb(trees.proxy[i]);
-                const auto add = [&](std::int32_t, std::uint32_t other) {
-                    if (other != i) pairs.emplace_back(std::min(i, other), std::max(i, other));
-                };
-                trees.moving.query(box, add);
-                trees.fixed.query(box, add);
-            }
-            finishPairs(pairs);  // two moved boxes find each other twice
+        for (const std::uint32_t i : moved) {
+            const Aabb& box = trees.moving.fatAabb(trees.proxy[i]);
+            const auto add = [&](std::int32_t, std::uint32_t other) {
+                if (other != i) pairs.emplace_back(std::min(i, other), std::max(i, other));
+            };
+            trees.moving.query(box, add);
+            trees.fixed.query(box, add);
         }
+        finishPairs(pairs);  // two moved boxes find each other twice
         benchmark::DoNotOptimize(pairs.data());
-    }
-    if (allPairs) {
-        std::vector<BodyPair> sweep;
-        std::vector<std::uint32_t> scratch;
-        findCandidatePairs(scene.bodies, sweep, scratch);
-        if (sweep != pairs) state.SkipWithError("the tree's pairs differ from the sweep's");
     }
     state.counters["pairs"] = static_cast<double>(pairs.size());
     state.counters["moved"] = static_cast<double>(moved.size());
@@ -164,33 +143,73 @@ void BM_TreeStep(benchmark::State& state, bool allPairs) {
     trees.moving.rebuild();
     state.counters["area_ratio_rebuilt"] = trees.moving.areaRatio();
 }
-BENCHMARK_CAPTURE(BM_TreeStep, moved, false)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_TreeStep, all, true)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_TreeStep)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 
-void BM_SweepStep(benchmark::State& state) {
-    Scene scene(static_cast<std::size_t>(state.range(0)));
+// The pairs of the boxes in `moved` (each flagged in isMoved) with every other box, from their enlarged boxes by
+// brute force, each once, sorted: what findNewPairs must return. Static boxes never move, so no pair is static.
+std::vector<BodyPair> bruteNewPairs(const std::vector<Aabb>& fat, const std::vector<std::uint32_t>& moved,
+                                    const std::vector<std::uint8_t>& isMoved) {
     std::vector<BodyPair> pairs;
-    std::vector<std::uint32_t> scratch;
-    findCandidatePairs(scene.bodies, pairs, scratch);  // the World's first step: a full sort
+    for (const std::uint32_t i : moved)
+        for (std::uint32_t j = 0; j < fat.size(); ++j)
+            if (j != i && !(isMoved[j] && j < i) && fat[i].overlaps(fat[j]))
+                pairs.emplace_back(std::min(i, j), std::max(i, j));
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+}
+
+void BM_BroadPhaseStep(benchmark::State& state) {
+    Scene scene(static_cast<std::size_t>(state.range(0)));
+    BroadPhase broadPhase;
+    Executor executor(1);
+    std::vector<std::int32_t> proxy(scene.bodies.size());
+    std::vector<Aabb> fat(scene.bodies.size());  // the enlarged boxes, kept apart for the check
+    for (std::uint32_t i = 0; i < scene.bodies.size(); ++i) {
+        fat[i] = scene.bodies[i].aabb.fattened(kMargin);
+        proxy[i] = broadPhase.createProxy(fat[i], i, !scene.bodies[i].movable);
+    }
+    std::vector<BodyPair> pairs;
+    broadPhase.findNewPairs(pairs, executor);  // the first step: every proxy is new
+    std::vector<std::uint32_t> moved;
+    std::size_t reinserted = 0;
+    const auto step = [&] {
+        moved.clear();
+        scene.advance([&](std::uint32_t i) {
+            if (broadPhase.fatBox(proxy[i]).contains(scene.bodies[i].aabb)) return;
+            fat[i] = scene.bodies[i].aabb.fattened(kMargin);
+            broadPhase.moveProxy(proxy[i], fat[i]);
+            moved.push_back(i);
+        });
+        broadPhase.findNewPairs(pairs, executor);
+    };
+
+    step();  // untimed, checked
+    std::vector<std::uint8_t> isMoved(scene.bodies.size(), 0);
+    for (const std::uint32_t i : moved) isMoved[i] = 1;
+    if (pairs != bruteNewPairs(fat, moved, isMoved)) {
+        state.SkipWithError("findNewPairs differs from brute force over the enlarged boxes");
+        return;
+    }
     for (auto _ : state) {
-        scene.advance([](std::uint32_t) {});
-        findCandidatePairs(scene.bodies, pairs, scratch);
+        step();
+        reinserted += moved.size();
         benchmark::DoNotOptimize(pairs.data());
     }
     state.counters["pairs"] = static_cast<double>(pairs.size());
+    state.counters["reinserted"] = static_cast<double>(reinserted) / static_cast<double>(state.iterations());
 }
-BENCHMARK(BM_SweepStep)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_BroadPhaseStep)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 
 void BM_BruteStep(benchmark::State& state) {
     Scene scene(static_cast<std::size_t>(state.range(0)));
     std::vector<BodyPair> pairs;
-    const std::vector<BodyData>& bodies = scene.bodies;
+    const std::vector<Box>& bodies = scene.bodies;
     for (auto _ : state) {
         pairs.clear();
         scene.advance([](std::uint32_t) {});
         for (std::uint32_t i = 0; i < bodies.size(); ++i)
             for (std::uint32_t j = i + 1; j < bodies.size(); ++j)
-                if ((bodies[i].movable() || bodies[j].movable()) && bodies[i].aabb.overlaps(bodies[j].aabb))
+                if ((bodies[i].movable || bodies[j].movable) && bodies[i].aabb.overlaps(bodies[j].aabb))
                     pairs.emplace_back(i, j);
         benchmark::DoNotOptimize(pairs.data());
     }
@@ -218,7 +237,7 @@ void BM_TreeQuery(benchmark::State& state) {
     for (std::uint32_t i = 0; i < scene.bodies.size(); ++i) tree.createProxy(scene.bodies[i].aabb.fattened(kMargin), i);
     std::size_t hits = 0;
     for (auto _ : state) {
-        for (const BodyData& b : scene.bodies) tree.query(b.aabb.fattened(kMargin), [&](std::int32_t, std::uint32_t) { ++hits; });
+        for (const Box& b : scene.bodies) tree.query(b.aabb.fattened(kMargin), [&](std::int32_t, std::uint32_t) { ++hits; });
         benchmark::DoNotOptimize(hits);
     }
     state.counters["hits_per_query"] = static_cast<double>(hits) / static_cast<double>(state.iterations() * scene.bodies.size());
@@ -296,7 +315,7 @@ struct Box2DTrees {
     explicit Box2DTrees(const Scene& s) : proxy(s.bodies.size()) {
         for (std::uint32_t i = 0; i < s.bodies.size(); ++i) {
             void* data = reinterpret_cast<void*>(static_cast<std::uintptr_t>(i));
-            proxy[i] = (s.bodies[i].movable() ? moving : fixed).CreateProxy(toBox2D(s.bodies[i].aabb), data);
+            proxy[i] = (s.bodies[i].movable ? moving : fixed).CreateProxy(toBox2D(s.bodies[i].aabb), data);
         }
     }
 };
@@ -365,7 +384,7 @@ void BM_Box2DQuery(benchmark::State& state) {
         tree.CreateProxy(toBox2D(scene.bodies[i].aabb), reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)));
     Box2DCount count;
     for (auto _ : state) {
-        for (const BodyData& b : scene.bodies) tree.Query(&count, toBox2D(b.aabb.fattened(kMargin)));
+        for (const Box& b : scene.bodies) tree.Query(&count, toBox2D(b.aabb.fattened(kMargin)));
         benchmark::DoNotOptimize(count.hits);
     }
     state.counters["hits_per_query"] = static_cast<double>(count.hits) / static_cast<double>(state.iterations() * scene.bodies.size());

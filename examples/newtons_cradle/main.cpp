@@ -44,9 +44,10 @@ public:
         strike();
         view.center = {1.5, 0.0};
         view.pixelsPerMetre = 70.0;
-        velocity_[0] = graphsManager.addGraph("Ball velocities;time (s);v_x (m/s)");
-        for (int i = 1; i < kBalls; ++i)
-            velocity_[i] = graphsManager.addSeries(velocity_[0], "ball " + std::to_string(i + 1));
+        velocity_[0] = graphsManager.addGraph("Ball velocities;time (s);v_x (m/s)", "ball 1");
+        for (int i = 1; i < kBalls; ++i)  // simulated too: markers, as ball 1's
+            velocity_[i] = graphsManager.addSeries(velocity_[0], "ball " + std::to_string(i + 1), {},
+                                                   physim::GraphMode::DEFAULT);
         kinetic_ = graphsManager.addGraph("Kinetic energy;time (s);K (J)");
         kineticTheory_ = graphsManager.addSeries(kinetic_, "m v0^2 / 2");
         graphsManager.build();

@@ -49,11 +49,10 @@ public:
         view.center = {0.0, -0.6};
         view.pixelsPerMetre = 90.0;
 
-        // The exact curve first, so the measured points are drawn over it.
-        exact_ = graphsManager.addGraph("Period against amplitude;amplitude (degrees);period (s)", {},
-                                        physim::GraphMode::WITH_LINES);
-        measured_ = graphsManager.addSeries(exact_, "measured", {}, physim::GraphMode::DEFAULT);
-        smallAngle_ = graphsManager.addSeries(exact_, "small angle: 2 pi sqrt(L/g)");
+        // The measured periods as markers over the two formulas' curves.
+        measured_ = graphsManager.addGraph("Period against amplitude;amplitude (degrees);period (s)", "measured");
+        exact_ = graphsManager.addSeries(measured_, "exact: 4 sqrt(L/g) K(sin(#theta_{0}/2))");
+        smallAngle_ = graphsManager.addSeries(measured_, "small angle: 2#pi sqrt(L/g)");
         graphsManager.build();
         const double g = -world().settings().gravity.y();
         for (int deg = 0; deg <= 160; deg += 5) {

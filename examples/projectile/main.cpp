@@ -31,9 +31,9 @@ public:
         view.center = {17.5, 7.0};
         view.pixelsPerMetre = 30.0;
         trajectory_ = graphsManager.addGraph("Trajectory;x (m);y (m)");
-        trajectoryTheory_ = graphsManager.addSeries(trajectory_, "analytic");
+        trajectoryTheory_ = graphsManager.addSeries(trajectory_, "analytic (no air)");
         speed_ = graphsManager.addGraph("Speed;time (s);speed (m/s)");
-        speedTheory_ = graphsManager.addSeries(speed_, "analytic");
+        speedTheory_ = graphsManager.addSeries(speed_, "analytic (no air)");
         graphsManager.build();
     }
 

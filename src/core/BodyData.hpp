@@ -42,6 +42,7 @@ struct BodyData {
     double dynamicFriction = 0.0;
     Geometry shape;
     double extent = 0.0;            // largest distance from the centre of mass to the shape, m
+    double coreRadius = 0.0;        // radius of the largest circle about the centroid inside the shape, m
     CollisionDetection detection = CollisionDetection::Discrete;
     double precision = kDefaultPrecision;
 

@@ -23,6 +23,7 @@ struct ContactData {
     std::uint32_t generation = 0;
     bool alive = false;
     bool touching = false;          // a manifold point within the speculative distance (islands, events)
+    bool sliding = false;           // its friction slid at the end of the last step (ContactSolver.hpp)
 };
 
 /// Contact begin / end events of one step, by pair of bodies.

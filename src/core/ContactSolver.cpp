@@ -73,6 +73,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     };
     c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
     c.tangentImpulse = 0.0;
+    c.sliding = contact.sliding;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();
     for (int i = 0; i < m.pointCount; ++i) {
         const ContactPoint& mp = m.points[i];
@@ -142,8 +143,8 @@ namespace {
 // What a point owes when it bounces: the normal speed to reach (m/s) and the gap to open now (m).
 struct Bounce {
     bool active = false;
-    double target = 0.0;
-    double gap = 0.0;
+    double target = 0.0;  // normal speed to leave at, m/s
+    double gap = 0.0;     // separation to open now, m
 };
 
 Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double separation,
@@ -155,7 +156,11 @@ Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, d
     if (!(e > 0.0 && vn < limit)) return {};
     const double speed = -vn - (pass.useBias ? 0.0 : pass.h * c.normalAcceleration);
     const double target = e * speed;
-    return {true, target, pass.useBias ? e * std::max(separation, 0.0) - target * pass.h : 0.0};
+    if (!pass.useBias) return {true, target, 0.0};
+    // Met in the solve pass, a gap s before contact: open the gap now so that after this substep's move
+    // (target h) the separation is e s, the mirror of the approach (an exact retrace for e = 1).
+    const double s = std::max(separation, 0.0);
+    return {true, target, (e - 1.0) * s - target * pass.h};
 }
 
 // Moves the bodies apart along the normal at the point as a position "impulse" q (kg m) would.
@@ -318,11 +323,14 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
         // Friction after the normal rows, so its bound sees this pass's load.
         const double tx = -ny, ty = nx;
         const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
-        double tangent = c->tangentImpulse - c->tangentMass * vt;
-        if (std::abs(tangent) > c->staticFriction * totalNormal) {
-            const double bound = c->dynamicFriction * totalNormal;
-            tangent = std::clamp(tangent, -bound, bound);
-        }
+        // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's
+        // last word, decides which it is for the next substep: sliding when even the bound leaves the faces moving
+        // against each other faster than slipSpeed (a transient of one pass does not break a face loose).
+        const double bound = (c->sliding ? c->dynamicFriction : c->staticFriction) * totalNormal;
+        const double tangent = std::clamp(c->tangentImpulse - c->tangentMass * vt, -bound, bound);
+        if (!pass.useBias)
+            c->sliding = c->tangentMass > 0.0 &&
+                         std::abs(vt + (tangent - c->tangentImpulse) / c->tangentMass) > pass.slipSpeed;
         const double dt = tangent - c->tangentImpulse;
         c->tangentImpulse = tangent;
         vAx -= mA * dt * tx;
@@ -344,6 +352,7 @@ void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody*
 }
 
 void storeImpulses(const ContactConstraint& c, ContactData& contact) {
+    contact.sliding = c.sliding;
     Manifold& m = contact.manifold;
     const double share = c.pointCount > 0 ? c.tangentImpulse / c.pointCount : 0.0;
     for (int i = 0; i < c.pointCount; ++i) {

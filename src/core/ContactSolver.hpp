@@ -9,12 +9,14 @@
 //     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
 //     bodies would close the gap within the substep, and then stop them exactly at contact;
 //   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
-// A point that meets its partner faster than the restitution threshold bounces at once: its normal speed becomes
-// e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
-// Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses:
-// static while the impulse that stops sliding is within mu_s times that sum, else clamped to mu_d times it. In
-// 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row
-// is exact, and the static/dynamic decision sees the whole load, not how it is shared between the points.
+// A point that meets its partner faster than the restitution threshold bounces in that substep: its normal speed
+// becomes e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
+// Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses
+// (in 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row is
+// exact, and the static/dynamic decision sees the whole load, not how it is shared between the points). A face
+// sticks (bound mu_s times the load) until a relax pass leaves it slipping faster than a tenth of the linear slop
+// per step; then it slides (bound mu_d) until a relax pass slows it below that. Deciding on the relax pass, the
+// substep's last word, and on a speed, keeps one pass's transient from breaking a face loose.
 
 #include "SolverData.hpp"
 
@@ -59,6 +61,7 @@ struct ContactConstraint {
     double rtA = 0.0, rtB = 0.0;  // the friction anchors x t
     double tangentMass = 0.0;
     double tangentImpulse = 0.0;
+    bool sliding = false;         // friction bound mu_d (true) or mu_s (false); the relax pass decides
     int pointCount = 0;
     ContactConstraintPoint points[2];
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
@@ -76,6 +79,7 @@ struct ContactPass {
     Softness softness;
     double maxPushVelocity = 0.0;     // m/s
     double restitutionThreshold = 0.0;  // m/s
+    double slipSpeed = 0.0;           // m/s: faces moving against each other faster than this slide
 };
 void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass);
 /// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).

@@ -2,9 +2,23 @@
 
 #include "WorldImpl.hpp"
 
+#include "physim/core/Collide.hpp"
+
 #include <algorithm>
+#include <cmath>
 
 namespace physim {
+namespace {
+
+// Deepest overlap (m, <= 0) of two placed shapes: the least separation of their manifold's points.
+double deepest(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    const Manifold m = collide(a, xa, b, xb);
+    double separation = 0.0;
+    for (int p = 0; p < m.pointCount; ++p) separation = std::min(separation, m.points[p].separation);
+    return separation;
+}
+
+}  // namespace
 
 Sweep ContinuousStage::sweepOf(const WorldImpl& w, std::uint32_t slot) const {
     const BodyData& b = w.bodies[slot];
@@ -15,8 +29,50 @@ Sweep ContinuousStage::sweepOf(const WorldImpl& w, std::uint32_t slot) const {
     return {start, b.xf.p, sim.angle0, b.angle};
 }
 
+double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb,
+                                  double slop) {
+    // Shapes touching at the start can still be carried into each other within the step: by turning (a point at R
+    // from its origin moves R per radian) or by approaching across the line that separates them at the start
+    // (sliding along it cannot make convex shapes overlap). No overlap grows faster than `reach` over the sweep,
+    // so samples half a slop apart in that measure cannot step over an overlap deeper than the slop.
+    const Transform xa = sa.at(0.0), xb = sb.at(0.0);
+    const Vec2 motion = (sa.p1 - sa.p0) - (sb.p1 - sb.p0);
+    Vec2 n = Vec2::Zero();  // from a to b
+    const DistanceOutput gap = shapeDistance(a, xa, b, xb);
+    if (gap.distance > 0.0) {
+        n = gap.normal;
+    } else {
+        const Manifold m = collide(a, xa, b, xb);
+        if (m.pointCount > 0) n = m.normal;
+    }
+    const double approach = n.isZero() ? motion.norm() : std::max(0.0, motion.dot(n));
+    const double reach = approach + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
+                         std::abs(sb.a1 - sb.a0) * boundingRadius(b);
+    if (!(reach > slop)) return 1.0;  // cannot overlap by more than the slop: the contacts' business
+    // Deeper than the slop; or, for a pair that already starts deeper (spawned so, or pressed in: the contacts'
+    // push-out is on it), half a slop deeper than it starts, so its own overlap never counts as an impact.
+    const double start = deepest(a, xa, b, xb);
+    const double limit = start > -slop ? -slop : start - 0.5 * slop;
+    const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
+    for (int s = 1; s <= samples; ++s) {
+        const double u = static_cast<double>(s) / samples;
+        if (deepest(a, sa.at(u), b, sb.at(u)) < limit) return static_cast<double>(s - 1) / samples;
+    }
+    return 1.0;
+}
+
+void ContinuousStage::consider(Candidate& c, const ToiResult& r, const Geometry& mine, const Geometry& theirs,
+                               const Sweep& theirSweep, double slop) {
+    if (r.state == ToiState::Hit) {
+        c.t = std::min(c.t, r.t);
+    } else if (r.state == ToiState::Touching && c.continuous && c.t > 0.0) {
+        c.t = std::min(c.t, deepening(mine, c.sweep, theirs, theirSweep, slop));
+    }
+}
+
 void ContinuousStage::run(WorldImpl& w) {
     impacts_ = 0;
+    const double slop = w.settings.linearSlop;
     candidates_.clear();
     for (std::uint32_t i = 0; i < w.awake.size(); ++i) {
         const BodyData& b = w.bodies[w.awake[i]];
@@ -24,13 +80,35 @@ void ContinuousStage::run(WorldImpl& w) {
         const Sweep s = sweepOf(w, w.awake[i]);
         const bool continuous = b.detection != CollisionDetection::Discrete;
         const double travel = (s.p1 - s.p0).norm() + std::abs(s.a1 - s.a0) * b.extent;
-        if (continuous || travel > 0.5 * coreRadius(b.shape)) candidates_.push_back({i, s, continuous, 1.0});
+        if (continuous || travel > 0.5 * b.coreRadius) candidates_.push_back({i, s, continuous, 1.0});
     }
     if (candidates_.empty()) return;
 
-    // Exact pairs against moving bodies go to the batch; the rest are solved here, one pair at a time.
-    batch_.clear();
+    // Exact pairs go to the batch (the CPU, or the GPU through the CUDA layer); the paper's sampled method is
+    // solved here, one pair at a time.
+    // The batch's shape table is every body slot's shape, rebuilt only when bodies are created or destroyed: a GPU
+    // solver keeps it on the device while shapesRevision stays the same.
+    if (shapeTableRevision_ != w.shapeRevision) {
+        batch_.clear();
+        for (const BodyData& body : w.bodies) batch_.addShape(body.shape);
+        shapeTableRevision_ = w.shapeRevision;
+    } else {
+        batch_.clearBodiesAndPairs();
+    }
+    batch_.shapesRevision = w.shapeRevision;
+    batchBody_.assign(w.bodies.size(), -1);
+    auto inBatch = [&](std::uint32_t slot, const Sweep& sweep) {
+        std::int32_t& index = batchBody_[slot];
+        if (index < 0) index = batch_.addBody(static_cast<std::int32_t>(slot), sweep);
+        return index;
+    };
     pairCandidate_.clear();
+    pairPartner_.clear();
+    pairPartnerCandidate_.clear();
+    candidateOf_.assign(w.bodies.size(), -1);
+    for (std::uint32_t k = 0; k < candidates_.size(); ++k)
+        if (w.bodies[w.awake[candidates_[k].awakeIndex]].detection == CollisionDetection::ContinuousExact)
+            candidateOf_[w.awake[candidates_[k].awakeIndex]] = static_cast<std::int32_t>(k);
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
@@ -40,23 +118,23 @@ void ContinuousStage::run(WorldImpl& w) {
             if (other != slot) found_.push_back(other);
             return true;
         });
-        std::sort(found_.begin(), found_.end());  // tree order depends on history; results must not
-        std::int32_t mine = -1;
+        std::sort(found_.begin(), found_.end());  // the trees' order depends on history; results must not
         for (const std::uint32_t other : found_) {
             const BodyData& o = w.bodies[other];
-            const bool staticLike = !o.awake();
-            if (!c.continuous && !staticLike) continue;
+            const bool still = !o.awake();
+            if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
             const Sweep theirs = sweepOf(w, other);
             if (b.detection == CollisionDetection::ContinuousSampled) {
-                const ToiResult r = sampledTimeOfImpact(b.shape, c.sweep, o.shape, theirs, b.precision);
-                if (r.state == ToiState::Hit) c.t = std::min(c.t, r.t);
-            } else if (staticLike && !c.continuous) {
-                const ToiResult r = timeOfImpact(b.shape, c.sweep, o.shape, theirs);
-                if (r.state == ToiState::Hit) c.t = std::min(c.t, r.t);
+                consider(c, sampledTimeOfImpact(b.shape, c.sweep, o.shape, theirs, b.precision), b.shape, o.shape,
+                         theirs, slop);
             } else {
-                if (mine < 0) mine = batch_.addBody(batch_.addShape(b.shape), c.sweep);
-                batch_.addPair(mine, batch_.addBody(batch_.addShape(o.shape), theirs));
+                // Two exact candidates: one test serves both, asked by the one in the lower slot.
+                const std::int32_t partner = candidateOf_[other];
+                if (partner >= 0 && other < slot) continue;
+                batch_.addPair(inBatch(slot, c.sweep), inBatch(other, theirs));
                 pairCandidate_.push_back(k);
+                pairPartner_.push_back(other);
+                pairPartnerCandidate_.push_back(partner);
             }
         }
     }
@@ -64,21 +142,27 @@ void ContinuousStage::run(WorldImpl& w) {
         if (solver_) solver_->solve(batch_, batchResult_);
         else solveOnCpu(batch_, batchResult_, 1);
         for (std::size_t p = 0; p < pairCandidate_.size(); ++p) {
-            const ToiResult r = batchResult_.toi(p);
             Candidate& c = candidates_[pairCandidate_[p]];
-            if (r.state == ToiState::Hit) c.t = std::min(c.t, r.t);
+            const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
+            const BodyData& o = w.bodies[pairPartner_[p]];
+            const ToiResult r = batchResult_.toi(p);
+            consider(c, r, mine.shape, o.shape, sweepOf(w, pairPartner_[p]), slop);
+            if (pairPartnerCandidate_[p] >= 0) {
+                Candidate& d = candidates_[static_cast<std::size_t>(pairPartnerCandidate_[p])];
+                consider(d, r, o.shape, mine.shape, c.sweep, slop);
+            }
         }
     }
 
+    // Each body that meets something goes back to the pose of its first impact, its velocity kept: the next step's
+    // contact answers the impact with the solver's rules.
     for (const Candidate& c : candidates_) {
         if (!(c.t < 1.0)) continue;
         ++impacts_;
-        const std::uint32_t slot = w.awake[c.awakeIndex];
-        BodyData& b = w.bodies[slot];
-        const Transform at = c.sweep.at(c.t);
-        b.xf = at;
+        BodyData& b = w.bodies[w.awake[c.awakeIndex]];
+        b.xf = c.sweep.at(c.t);
         b.angle = c.sweep.angleAt(c.t);
-        b.center = at.apply(b.localCenter);
+        b.center = b.xf.apply(b.localCenter);
         b.aabb = computeAabb(b.shape, b.xf);
         if (w.proxyOutgrown(b)) w.moveProxy(b);
     }

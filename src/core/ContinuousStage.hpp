@@ -7,6 +7,8 @@
 //   - any other dynamic body that moved more than half its core radius in the step (struck by a bullet, say):
 //     against static bodies only, exactly, so nothing is knocked through a wall.
 // Candidates come from the broad phase's trees (the swept box as the query), never from a loop over all bodies.
+// A pair touching at the start (a resting contact, or one just placed by an impact) is the contacts' business,
+// unless turning or approaching would carry it more than the linear slop into each other within the step.
 // A body that hits something is put back at the pose of its first impact, with its velocity kept: the contact is
 // then in the next step's manifold, and the solver answers it like every contact (restitution, friction, joints
 // all consistent). Exact pairs against moving bodies are solved as one batch by the ContinuousSolver (the CPU,
@@ -40,12 +42,24 @@ private:
         double t = 1.0;           // earliest impact found so far
     };
     Sweep sweepOf(const WorldImpl& w, std::uint32_t slot) const;
+    // Folds one pair's result into the candidate's earliest impact. Touching at the start is the contacts'
+    // business, unless a continuous body's turning or approaching carries the pair more than the slop into each
+    // other (deepening); a fast discrete body only ever stops at a hit.
+    static void consider(Candidate& c, const ToiResult& r, const Geometry& mine, const Geometry& theirs,
+                         const Sweep& theirSweep, double slop);
+    // First sample time (fraction of the sweeps) before the shapes overlap by more than `slop` (m); 1 if never.
+    static double deepening(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb, double slop);
 
     std::vector<Candidate> candidates_;
     std::vector<std::uint32_t> found_;
     ContinuousBatch batch_;
     ContinuousBatchResult batchResult_;
     std::vector<std::uint32_t> pairCandidate_;
+    std::vector<std::uint32_t> pairPartner_;
+    std::vector<std::int32_t> pairPartnerCandidate_;  // per batch pair: the partner's candidate index, or -1
+    std::vector<std::int32_t> candidateOf_;           // per body slot: its exact candidate's index, or -1
+    std::vector<std::int32_t> batchBody_;      // per body slot: its index in the batch this run, or -1
+    std::uint64_t shapeTableRevision_ = 0;     // the World's shapeRevision the batch's shape table was built for
     std::shared_ptr<ContinuousSolver> solver_;
     std::size_t impacts_ = 0;
 };

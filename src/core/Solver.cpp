@@ -151,6 +151,7 @@ void WorldImpl::solve() {
     contactPass.softness = contactSoftness;
     contactPass.maxPushVelocity = settings.contactPushMaxVelocity;
     contactPass.restitutionThreshold = settings.restitutionThreshold;
+    contactPass.slipSpeed = 0.1 * settings.linearSlop / dt;
     auto solvePass = [&](bool useBias) {
         contactPass.useBias = useBias;
         pass([&](ContactConstraint* b, ContactConstraint* e, int) { solveContacts(b, e, st, contactPass); },
@@ -240,11 +241,15 @@ void WorldImpl::solve() {
                 b.sleepTime += dt;
             else
                 b.sleepTime = 0.0;
-            enlarged[i] = proxyOutgrown(b);
+            // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
+            const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
+            enlarged[i] = static_cast<std::uint8_t>((proxyOutgrown(b) ? 1 : 0) |
+                                                    (sim.dynamic && travel > 0.5 * b.coreRadius ? 2 : 0));
         }
     });
+    fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
     for (std::size_t i = 0; i < n; ++i)
-        if (enlarged[i]) moveProxy(bodies[sims[i].body]);
+        if (enlarged[i] & 1) moveProxy(bodies[sims[i].body]);
 }
 
 }  // namespace physim

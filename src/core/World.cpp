@@ -126,12 +126,21 @@ void WorldImpl::wakeOverlapping(const Aabb& box) {
 
 Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
     if (b.type == BodyType::Static) return b.aabb.fattened(margin);
-    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches.
-    const Vec2 travel = b.v * dt;
+    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
+    // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
+    // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
+    // world would pair it with everything on the way.
+    Vec2 travel = b.v * dt;
+    double turn = std::abs(b.w) * dt * b.extent;
+    if (b.detection == CollisionDetection::Discrete) {
+        const double length = travel.norm();
+        if (length > b.extent) travel *= b.extent / length;
+        turn = std::min(turn, b.extent);
+    }
     Aabb box = b.aabb;
     box.lower = box.lower.cwiseMin(b.aabb.lower + travel);
     box.upper = box.upper.cwiseMax(b.aabb.upper + travel);
-    return box.fattened(margin + std::abs(b.w) * dt * b.extent);
+    return box.fattened(margin + turn);
 }
 
 // --- World -------------------------------------------------------------------------------------------
@@ -181,6 +190,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.unitMass = computeMassProperties(def.shape);
     b.localCenter = b.unitMass.centroid;
     b.extent = extentAbout(def.shape, b.localCenter);
+    b.coreRadius = coreRadius(def.shape);
     b.xf = {def.position, Rotation::fromAngle(def.angle)};
     b.angle = def.angle;
     b.center = b.xf.apply(b.localCenter);
@@ -204,6 +214,8 @@ BodyId World::createBody(const BodyDef& def) {
     if (def.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 
+    w.touched.push_back(index);
+    ++w.shapeRevision;
     ++w.liveCount;
     if (b.type == BodyType::Dynamic) ++w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) ++w.continuousCount;
@@ -232,6 +244,7 @@ void World::destroyBody(BodyId id) {
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) --w.continuousCount;
     b.alive = false;
+    ++w.shapeRevision;
     w.freeBodies.push_back(index);
     w.touchingValid = false;
 }
@@ -255,6 +268,7 @@ BodyData& World::mutableBody(BodyId id, const char* call) {
     at(id);
     impl_->requireNotStepping(call);
     impl_->touchingValid = false;
+    impl_->touched.push_back(id.index);
     return impl_->bodies[id.index];
 }
 
@@ -628,13 +642,19 @@ void World::step(double dt) {
     w.events.impacts.clear();
     w.touchingValid = false;
 
+    // Bodies made or changed since the last step got proxies before dt was known: grow them for this step's motion.
+    for (const std::uint32_t slot : w.touched) {
+        const BodyData& b = w.bodies[slot];
+        if (b.alive && b.movable() && w.proxyOutgrown(b)) w.moveProxy(b);
+    }
+    w.touched.clear();
     // Pairs need a moved proxy and an awake body: a static body moved next to sleepers wakes them itself.
     runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2 && !w.awake.empty(),
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
     runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
     if (!w.awake.empty()) w.solve();
-    runStage(w.profile, Stage::Continuous, w.continuousCount > 0 && !w.awake.empty(),
+    runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.constraints.size() : 0;

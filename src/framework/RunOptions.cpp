@@ -39,6 +39,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             o.help = true;
         } else if (a == "--headless") {
             o.headless = true;
+        } else if (a == "--quiet") {
+            o.quiet = true;
         } else if (a == "--seconds") {
             const std::string& text = value();
             const double s = parseNumber(a, text);
@@ -80,8 +82,10 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --headless               run without a window (no display needed)\n"
        << "  --seconds S              simulated seconds to run (headless default "
        << RunOptions::defaultHeadlessSeconds << "; in a window: until closed)\n"
-       << "  --out DIR                write summary.json (final state, SI units) and the graphs'\n"
-       << "                           data (graph_<i>.csv, graphs.png) to DIR at the end\n"
+       << "  --out DIR                write summary.json (final state, SI units) and the graphs\n"
+       << "                           (graph_<i>.csv, graphs.png, graphs.root) to DIR at the end;\n"
+       << "                           DIR is created and checked before the run\n"
+       << "  --quiet                  no progress on stderr for long headless runs, no closing line\n"
        << "  --hz H                   physics rate in Hz (default: the simulation's, 40 as in the paper)\n"
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"

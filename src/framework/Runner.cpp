@@ -1,5 +1,8 @@
 #include "physim/framework/Runner.hpp"
 
+#include "GraphsPlacement.hpp"
+#include "OutputFolder.hpp"
+#include "Progress.hpp"
 #include "physim/framework/Summary.hpp"
 #ifdef PHYSIM_WITH_CUDA
 #include "physim/cuda/ContinuousSolver.hpp"
@@ -45,6 +48,12 @@ void Runner::restart() {
     Simulation& sim = *simulation_;
     if (continuousSolver_) sim.world().setContinuousSolver(continuousSolver_);
     sim.graphsManager.setLive(!options_.headless);
+    if (graphsWindow_) {  // beside the window; onCreate may place it elsewhere
+        const auto [x, y, w, h] = *graphsWindow_;
+        sim.graphsManager.setCanvasPosition(x, y);
+        sim.graphsManager.setCanvasSize(w, h);
+        sim.graphsManager.setCanvasTitle(sim.title() + ": graphs");
+    }
     if (options_.hz) sim.setPhysicsRate(*options_.hz);
     sim.onCreate();
     if (options_.hz) sim.setPhysicsRate(*options_.hz);  // the command line wins over onCreate's choice
@@ -95,29 +104,41 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
     }
 }
 
-void Runner::writeOutputs(const std::string& directory) const {
+std::vector<std::string> Runner::writeOutputs(const std::string& directory) const {
     if (!simulation_) throw std::logic_error("physim: nothing to write before the simulation started");
     std::filesystem::create_directories(directory);
     const std::filesystem::path path = std::filesystem::path(directory) / "summary.json";
     std::ofstream out(path);
     out << summaryJson(*simulation_);
     if (!out) throw std::runtime_error("physim: cannot write " + path.string());
-    simulation_->graphsManager.writeFiles(directory);
+    std::vector<std::string> written{path.string()};
+    for (std::string& file : simulation_->graphsManager.writeFiles(directory)) written.push_back(std::move(file));
+    return written;
 }
 
 int Runner::run() {
+    if (options_.outDir) prepareOutputFolder(*options_.outDir);  // before any simulated time is spent
     const int code = options_.headless ? runHeadless() : runWindow();
-    if (options_.outDir) writeOutputs(*options_.outDir);
+    if (options_.outDir) {
+        const auto written = writeOutputs(*options_.outDir);
+        if (!options_.quiet) std::cout << writtenLine(*options_.outDir, written) << std::endl;
+    }
     return code;
 }
 
 int Runner::runHeadless() {
     restart();
+    if (options_.outDir) simulation().graphsManager.prepareExport();  // ROOT's start-up while the run goes on
     const double seconds = options_.seconds.value_or(RunOptions::defaultHeadlessSeconds);
     // One fixed step per frame: the frame loop and every hook run exactly as in a window, with no clock.
     const double dt = simulation().fixedTimeStep();
     const auto frames = static_cast<long long>(std::ceil(seconds / dt - 1e-9));
-    for (long long i = 0; i < frames && !quit_; ++i) frame(simulation().fixedTimeStep(), nullptr);
+    Progress progress(seconds, !options_.quiet);
+    for (long long i = 0; i < frames && !quit_; ++i) {
+        frame(simulation().fixedTimeStep(), nullptr);
+        progress.update(simulation().time, i + 1);
+    }
+    progress.finish();
     return 0;
 }
 
@@ -150,7 +171,13 @@ int Runner::runWindow() {
         std::cerr << "physim: DejaVuSans.ttf not found (Debian: fonts-dejavu-core); the overlay is off\n";
         overlayFont_.reset();
     }
+    // The live graphs window opens beside this one (the pair centred when the screen is wide enough).
+    const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
+    const SideBySide layout = placeBeside(options_.width, options_.height, static_cast<int>(desktop.width),
+                                          static_cast<int>(desktop.height));
+    graphsWindow_ = {layout.canvas.x, layout.canvas.y, layout.canvas.width, layout.canvas.height};
     restart();
+    if (simulation().graphsManager.canvasOpen()) window.setPosition({layout.window.x, layout.window.y});
     sf::Clock frameClock, titleClock;
     int framesSinceTitle = 0;
     while (window.isOpen() && !quit_) {
@@ -188,6 +215,7 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory)
     RunOptions options;
     try {
         options = parseRunOptions(std::vector<std::string>(argv + (argc > 0 ? 1 : 0), argv + argc));
+        if (options.outDir && !options.help) prepareOutputFolder(*options.outDir);  // before any time is spent
     } catch (const UsageError& e) {
         std::cerr << program << ": " << e.what() << "\n";
         return 2;

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace physim {
 namespace {
 
@@ -134,6 +136,47 @@ TEST(Sleep, BadSettingsAreRejected) {
     s = WorldSettings{};
     s.sleepLinearTolerance = -1.0;
     EXPECT_THROW(World{s}, std::invalid_argument);
+}
+
+// A settled pile sleeps within 2 s of coming to rest, and then costs nothing. Islands persist (merged as contacts
+// begin, split only when one is about to sleep), so the moment the last body of a 210-box pyramid stays below the
+// tolerances, its island's clock runs: it sleeps timeToSleep (0.5 s) after that, to the step. "At rest" is the
+// last step in which any body moved faster than the tolerances.
+TEST(Sleep, ASettledPyramidSleepsWithinTwoSecondsOfComingToRest) {
+    World world;
+    BodyDef g;
+    g.type = BodyType::Static;
+    g.shape = makeBox(30.0, 0.5);
+    g.position = {0.0, -0.5};
+    world.createBody(g);
+    std::vector<BodyId> boxes;
+    const int n = 20;
+    for (int i = 0; i < n; ++i)
+        for (int j = i; j < n; ++j) {
+            BodyDef d;
+            d.shape = makeBox(0.5, 0.5);
+            d.position = {(i + 1) * 0.5 + (j - i) - 0.5 * n, 0.5 + i};
+            boxes.push_back(world.createBody(d));
+        }
+    const WorldSettings& s = world.settings();
+    double lastMoving = 0.0, asleep = -1.0;
+    for (int step = 1; step <= 20 * 60 && asleep < 0.0; ++step) {
+        world.step(kDt);
+        for (const BodyId id : boxes)
+            if (world.velocity(id).norm() > s.sleepLinearTolerance ||
+                std::abs(world.angularVelocity(id)) > s.sleepAngularTolerance)
+                lastMoving = step * kDt;
+        if (world.awakeBodyCount() == 0) asleep = step * kDt;
+    }
+    RecordProperty("at_rest_s", std::to_string(lastMoving));
+    RecordProperty("asleep_s", std::to_string(asleep));
+    ASSERT_GT(asleep, 0.0) << "never slept";
+    EXPECT_LE(asleep - lastMoving, 2.0);
+    EXPECT_NEAR(asleep - lastMoving, s.timeToSleep, 1.5 * kDt);
+    world.step(kDt);
+    EXPECT_FALSE(world.profile().didRun(Stage::BroadPhase));
+    EXPECT_FALSE(world.profile().didRun(Stage::NarrowPhase));
+    EXPECT_FALSE(world.profile().didRun(Stage::Solve));
 }
 
 }  // namespace

@@ -7,11 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -68,13 +71,54 @@ TEST(FallingBoxCli, HeadlessRunWritesTheFinalStateAndGraph) {
     EXPECT_NEAR(box["position"][0].get<double>(), 0.0, 1e-6);
     EXPECT_NEAR(box["angle"].get<double>(), 0.0, 1e-6);
 
-    // One graph point per frame: 160 frames, plus the title comment and the header.
+    // One graph point per frame: 160 frames, plus the title and series comments and the header.
     std::ifstream csv(dir / "graph_0.csv");
     int lines = 0;
     for (std::string l; std::getline(csv, l);) ++lines;
-    EXPECT_EQ(lines, 162);
+    EXPECT_EQ(lines, 163);
     EXPECT_TRUE(std::filesystem::exists(dir / "graphs.png"));
     std::filesystem::remove_all(dir);
+}
+
+TEST(FallingBoxCli, OutIsCheckedBeforeTheRun) {
+    // Exit code 2 can only come from the check before the run (errors while running exit with 1); a run of
+    // 1e6 simulated seconds would take minutes.
+    for (const char* bad : {"/proc/physim_out", "/dev/null/out"}) {
+        const Result r = run(std::string("--headless --seconds 1000000 --out ") + bad);
+        EXPECT_EQ(r.exitCode, 2) << r.output;
+        EXPECT_NE(r.output.find(std::string("--out ") + bad + ": cannot"), std::string::npos) << r.output;
+    }
+}
+
+TEST(FallingBoxCli, TheFolderHoldsThisRunsFilesAndOneLineSaysWhich) {
+    const auto dir = std::filesystem::temp_directory_path() / "physim_falling_box_out";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir / "graph_3.csv") << "from an earlier run\n";
+    const Result r = run("--headless --seconds 2 --out " + dir.string());
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"graph_0.csv", "graphs.png", "graphs.root", "summary.json"}));
+    EXPECT_EQ(r.output, "wrote summary.json, graph_0.csv, graphs.png, graphs.root (4 files) to " + dir.string() + "\n");
+    const Result quiet = run("--headless --seconds 2 --quiet --out " + dir.string());
+    EXPECT_EQ(quiet.exitCode, 0);
+    EXPECT_EQ(quiet.output, "") << "--quiet";
+    std::filesystem::remove_all(dir);
+}
+
+TEST(FallingBoxCli, LongHeadlessRunsReportProgress) {
+    // 20 000 simulated seconds (800 000 steps) take several seconds here; stderr is a pipe: plain lines.
+    const auto t0 = std::chrono::steady_clock::now();
+    const Result r = run("--headless --seconds 20000");
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    if (wall < 2.5) GTEST_SKIP() << "needs a run longer than 2.5 s to see progress; this one took " << wall << " s";
+    EXPECT_EQ(r.output.rfind("physim: ", 0), 0u) << r.output;
+    for (const char* part : {"%  t = ", " of 20000.0 s  ", " steps/s  about ", " left\n"})
+        EXPECT_NE(r.output.find(part), std::string::npos) << part << "\n" << r.output;
+    EXPECT_EQ(r.output.find('\r'), std::string::npos) << "no bar when stderr is not a terminal";
 }
 
 TEST(FallingBoxCli, WindowWithoutDisplayGivesAClearMessage) {

@@ -2,11 +2,13 @@
 
 #include <physim/graphs/GraphsManager.hpp>
 
+#include <TAxis.h>
 #include <TFile.h>
 #include <TGraph.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -39,13 +41,14 @@ TEST(GraphsManager, EachGraphIsItsOwnAndFilesMatchThePoints) {
     const auto written = gm.writeFiles(dir.string());
     ASSERT_EQ(written.size(), 4u);
     const auto g0 = lines((dir / "graph_0.csv").string());
-    ASSERT_EQ(g0.size(), 2u + 5u);
+    ASSERT_EQ(g0.size(), 3u + 5u);
     EXPECT_EQ(g0[0], "# Speed;t (s);v (m/s)");
-    EXPECT_EQ(g0[1], "x,y");
-    EXPECT_EQ(g0[4], "2,4");
+    EXPECT_EQ(g0[1], "# series: simulated");
+    EXPECT_EQ(g0[2], "x,y");
+    EXPECT_EQ(g0[5], "2,4");
     const auto g1 = lines((dir / "graph_1.csv").string());
-    ASSERT_EQ(g1.size(), 3u);
-    EXPECT_EQ(g1[2], "0.5,-1.25");
+    ASSERT_EQ(g1.size(), 4u);
+    EXPECT_EQ(g1[3], "0.5,-1.25");
     EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u) << "a PNG drawn in ROOT's batch mode";
     {
         TFile file((dir / "graphs.root").string().c_str(), "READ");
@@ -131,8 +134,60 @@ TEST(GraphsManager, SeriesShareTheirGraphsPadButNotTheirPoints) {
     const auto dir = std::filesystem::temp_directory_path() / "physim_graphs_series_test";
     std::filesystem::remove_all(dir);
     const auto written = gm.writeFiles(dir.string());  // graph 1 has no points: its pad stays empty
-    EXPECT_EQ(lines((dir / "graph_2.csv").string())[0], "# analytic");
+    EXPECT_EQ(lines((dir / "graph_2.csv").string())[0], "# Height;t (s);y (m)") << "the pad's title";
+    EXPECT_EQ(lines((dir / "graph_2.csv").string())[1], "# series: analytic");
     EXPECT_GT(std::filesystem::file_size(dir / "graphs.png"), 1000u);
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace physim
+
+namespace physim {
+namespace {
+
+TEST(GraphsManager, EverySeriesHasALabel) {
+    GraphsManager gm;
+    const int a = gm.addGraph("Height;t (s);y (m)");
+    const int b = gm.addGraph("Period;amplitude (deg);T (s)", "measured");
+    const int c = gm.addSeries(b, "exact");
+    EXPECT_EQ(gm.label(a), "simulated") << "the default for simulated data";
+    EXPECT_EQ(gm.label(b), "measured");
+    EXPECT_EQ(gm.label(c), "exact");
+    EXPECT_EQ(gm.title(c), "Period;amplitude (deg);T (s)") << "a series shares its graph's pad and title";
+}
+
+TEST(GraphsManager, FilesHoldEveryPointAndOnlyThisRunsGraphs) {
+    const auto dir = std::filesystem::temp_directory_path() / "physim_graphs_files_test";
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    for (const char* stale : {"graph_0.csv", "graph_7.csv", "graph_12.csv"}) std::ofstream(dir / stale) << "old\n";
+    std::ofstream(dir / "notes.txt") << "the user's\n";
+
+    GraphsManager gm;
+    const int energy = gm.addGraph("Energy;time (s);E (J)", {}, GraphMode::WITH_LINES);
+    gm.addSeries(energy, "initial");
+    gm.build();
+    gm.prepareExport();  // ROOT starts on its own thread while the points come in, as in a headless run
+    for (int i = 0; i < 24000; ++i) {  // 600 s at 40 Hz: thinned for drawing, not in the files
+        gm.addPoint(0, 0.025 * i, 100.0 - 1e-3 * i);
+        gm.addPoint(1, 0.025 * i, 100.0);
+    }
+    const auto written = gm.writeFiles(dir.string());
+    EXPECT_EQ(written.size(), 4u);
+    std::vector<std::string> names;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"graph_0.csv", "graph_1.csv", "graphs.png", "graphs.root", "notes.txt"}))
+        << "earlier graph_<i>.csv gone, other files left alone";
+    EXPECT_EQ(lines((dir / "graph_0.csv").string()).size(), 3u + 24000u);
+    TFile file((dir / "graphs.root").string().c_str(), "READ");
+    const std::unique_ptr<TGraph> g0(file.Get<TGraph>("graph_0"));
+    ASSERT_NE(g0, nullptr);
+    EXPECT_EQ(g0->GetN(), 24000);
+    EXPECT_STREQ(g0->GetTitle(), "Energy: simulated");
+    EXPECT_STREQ(g0->GetXaxis()->GetTitle(), "time (s)") << "ROOT's title convention: drawn, it has its axis titles";
+    EXPECT_STREQ(g0->GetYaxis()->GetTitle(), "E (J)");
     std::filesystem::remove_all(dir);
 }
 

@@ -16,6 +16,7 @@ struct RunOptions {
     std::optional<std::string> outDir; ///< where summary.json and the graphs' files go
     std::optional<double> hz;          ///< physics rate; the simulation's own default otherwise (40 Hz)
     std::optional<std::string> screenshot;  ///< window mode: the last frame is saved to this PNG at the end
+    bool quiet = false;                ///< no progress on stderr and no closing line
     int maxStepsPerFrame = 8;          ///< cap on catch-up steps per window frame
     int width = 1280;                  ///< window size, pixels
     int height = 720;

@@ -7,9 +7,12 @@
 #include "physim/framework/RunOptions.hpp"
 #include "physim/framework/Simulation.hpp"
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace sf {
 class Event;
@@ -27,7 +30,8 @@ public:
     Runner(SimulationFactory factory, RunOptions options);
     ~Runner();
 
-    /// Runs to the end (window closed, Esc, or --seconds reached) and writes --out files. Returns 0.
+    /// Runs to the end (window closed, Esc, or --seconds reached), writes --out files and says which in one
+    /// line on stdout (unless --quiet). Returns 0.
     int run();
 
     // The pieces run() is made of, public so tests can drive the lifecycle frame by frame.
@@ -42,8 +46,8 @@ public:
 
     Simulation& simulation();
     const FixedStepAccumulator& accumulator() const { return accumulator_; }
-    /// summary.json and the graphs' files into `directory`.
-    void writeOutputs(const std::string& directory) const;
+    /// summary.json and the graphs' files into `directory`. Returns the paths written.
+    std::vector<std::string> writeOutputs(const std::string& directory) const;
 
 private:
     int runHeadless();
@@ -58,6 +62,7 @@ private:
     FixedStepAccumulator accumulator_;
     bool quit_ = false;
     std::unique_ptr<sf::Font> overlayFont_;  // null when no font file is found: no overlay then
+    std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
     double framesPerSecond_ = 0.0;
 };
 
