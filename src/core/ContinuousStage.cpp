@@ -65,6 +65,10 @@ void ContinuousStage::consider(Candidate& c, const ToiResult& r, const Geometry&
                                const Sweep& theirSweep, double slop) {
     if (r.state == ToiState::Hit) {
         c.t = std::min(c.t, r.t);
+    } else if (r.state == ToiState::Failed) {
+        // No contact proven, so none is made up (the velocity stays, no contact is added); but the pair is only
+        // proven apart up to r.t, so the body goes no further than that: exact detection never tunnels.
+        c.t = std::min(c.t, r.t);
     } else if (r.state == ToiState::Touching && c.continuous && c.t > 0.0) {
         c.t = std::min(c.t, deepening(mine, c.sweep, theirs, theirSweep, slop));
     }
