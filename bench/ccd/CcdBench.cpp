@@ -6,8 +6,15 @@
 // threads) and on the GPU (kernel alone, and with the copies), with the CPU-GPU agreement and the crossover N where
 // the GPU wins. Table in docs/cuda.md. GPU rows need the `cuda` preset and a GPU; without them the table says why.
 //
+// Crowd mode (--crowd N): N bullets in the tests' closed 4 m box (tests/support/RandomBatch.hpp), stepped once
+// with exact continuous detection and once, the same scene, with discrete detection; both in one run, so their
+// ratio is measured on the same machine at the same time. Table on stdout; --json FILE writes
+// {"bullets", "steps", "exact_ms_per_step", "discrete_ms_per_step", "escaped", "discrete_escaped"} (escaped: the
+// exact run's bullets whose centre ends beyond a wall's inner face, i.e. in or through a wall).
+//
 // Usage: ccd_bench [pairs (default 20000)] [seed (default 5)]
 //        ccd_bench --batch [largest N (default 1000000)] [seed (default 5)]
+//        ccd_bench --crowd N [--steps S (default 60)] [--seed K (default 5)] [--json FILE]
 
 #include "physim/core/Collide.hpp"
 #include "physim/core/ContinuousBatch.hpp"
@@ -25,6 +32,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -209,9 +218,84 @@ int batchTable(int largest, unsigned seed) {
     return 0;
 }
 
+struct CrowdRun {
+    double msPerStep = 0.0;
+    int escaped = 0;  // centre beyond a wall's inner face at the end
+};
+
+CrowdRun runCrowd(int bullets, unsigned seed, int steps, CollisionDetection mode) {
+    WorldSettings settings;
+    settings.gravity = Vec2::Zero();
+    World world(settings);
+    const std::vector<BodyId> ids = testing::fillBulletBox(world, bullets, seed);
+    for (const BodyId id : ids) world.setCollisionDetection(id, mode);
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < steps; ++i) world.step(1.0 / 60.0);
+    CrowdRun run;
+    run.msPerStep = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
+    for (const BodyId id : ids)
+        if (world.position(id).cwiseAbs().maxCoeff() >= testing::kBulletBoxInner) ++run.escaped;
+    return run;
+}
+
+[[noreturn]] void usageError(const std::string& what) {
+    std::fprintf(stderr, "ccd_bench: %s\nusage: ccd_bench --crowd N [--steps S] [--seed K] [--json FILE]\n",
+                 what.c_str());
+    std::exit(2);
+}
+
+// A whole positive integer no larger than `most`, or a usage error naming the option and the value.
+int positiveArgument(const std::string& option, const std::string& text, int most) {
+    char* end = nullptr;
+    const long value = std::strtol(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || value < 1 || value > most)
+        usageError(option + " takes a whole number from 1 to " + std::to_string(most) + ", got '" + text + "'");
+    return static_cast<int>(value);
+}
+
+int crowdMain(int argc, char** argv) {
+    int bullets = 0, steps = 60;
+    unsigned seed = 5u;
+    std::optional<std::string> json;
+    for (int i = 1; i < argc; ++i) {
+        const std::string option = argv[i];
+        if (option != "--crowd" && option != "--steps" && option != "--seed" && option != "--json")
+            usageError("unknown argument '" + option + "'");
+        if (i + 1 >= argc) usageError(option + " needs a value");
+        const std::string value = argv[++i];
+        if (option == "--crowd") bullets = positiveArgument(option, value, 100000);
+        if (option == "--steps") steps = positiveArgument(option, value, 100000);
+        if (option == "--seed") seed = static_cast<unsigned>(positiveArgument(option, value, 1 << 30));
+        if (option == "--json") json = value;
+    }
+    if (bullets == 0) usageError("--crowd N is required");
+    const CrowdRun exact = runCrowd(bullets, seed, steps, CollisionDetection::ContinuousExact);
+    const CrowdRun discrete = runCrowd(bullets, seed, steps, CollisionDetection::Discrete);
+    std::printf("%d bullets (150 to 600 m/s) in a closed 4 m box, seed %u, %d steps at 60 Hz\n\n", bullets, seed,
+                steps);
+    std::printf("| detection | ms per step | escaped (centre beyond a wall's inner face at the end) |\n");
+    std::printf("| --- | ---: | ---: |\n");
+    std::printf("| exact continuous | %.2f | %d |\n", exact.msPerStep, exact.escaped);
+    std::printf("| discrete | %.2f | %d |\n", discrete.msPerStep, discrete.escaped);
+    std::printf("\nexact / discrete: %.1fx\n", exact.msPerStep / discrete.msPerStep);
+    if (json) {
+        std::ofstream out(*json);
+        out << "{\"bullets\": " << bullets << ", \"steps\": " << steps
+            << ", \"exact_ms_per_step\": " << exact.msPerStep << ", \"discrete_ms_per_step\": " << discrete.msPerStep
+            << ", \"escaped\": " << exact.escaped << ", \"discrete_escaped\": " << discrete.escaped << "}\n";
+        if (!out) {
+            std::fprintf(stderr, "ccd_bench: cannot write '%s'\n", json->c_str());
+            return 1;
+        }
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    if (argc > 1 && std::string(argv[1]).rfind("--", 0) == 0 && std::string(argv[1]) != "--batch")
+        return crowdMain(argc, argv);
     if (argc > 1 && std::string(argv[1]) == "--batch")
         return batchTable(argc > 2 ? std::atoi(argv[2]) : 1000000,
                           argc > 3 ? static_cast<unsigned>(std::atoi(argv[3])) : 5u);

@@ -203,9 +203,13 @@ inline Agreement compareResults(const ContinuousBatch& batch, const ContinuousBa
     return a;
 }
 
+/// fillBulletBox's walls' inner faces are at |x| = kBulletBoxInner and |y| = kBulletBoxInner (m): a bullet whose
+/// centre is there or beyond is in or through a wall.
+inline constexpr double kBulletBoxInner = 1.995;
+
 /// Bullets in a 4 m x 4 m box centred on the origin (walls 1 cm thick); returns the bullets' ids.
 inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned seed) {
-    const double half = 2.0, wall = 0.005;
+    const double half = kBulletBoxInner + 0.005, wall = 0.005;  // m: the walls' centre lines and half thickness
     for (const auto& [x, y, hw, hh] : {std::array<double, 4>{-half, 0.0, wall, half + wall},
                                        std::array<double, 4>{half, 0.0, wall, half + wall},
                                        std::array<double, 4>{0.0, -half, half + wall, wall},
