@@ -56,7 +56,16 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
     const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
     for (int s = 1; s <= samples; ++s) {
         const double u = static_cast<double>(s) / samples;
-        if (deepest(a, sa.at(u), b, sb.at(u)) < limit) return static_cast<double>(s - 1) / samples;
+        const Transform ua = sa.at(u), ub = sb.at(u);
+        if (deepest(a, ua, b, ub) < limit) return static_cast<double>(s - 1) / samples;
+        if (!(shapeDistance(a, ua, b, ub).distance > kToiTolerance)) continue;
+        // Apart: the time of impact over the rest proves how long they stay so (no overlap at all), and the
+        // sampling resumes from the last sample inside that time (a bullet leaving a wall it bounced off is done).
+        const ToiResult rest =
+            timeOfImpact(a, {ua.p, sa.p1, sa.angleAt(u), sa.a1}, b, {ub.p, sb.p1, sb.angleAt(u), sb.a1});
+        if (rest.state == ToiState::Separated) return 1.0;
+        const int proven = static_cast<int>(std::floor((u + rest.t * (1.0 - u)) * samples));
+        s = std::max(s, std::min(proven, samples - 1));
     }
     return 1.0;
 }
