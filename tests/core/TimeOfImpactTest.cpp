@@ -166,6 +166,29 @@ TEST(TimeOfImpact, NeverMissesWhatSamplingFinds) {
     EXPECT_GT(hits, 100);
 }
 
+// Origins that never come within the two bounding radii plus the tolerance settle a pair with no distance
+// evaluation. Two 5 cm circles, one crossing 1 m past the other: their closest approach is the offset between
+// the lines (analytic), so 0.1 m + 2 tolerances is Separated at once, and 0.1 m + 0.2 tolerance, which the test
+// does not dismiss and which comes closer than the advancement's aim (half a tolerance), is a Hit at the crossing.
+TEST(TimeOfImpact, OriginsThatNeverComeNearSettleAPairAtOnce) {
+    const Circle ball = makeCircle(0.05);
+    for (const double offset : {0.1 + 2.0 * kToiTolerance, 0.1 + 0.2 * kToiTolerance}) {
+        const Sweep crossing{{-0.5, offset}, {0.5, offset}, 0.0, 3.0};  // turning changes nothing for a circle
+        const ToiResult r = timeOfImpact(ball, crossing, ball, still({0.0, 0.0}));
+        if (offset > 0.1 + kToiTolerance) {
+            EXPECT_EQ(r.state, ToiState::Separated);
+            EXPECT_EQ(r.iterations, 0);
+        } else {
+            ASSERT_EQ(r.state, ToiState::Hit);
+            EXPECT_GE(r.iterations, 1);
+            // The gap is below the tolerance only within sqrt((2 r + tol)^2 - (2 r + 0.2 tol)^2) = 4.0e-3 m of the
+            // crossing (t = 1/2 on a 1 m path), and the hit is never after the closest point.
+            EXPECT_LE(r.t, 0.5);
+            EXPECT_GE(r.t, 0.5 - 4.1e-3);
+        }
+    }
+}
+
 // The phantom hit: a 2 m plank spinning at 96 rad/s whose corner passes a free ball 0.2 mm away (twice the
 // tolerance). The corner sweeps a circle of radius hypot(1, 0.005) about the plank's centre; the ball's surface sits
 // 0.2 mm outside it, where the corner passes at the middle of the motion, so the distance never drops below 0.2 mm.
