@@ -236,7 +236,8 @@ CrowdRun runCrowd(int bullets, unsigned seed, int steps, CollisionDetection mode
     CrowdRun run;
     for (int i = 0; i < steps; ++i) {
         world.step(1.0 / 60.0);
-        for (std::size_t k = 0; k < StepProfile::stageCount; ++k) run.stageMs[k] += 1e3 * world.profile().seconds[k] / steps;
+        for (std::size_t k = 0; k < StepProfile::stageCount; ++k)
+            run.stageMs[k] += 1e3 * world.profile().seconds[k] / steps;
     }
     run.msPerStep = 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() / steps;
     for (const BodyId id : ids)
@@ -283,8 +284,8 @@ int crowdMain(int argc, char** argv) {
     std::printf("| --- | ---: | ---: |\n");
     std::printf("| exact continuous | %.2f | %d |\n", exact.msPerStep, exact.escaped);
     std::printf("| discrete | %.2f | %d |\n", discrete.msPerStep, discrete.escaped);
-    std::printf("\nexact / discrete: %.1fx\n\nWhere a step's time goes (ms per step, World::profile()):\n\n| stage | exact | "
-                "discrete |\n| --- | ---: | ---: |\n",
+    std::printf("\nexact / discrete: %.1fx\n\nWhere a step's time goes (ms per step, World::profile()):\n\n"
+                "| stage | exact | discrete |\n| --- | ---: | ---: |\n",
                 exact.msPerStep / discrete.msPerStep);
     for (std::size_t k = 0; k < StepProfile::stageCount; ++k)
         std::printf("| %s | %.2f | %.2f |\n", std::string(stageName(static_cast<Stage>(k))).c_str(), exact.stageMs[k],
