@@ -14,7 +14,8 @@
 namespace physim {
 
 static_assert(static_cast<int>(ToiState::Separated) == kernel::kSeparated && static_cast<int>(ToiState::Hit) == kernel::kHit &&
-                  static_cast<int>(ToiState::Touching) == kernel::kTouching,
+                  static_cast<int>(ToiState::Touching) == kernel::kTouching &&
+                  static_cast<int>(ToiState::Failed) == kernel::kFailed,
               "the batch's state codes are ToiState's");
 static_assert(Polygon::maxVertices == kernel::kMaxVertices, "the kernel holds every polygon the core makes");
 

@@ -63,7 +63,16 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
     const int samples = static_cast<int>(std::min(4096.0, std::ceil(reach / (0.5 * slop))));
     for (int s = 1; s <= samples; ++s) {
         const double u = static_cast<double>(s) / samples;
-        if (deepest(a, sa.at(u), b, sb.at(u)) < limit) return static_cast<double>(s - 1) / samples;
+        const Transform ua = sa.at(u), ub = sb.at(u);
+        if (deepest(a, ua, b, ub) < limit) return static_cast<double>(s - 1) / samples;
+        if (!(shapeDistance(a, ua, b, ub).distance > kToiTolerance)) continue;
+        // Apart: the time of impact over the rest proves how long they stay so (no overlap at all), and the
+        // sampling resumes from the last sample inside that time (a bullet leaving a wall it bounced off is done).
+        const ToiResult rest =
+            timeOfImpact(a, {ua.p, sa.p1, sa.angleAt(u), sa.a1}, b, {ub.p, sb.p1, sb.angleAt(u), sb.a1});
+        if (rest.state == ToiState::Separated) return 1.0;
+        const int proven = static_cast<int>(std::floor((u + rest.t * (1.0 - u)) * samples));
+        s = std::max(s, std::min(proven, samples - 1));
     }
     return 1.0;
 }
@@ -71,6 +80,10 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
 void ContinuousStage::consider(Candidate& c, const ToiResult& r, const Geometry& mine, const Geometry& theirs,
                                const Sweep& theirSweep, double slop) {
     if (r.state == ToiState::Hit) {
+        c.t = std::min(c.t, r.t);
+    } else if (r.state == ToiState::Failed) {
+        // No contact proven, so none is made up (the velocity stays, no contact is added); but the pair is only
+        // proven apart up to r.t, so the body goes no further than that: exact detection never tunnels.
         c.t = std::min(c.t, r.t);
     } else if (r.state == ToiState::Touching && c.continuous && c.t > 0.0) {
         c.t = std::min(c.t, deepening(mine, c.sweep, theirs, theirSweep, slop));

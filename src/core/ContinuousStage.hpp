@@ -44,7 +44,8 @@ private:
     Sweep sweepOf(const WorldImpl& w, std::uint32_t slot) const;
     // Folds one pair's result into the candidate's earliest impact. Touching at the start is the contacts'
     // business, unless a continuous body's turning or approaching carries the pair more than the slop into each
-    // other (deepening); a fast discrete body only ever stops at a hit.
+    // other (deepening), which never stops a fast discrete body. A Failed pair stops the body where the pair was
+    // last proven apart, without a contact.
     static void consider(Candidate& c, const ToiResult& r, const Geometry& mine, const Geometry& theirs,
                          const Sweep& theirSweep, double slop);
     // First sample time (fraction of the sweeps) before the shapes overlap by more than `slop` (m); 1 if never.

@@ -165,7 +165,7 @@ std::optional<Vec2> RigidBody::checkContinuousCollision(const Vec2& position, co
                          method_ == ContinuousMethod::SAMPLED;
     const ToiResult r = sampled ? sampledTimeOfImpact(mine, path, theirs, still, precision())
                                 : timeOfImpact(mine, path, theirs, still);
-    if (r.state == ToiState::Separated) return std::nullopt;
+    if (r.state != ToiState::Hit && r.state != ToiState::Touching) return std::nullopt;  // Failed: none proven
     return path.at(r.t).p;
 }
 

@@ -1,6 +1,7 @@
 // Continuous batches on the CPU: the batch answers exactly what the one-pair functions answer (they are one piece
-// of code, ContinuousKernel.hpp, so equality is to the last bit), a closed-form time of impact, threads that
-// change nothing, bad input named at the boundary, and a World whose continuous stage goes through the solver.
+// of code, ContinuousKernel.hpp, so equality is to the last bit), on fast pairs and on spinning grazing ones, Failed
+// included; a closed-form time of impact, threads that change nothing, bad input named at the boundary, and a
+// World whose continuous stage goes through the solver.
 
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/World.hpp"
@@ -62,6 +63,46 @@ TEST(ContinuousBatch, AnswersWhatTheOnePairFunctionsAnswer) {
     }
     // The generator's design: about half the pairs collide; far fewer would mean a broken generator.
     EXPECT_GT(hits, 1000);
+}
+
+// The same on fast-spinning pairs built to graze (testing::spinningPairs), with the default budget and with one so
+// small that many pairs fail: every field of every pair is the one-pair kernel's to the bit, Failed included, and
+// a failed pair reports how far it was proven apart and no contact data.
+TEST(ContinuousBatch, SpinningPairsAndFailuresMatchTheOnePairKernel) {
+    ContinuousBatch batch = testing::toBatch(testing::spinningPairs(2000, 5));
+    for (const std::int32_t budget : {100, 3}) {
+        batch.maxIterations = budget;
+        ContinuousBatchResult result;
+        CpuContinuousSolver().solve(batch, result);
+        int failed = 0;
+        for (std::size_t i = 0; i < batch.pairCount(); ++i) {
+            const std::int32_t a = batch.pairs.a[i], b = batch.pairs.b[i];
+            const kernel::Toi one =
+                kernel::timeOfImpact(toKernel(shapeOf(batch, a)), toKernel(sweepOf(batch, a)),
+                                     toKernel(shapeOf(batch, b)), toKernel(sweepOf(batch, b)), batch.tolerance, budget);
+            ASSERT_EQ(result.state[i], one.state) << "pair " << i;
+            ASSERT_EQ(result.iterations[i], one.iterations) << "pair " << i;
+            ASSERT_EQ(result.t[i], one.t) << "pair " << i;
+            ASSERT_EQ(result.gap[i], one.gap) << "pair " << i;
+            ASSERT_EQ(result.normalX[i], one.normal.x) << "pair " << i;
+            ASSERT_EQ(result.normalY[i], one.normal.y) << "pair " << i;
+            ASSERT_EQ(result.pointX[i], one.point.x) << "pair " << i;
+            ASSERT_EQ(result.pointY[i], one.point.y) << "pair " << i;
+            if (result.state[i] != kernel::kFailed) continue;
+            ++failed;
+            EXPECT_EQ(result.toi(i).state, ToiState::Failed);
+            EXPECT_EQ(result.iterations[i], budget);
+            EXPECT_GE(result.t[i], 0.0);
+            EXPECT_LT(result.t[i], 1.0);
+            EXPECT_EQ(result.gap[i], 0.0);
+            EXPECT_EQ(result.normalX[i], 0.0);
+            EXPECT_EQ(result.pointY[i], 0.0);
+        }
+        if (budget == 100)
+            EXPECT_EQ(failed, 0);
+        else
+            EXPECT_GT(failed, 200) << "a budget of 3 settles most pairs, not all";
+    }
 }
 
 TEST(ContinuousBatch, CircleAgainstAPlankMatchesTheClosedForm) {

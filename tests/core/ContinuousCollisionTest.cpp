@@ -371,7 +371,8 @@ TEST(ContinuousCrowd, BulletsNeverLeaveTheBox) {
     for (int step = 0; step < 60; ++step) {
         world.step(kDt);
         for (const BodyId b : bullets)
-            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 1.995) << "a bullet's centre passed a wall's inner face in step " << step;
+            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), testing::kBulletBoxInner)
+                << "a bullet's centre passed a wall's inner face in step " << step;
         highest = std::max(highest, energy());
     }
     std::cout << "kinetic energy: start " << start << " J, highest " << highest << " J, end " << energy() << " J\n";
@@ -429,7 +430,8 @@ TEST(ContinuousCrowd, TwoHundredBulletsNeverLeaveTheBox) {
     for (int step = 0; step < 60; ++step) {
         world.step(kDt);
         for (const BodyId b : bullets)
-            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), 1.995) << "a bullet left the box in step " << step;
+            ASSERT_LT(world.position(b).cwiseAbs().maxCoeff(), testing::kBulletBoxInner)
+                << "a bullet left the box in step " << step;
         highest = std::max(highest, testing::kineticEnergy(world, bullets));
     }
     RecordProperty("highest_over_start", std::to_string(highest / start));

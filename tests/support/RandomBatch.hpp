@@ -1,6 +1,7 @@
 #pragma once
 // Test inputs for continuous batches, shared by the core's and the CUDA layer's tests:
 //   randomPairs / randomBatch: fast small shapes fired across obstacles (ccd_bench uses them too).
+//   spinningPairs: fast-spinning pairs placed to graze (or just touch) at a chosen moment.
 //   fillBulletBox: a closed box of thin walls with exact-continuous bullets (small circles and thin spinning boxes)
 //     fired across it at 150 to 600 m/s, so every step has impacts and, without continuous detection, the bullets
 //     would leave the box.
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace physim::testing {
@@ -58,6 +60,93 @@ inline std::vector<FastPair> randomPairs(int count, unsigned seed) {
             --i;  // start apart
             continue;
         }
+        pairs.push_back(p);
+    }
+    return pairs;
+}
+
+/// Pairs of fast-spinning shapes, most of them built to graze. Shapes: circles (some off their body's origin),
+/// boxes, 2 m planks 1 cm thick, thin boxes off the origin, random convex polygons of 3 to 8 vertices. Over the
+/// motion each moves up to 8 m (480 m/s over a 1/60 s step) and turns up to 17 rad (1000 rad/s).
+/// At a random moment t* in (0.05, 0.95) b is placed `gaps[i % 12]` from a along their closest-point normal; in
+/// three pairs of four, b's motion along that normal is then set so that the gap's rate of change at t* is zero,
+/// which makes t* a minimum of the distance (a graze) or a maximum (a hit just after). Gaps around the tolerance
+/// kToiTolerance: overlaps of 1 mm and 10 um, then 0.2 to 20 tolerances. The fourth pair has a random gap up to
+/// 0.5 m and no such adjustment. Other parts of the shapes may still meet at other times (a spinning plank sweeps
+/// through what it grazed). Every pair starts at least the tolerance apart.
+inline std::vector<FastPair> spinningPairs(int count, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
+    auto direction = [&] {
+        const double a = in(0.0, 2.0 * M_PI);
+        return Vec2(std::cos(a), std::sin(a));
+    };
+    // Draws are taken one per statement: the order in which a call's arguments are evaluated is unspecified.
+    auto shape = [&]() -> Geometry {
+        const int kind = static_cast<int>(6.0 * u(rng));
+        const double r1 = u(rng), r2 = u(rng), r3 = u(rng), r4 = u(rng), r5 = u(rng);
+        switch (kind) {
+            case 0: return makeCircle(0.01 + 0.29 * r1);
+            case 1: return makeCircle(0.01 + 0.19 * r1, {0.4 * r2 - 0.2, 0.4 * r3 - 0.2});
+            case 2: return makeBox(0.02 + 0.48 * r1, 0.02 + 0.48 * r2);
+            case 3: return makeBox(1.0, 0.005);
+            case 4:
+                return makeBox(0.05 + 0.25 * r1, 0.005 + 0.045 * r2, {0.2 * r3 - 0.1, 0.2 * r4 - 0.1}, 6.0 * r5 - 3.0);
+            default: {  // vertices at increasing angles around a circle, pulled in by up to 30% (makePolygon refuses
+                        // the rare non-convex draw)
+                const int n = 3 + static_cast<int>(6.0 * u(rng));
+                const double size = in(0.05, 0.4), phase = in(0.0, 2.0 * M_PI);
+                std::vector<Vec2> points;
+                for (int k = 0; k < n; ++k) {
+                    const double angle = phase + 2.0 * M_PI * (k + 0.3 * u(rng)) / n, r = size * in(0.7, 1.0);
+                    points.emplace_back(r * std::cos(angle), r * std::sin(angle));
+                }
+                try {
+                    return makePolygon(points);
+                } catch (const std::invalid_argument&) {  // a reflex vertex after all
+                    return makeBox(size, 0.5 * size);
+                }
+            }
+        }
+    };
+    const double tol = kToiTolerance;
+    const double gaps[12] = {-1e-3, -1e-5, 0.2 * tol, 0.45 * tol, 0.55 * tol, 0.9 * tol,
+                             1.1 * tol, 1.3 * tol, 1.6 * tol, 2.0 * tol, 3.0 * tol, 20.0 * tol};
+    std::vector<FastPair> pairs;
+    while (static_cast<int>(pairs.size()) < count) {
+        const int i = static_cast<int>(pairs.size());
+        FastPair p{shape(), shape(), {}, {}};
+        // Log-uniform rates, so that slow and fast are both common: turns of 0.1 to 17 rad, either way; moves of
+        // 0.05 to 8 m. Some bodies neither turn nor move.
+        auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
+        auto turn = [&](double still) {
+            if (u(rng) < still) return 0.0;
+            const double sign = u(rng) < 0.5 ? -1.0 : 1.0;
+            return sign * logUniform(0.1, 17.0);
+        };
+        auto move = [&](double still) { return u(rng) < still ? 0.0 : logUniform(0.05, 8.0); };
+        const double spinA = turn(0.2), spinB = turn(0.5), speedA = move(0.3), speedB = move(0.5);
+        const Vec2 vA = speedA * direction();
+        Vec2 vB = speedB * direction();
+        const double tStar = in(0.05, 0.95), angleA = in(-M_PI, M_PI), angleB = in(-M_PI, M_PI);
+        const Vec2 cA = Vec2::Zero();
+        const double reach = in(0.3, 1.0) * (boundingRadius(p.a) + boundingRadius(p.b) + 0.1);
+        Vec2 cB = reach * direction();
+        const Transform xa{cA, Rotation::fromAngle(angleA)};
+        const DistanceOutput d = shapeDistance(p.a, xa, p.b, {cB, Rotation::fromAngle(angleB)});
+        if (!(d.distance > 0.0)) continue;  // overlapping: draw again
+        const bool graze = i % 4 != 0;
+        const double shift = (graze ? gaps[i % 12] : in(0.0, 0.5)) - d.distance;
+        cB += shift * d.normal;
+        if (graze) {  // zero the rate of change of the gap between the closest points at t*
+            auto velocity = [](const Vec2& v, double w, const Vec2& c, const Vec2& at) { return v + w * perp(at - c); };
+            const Vec2 pointB = d.pointB + shift * d.normal;
+            vB -= d.normal.dot(velocity(vB, spinB, cB, pointB) - velocity(vA, spinA, cA, d.pointA)) * d.normal;
+        }
+        p.sa = {cA - tStar * vA, cA + (1.0 - tStar) * vA, angleA - tStar * spinA, angleA + (1.0 - tStar) * spinA};
+        p.sb = {cB - tStar * vB, cB + (1.0 - tStar) * vB, angleB - tStar * spinB, angleB + (1.0 - tStar) * spinB};
+        if (shapeDistance(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).distance < tol) continue;
         pairs.push_back(p);
     }
     return pairs;
@@ -114,9 +203,13 @@ inline Agreement compareResults(const ContinuousBatch& batch, const ContinuousBa
     return a;
 }
 
+/// fillBulletBox's walls' inner faces are at |x| = kBulletBoxInner and |y| = kBulletBoxInner (m): a bullet whose
+/// centre is there or beyond is in or through a wall.
+inline constexpr double kBulletBoxInner = 1.995;
+
 /// Bullets in a 4 m x 4 m box centred on the origin (walls 1 cm thick); returns the bullets' ids.
 inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned seed) {
-    const double half = 2.0, wall = 0.005;
+    const double half = kBulletBoxInner + 0.005, wall = 0.005;  // m: the walls' centre lines and half thickness
     for (const auto& [x, y, hw, hh] : {std::array<double, 4>{-half, 0.0, wall, half + wall},
                                        std::array<double, 4>{half, 0.0, wall, half + wall},
                                        std::array<double, 4>{0.0, -half, half + wall, wall},

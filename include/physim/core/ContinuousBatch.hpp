@@ -39,7 +39,7 @@ struct ContinuousBatch {
         std::vector<std::int32_t> a, b;  ///< body indices; the normal in the result points from a to b
     } pairs;
     double tolerance = kToiTolerance;  ///< m, > 0: the gap at which a hit is reported
-    std::int32_t maxIterations = 100;  ///< in [1, 1e6], conservative-advancement steps per pair
+    std::int32_t maxIterations = 100;  ///< in [1, 1e6], distance evaluations per pair before it is Failed
     /// 0 (the default): the shape arrays may differ from the last batch's, and a GPU solver copies them. Any other
     /// value is the owner's promise that the shape arrays are exactly those of the last batch it solved with this
     /// value, so a GPU solver may keep them on the device (shapes rarely change between steps; they are most of
@@ -58,9 +58,11 @@ struct ContinuousBatch {
     std::size_t pairCount() const { return pairs.a.size(); }
 };
 
-/// One entry per pair: state is a ToiState (Separated, Hit, Touching); at a Hit or Touching, t is the time of
-/// impact (fraction of the motion), gap the distance then (m, < tolerance), normal (a to b) and point (m, world)
-/// the contact's; normal and point are zero when the shapes overlap at t. Separated pairs have t = 1.
+/// One entry per pair: state is a ToiState code (kernel::kSeparated, kHit, kTouching, kFailed; kInvalid only inside
+/// a solve); at a Hit or Touching, t is the time of impact (fraction of the motion), gap the distance then (m,
+/// < tolerance), normal (a to b) and point (m, world) the contact's; normal and point are zero when the shapes
+/// overlap at t. Separated pairs have t = 1. Failed pairs (no convergence within maxIterations: no impact found,
+/// never a hit) have t = how far the shapes were proven apart, and zero gap, normal and point.
 struct ContinuousBatchResult {
     std::vector<std::int32_t> state;
     std::vector<std::int32_t> iterations;

@@ -200,12 +200,14 @@ PHYSIM_HOST_DEVICE inline Distance shapeDistance(const Shape& a, const Xf& xa, c
     return polygonPolygon(a, xa, b, xb);
 }
 
-/// kInvalid: the pair's entries failed the batch's checks (pairHolds) and were not solved.
-enum ToiState : std::int32_t { kInvalid = -1, kSeparated = 0, kHit = 1, kTouching = 2 };
+/// kInvalid: the pair's entries failed the batch's checks (pairHolds) and were not solved. kFailed: the advancement
+/// ran out of iterations before it proved either a contact or its absence (never a hit).
+enum ToiState : std::int32_t { kInvalid = -1, kSeparated = 0, kHit = 1, kTouching = 2, kFailed = 3 };
 
 /// First contact of two moving shapes. At a hit, gap/normal/point describe the two shapes at time t: the gap
 /// (m, in [0, tolerance)), the normal from a to b and the midpoint of the closest points; all zero when the
-/// shapes already overlap (gap 0 gives no direction).
+/// shapes already overlap (gap 0 gives no direction). Separated: t = 1. Failed: t is how far the shapes were proven
+/// apart, gap/normal/point zero.
 struct Toi {
     std::int32_t state;
     std::int32_t iterations;
@@ -215,20 +217,162 @@ struct Toi {
     Vec point;
 };
 
-/// Conservative advancement: at time t with gap d along the closest-point direction n, no point can close that
-/// gap faster than M = (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t (R: boundingRadius), so
-/// advancing by d / M never passes the contact. Stops when d < tolerance (m, > 0). After maxIterations without
-/// reaching it, returns a hit at the safe t reached (an early stop, never a miss); its gap, normal and point are
-/// then those of the last distance evaluation, one advancement before that t.
+PHYSIM_HOST_DEVICE inline Vec perp(Vec v) { return {-v.y, v.x}; }
+PHYSIM_HOST_DEVICE inline double maxOf(double a, double b) { return a < b ? b : a; }
+
+/// How far the points that bound a shape (a polygon's vertices, a circle's centre) lie from the body origin (m):
+/// what turning the body moves them by per radian. A circle turning about its own centre moves no boundary point
+/// outward, so its radius does not count.
+PHYSIM_HOST_DEVICE inline double turningReach(const Shape& s) {
+    return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
+}
+
+/// Smallest s > 0 where e + b s - k s^2 / 2 falls to 0, for e > 0 and any k (k < 0 curves up); INFINITY when it
+/// never does; 0 when e <= 0. Each branch is the cancellation-free form of the smaller root.
+PHYSIM_HOST_DEVICE inline double firstRoot(double e, double b, double k) {
+    if (!(e > 0.0)) return 0.0;
+    const double disc = b * b + 2.0 * k * e;
+    if (k > 0.0) return b < 0.0 ? 2.0 * e / (-b + ::sqrt(disc)) : (b + ::sqrt(disc)) / k;
+    if (b < 0.0 && disc >= 0.0) return 2.0 * e / (-b + ::sqrt(disc));
+    return INFINITY;
+}
+
+/// A safe advance for one gap g along a separating line: how long g - target stays positive, from its value
+/// e = g - target > 0, slope b and curvature c now (per unit t), and bounds k on |g''| and j on |g'''| over the
+/// interval. Everywhere g - target >= e + b s - k s^2 / 2, whose first root s0 is safe; up to S, g'' >= c - j S, so
+/// g - target >= e + b s + (c - j S) s^2 / 2 there, which is tighter when the gap curves less than k allows (a
+/// corner gliding along a face). Tried with S = 2 s0.
+PHYSIM_HOST_DEVICE inline double gapAdvance(double e, double b, double c, double k, double j) {
+    const double safe = firstRoot(e, b, k);
+    const double reach = 2.0 * safe;
+    if (!(reach < INFINITY)) return safe;
+    return maxOf(safe, minOf(reach, firstRoot(e, b, j * reach - c)));
+}
+
+/// min(current, gapAdvance(...)), without its square roots when the bound of the second derivative alone already
+/// keeps the gap above target until `current`.
+PHYSIM_HOST_DEVICE inline double shorterAdvance(double current, double e, double b, double c, double k, double j) {
+    if (current < INFINITY && e + (b - 0.5 * k * current) * current >= 0.0) return current;
+    return minOf(current, gapAdvance(e, b, c, k, j));
+}
+
+/// What the advancement's bounds need of a pair's motion; the same at every step.
+struct PairRates {
+    Vec velocityA, velocityB;  ///< m per unit t
+    double spinA, spinB;       ///< rad per unit t
+    double reachA, reachB;     ///< m, turningReach
+    double speed;              ///< m per unit t, |velocityB - velocityA|
+    double apart;              ///< m, the origins' largest distance over the motion (at t = 0 or 1: they move on lines)
+};
+
+PHYSIM_HOST_DEVICE inline PairRates pairRates(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb) {
+    const Vec va = ma.p1 - ma.p0, vb = mb.p1 - mb.p0;
+    return {va,
+            vb,
+            ma.a1 - ma.a0,
+            mb.a1 - mb.a0,
+            turningReach(a),
+            turningReach(b),
+            ::sqrt(lengthSquared(vb - va)),
+            maxOf(::sqrt(lengthSquared(mb.p0 - ma.p0)), ::sqrt(lengthSquared(mb.p1 - ma.p1)))};
+}
+
+/// Velocity (m per unit t) of the material point at world point p of a body whose origin is at `origin`.
+PHYSIM_HOST_DEVICE inline Vec pointVelocity(Vec velocity, double spin, Vec origin, Vec p) {
+    return velocity + spin * perp(p - origin);
+}
+
+/// How long (in t) the shapes certainly stay more than `target` apart, given that at the current time they are
+/// d.distance > target apart along the closest-point normal n; any advance of at least `remaining` (the rest of
+/// the motion) is as good as another. Every bound follows a separating line carried along with the motion: the gap
+/// across such a line never exceeds the distance, so while it stays above target nothing touches.
+///   - First order (classic conservative advancement; best for long advances): the line fixed in the world, where
+///     no point closes the gap faster than (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit t.
+///   - Second order, when something turns: the line turning with a (a's extent along it then fixed; best for a
+///     face of a against b), and turning with b. The gap is then a minimum over the other shape's bounding points
+///     of smooth functions of time, each advanced by gapAdvance.
+/// Derivative bounds (w: turn per unit t, V = motion_b - motion_a, D = c_b - c_a between the origins, whose length
+/// is largest at an end of the interval as they move on lines, r: a point's offset from its origin). Seen from a,
+/// a point of b is at Rot(-w_a t) D(t) + Rot((w_b - w_a) t) r (up to constant rotations), so
+///   g'' = n . (-w_a^2 D - 2 w_a perp(V) - (w_b - w_a)^2 r),   |g''| <= 2 |w_a| |V| + w_a^2 |D| + (w_b - w_a)^2 |r|,
+///   |g'''| <= |w_a|^3 |D| + 3 w_a^2 |V| + |w_b - w_a|^3 |r|.
+PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb,
+                                             const PairRates& m, const Distance& d, double target, double remaining) {
+    const Vec n = d.normal;
+    const Vec v = m.velocityB - m.velocityA;
+    const double wa = m.spinA, wb = m.spinB;
+
+    const double closing = -dot(v, n) + ::fabs(wa) * m.reachA + ::fabs(wb) * m.reachB;
+    double best = closing > 0.0 ? (d.distance - target) / closing : INFINITY;
+    // Without turning, both second-order bounds are this one.
+    if (best >= remaining || (wa == 0.0 && wb == 0.0)) return best;
+    const double dw = wb - wa, wa2 = wa * wa, wb2 = wb * wb, dw2 = dw * dw;
+
+    // Turning with a: each bounding point of b against a's extent along n (measured from a's origin).
+    double extentA = -INFINITY;
+    for (int i = 0; i < a.count; ++i) extentA = maxOf(extentA, dot(n, xa.q.apply(a.vertices[i])));
+    extentA += a.radius;
+    const double kA = 2.0 * ::fabs(wa) * m.speed + wa2 * m.apart + dw2 * m.reachB;
+    const double jA = ::fabs(wa) * wa2 * m.apart + 3.0 * wa2 * m.speed + ::fabs(dw) * dw2 * m.reachB;
+    const double cA = dot(n, -wa2 * (xb.p - xa.p) - (2.0 * wa) * perp(v));
+    double frame = INFINITY;
+    for (int j = 0; j < b.count && frame > best; ++j) {
+        const Vec q = xb.apply(b.vertices[j]);
+        const double e = dot(n, q - xa.p) - b.radius - extentA - target;
+        const double c = cA - dw2 * dot(n, q - xb.p);
+        const Vec relative = pointVelocity(m.velocityB, wb, xb.p, q) - pointVelocity(m.velocityA, wa, xa.p, q);
+        frame = shorterAdvance(frame, e, dot(n, relative), c, kA, jA);
+    }
+    best = maxOf(best, frame);
+    if (best >= remaining) return best;
+
+    // Turning with b: each bounding point of a against b's extent along n; the gap is that extent minus the
+    // point's height, so the roles swap and the signs of its derivatives flip.
+    double extentB = INFINITY;
+    for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, xb.q.apply(b.vertices[j])));
+    extentB -= b.radius;
+    const double kB = 2.0 * ::fabs(wb) * m.speed + wb2 * m.apart + dw2 * m.reachA;
+    const double jB = ::fabs(wb) * wb2 * m.apart + 3.0 * wb2 * m.speed + ::fabs(dw) * dw2 * m.reachA;
+    const double cB = dot(n, -wb2 * (xb.p - xa.p) - (2.0 * wb) * perp(v));
+    frame = INFINITY;
+    for (int i = 0; i < a.count && frame > best; ++i) {
+        const Vec p = xa.apply(a.vertices[i]);
+        const double e = extentB - dot(n, p - xb.p) - a.radius - target;
+        const double c = cB + dw2 * dot(n, p - xa.p);
+        const Vec relative = pointVelocity(m.velocityB, wb, xb.p, p) - pointVelocity(m.velocityA, wa, xa.p, p);
+        frame = shorterAdvance(frame, e, dot(n, relative), c, kB, jB);
+    }
+    return maxOf(best, frame);
+}
+
+/// Closest the origins come (m) when their separation moves linearly from d0 (t = 0) by v over t in [0, 1].
+PHYSIM_HOST_DEVICE inline double closestApproach(Vec d0, Vec v) {
+    const double vv = lengthSquared(v);
+    const double t = vv > 0.0 ? minOf(1.0, maxOf(0.0, -dot(d0, v) / vv)) : 0.0;
+    return ::sqrt(lengthSquared(d0 + t * v));
+}
+
+/// Time of impact by conservative advancement. First, without any distance evaluation (iterations 0): every point
+/// of a shape stays within its bounding radius of its origin, so origins that never come within the two radii
+/// plus the tolerance prove the pair Separated whatever the turning (most pairs of a crowd whose swept boxes
+/// meet pass each other far apart in time). Then from t = 0, evaluate the distance; below the tolerance (m, > 0) it
+/// is the contact (Touching at t = 0, else Hit); otherwise advance t by safeAdvance, aiming at half the tolerance so
+/// that rounding cannot carry the pose into overlap (the last advance ends with a gap in [tolerance / 2,
+/// tolerance) when the bounds are tight). Separated when the advance reaches t = 1. The shapes are never closer
+/// than tolerance / 2 at any time before the t returned. Failed after maxIterations distance evaluations without
+/// either: t is then how far the shapes were proven apart.
 PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, const Shape& b, const Motion& mb,
                                            double tolerance, int maxIterations) {
-    const Vec relativeMotion = (ma.p1 - ma.p0) - (mb.p1 - mb.p0);  // m per unit t
-    const double turning = ::fabs(ma.a1 - ma.a0) * a.boundingRadius + ::fabs(mb.a1 - mb.a0) * b.boundingRadius;
     Toi r{kSeparated, 0, 1.0, 0.0, {0.0, 0.0}, {0.0, 0.0}};
+    const double target = 0.5 * tolerance;
+    const PairRates rates = pairRates(a, ma, b, mb);
+    if (closestApproach(mb.p0 - ma.p0, rates.velocityB - rates.velocityA) >
+        a.boundingRadius + b.boundingRadius + tolerance)
+        return r;
     double t = 0.0;
-    Distance d = noDistance();
     for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
-        d = shapeDistance(a, ma.at(t), b, mb.at(t));
+        const Xf xa = ma.at(t), xb = mb.at(t);
+        const Distance d = shapeDistance(a, xa, b, xb);
         if (d.distance < tolerance) {
             r.state = t == 0.0 ? kTouching : kHit;
             r.t = t;
@@ -237,22 +381,14 @@ PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, con
             r.point = 0.5 * (d.pointA + d.pointB);
             return r;
         }
-        // The gap along the fixed axis d.normal bounds the distance from below and shrinks at most this fast.
-        const double closing = dot(relativeMotion, d.normal) + turning;
-        if (!(closing > 0.0)) break;  // the gap along this axis never shrinks: no contact
-        // Aim half a tolerance short of contact, so rounding cannot carry the pose into overlap and the loop ends
-        // with a gap in [tolerance / 2, tolerance).
-        t += (d.distance - 0.5 * tolerance) / closing;
-        if (t >= 1.0) break;
+        const double step = safeAdvance(a, xa, b, xb, rates, d, target, 1.0 - t);
+        if (step >= 1.0 - t) return r;  // apart until the end
+        if (!(step >= 0.0)) break;      // NaN: only from input so large that the bounds overflow; nothing proven
+        t += step;
     }
-    if (r.iterations > maxIterations) {  // not converged: t is still a safe (early) contact time
-        r.iterations = maxIterations;
-        r.state = kHit;
-        r.t = t;
-        r.gap = d.distance;
-        r.normal = d.normal;
-        r.point = 0.5 * (d.pointA + d.pointB);
-    }
+    if (r.iterations > maxIterations) r.iterations = maxIterations;
+    r.state = kFailed;
+    r.t = t;
     return r;
 }
 

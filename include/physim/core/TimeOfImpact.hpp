@@ -60,23 +60,27 @@ struct DistanceOutput {
 DistanceOutput shapeDistance(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb);
 
 enum class ToiState {
-    Separated,  ///< no contact during the motion
+    Separated,  ///< no contact during the motion (exact: the shapes stay more than tolerance / 2 apart)
     Hit,        ///< first contact at t
-    Touching    ///< already touching at t = 0 (within the tolerance, or overlapping for the sampled method)
+    Touching,   ///< already touching at t = 0 (within the tolerance, or overlapping for the sampled method)
+    Failed      ///< exact method only: neither a contact nor its absence proven within maxIterations; not a hit
 };
 
 struct ToiResult {
     ToiState state = ToiState::Separated;
-    double t = 1.0;      ///< fraction of the motion; 1 when separated
+    double t = 1.0;      ///< fraction of the motion; 1 when separated; when failed, how far they were proven apart
     int iterations = 0;  ///< distance (exact) or narrow-phase (sampled) evaluations
 };
 
-/// Exact time of impact by conservative advancement: at time t with gap d along the closest-point direction n,
-/// no point can close that gap faster than M = (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b per unit
-/// t (R: boundingRadius), so advancing by d / M never passes the contact. Stops when d < tolerance (m, > 0).
-/// Rotation during the motion is honoured through the R terms. Never misses a contact the sampled method finds
-/// (it only stops before it). After maxIterations without reaching the tolerance it returns Hit at the safe t
-/// reached (a conservative early stop, not a miss).
+/// Exact time of impact by conservative advancement (docs/ccd.md): from t = 0, measure the distance and advance
+/// t by as much as provably keeps the shapes more than tolerance / 2 apart, until the distance is below the
+/// tolerance (m, > 0: Hit at that t, or Touching at t = 0) or t reaches 1 (Separated). The advance takes the best of
+/// several bounds: the classic one (no point closes the gap along the closest-point normal faster than
+/// (motion_a - motion_b) . n + |turn_a| R_a + |turn_b| R_b), and second-order ones that follow separating lines
+/// turning with a and with b, which converge on grazing, fast-spinning pairs. Never reports a
+/// time past the first contact (up to rounding), and never Separated for shapes that come closer than
+/// tolerance / 2. Failed when maxIterations distance evaluations settle neither: callers treat it as no impact
+/// found (the World's discrete contacts then see the pair).
 ToiResult timeOfImpact(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb,
                        double tolerance = kToiTolerance, int maxIterations = 100);
 

@@ -83,7 +83,8 @@ public:
     bool checkDiscreteCollision(const Vec2& position, const RigidBody& other) const;
     /// The paper's checkContinuousCollision: moving from where it is to `position` (m, same angle), the first
     /// position where this body touches `other`, found by this body's method (SAMPLED with its precision, or
-    /// EXACT; a DISCRETE body uses EXACT here); nullopt when it passes clear.
+    /// EXACT; a DISCRETE body uses EXACT here); nullopt when it passes clear (or when EXACT can prove neither,
+    /// ToiState::Failed).
     std::optional<Vec2> checkContinuousCollision(const Vec2& position, const RigidBody& other) const;
 
     /// The world body, once the entity has been added to a simulation; null before.
