@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
 # Installs everything physim needs on a Debian machine. Idempotent: a second run only checks.
-#   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML, GoogleTest, Google Benchmark, nlohmann-json, Xvfb
+#   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML, GoogleTest, Google Benchmark, nlohmann-json, Xvfb,
+#     Box2D 2.4.1 (the peer engine bench/peers measures against)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtbb-dev
+  libeigen3-dev libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtbb-dev libbox2d-dev
   xvfb xauth libgl1-mesa-dri fonts-dejavu-core libx11-dev
   python3 python3-venv
 )

@@ -28,16 +28,7 @@ double reach(const BodyData& A, const BodyData& B, double dt) {
 }  // namespace
 
 bool WorldImpl::contactExists(std::uint32_t a, std::uint32_t b) const {
-    // Walk the shorter of the two bodies' contact lists.
-    const bool fromA = bodies[a].contactCount <= bodies[b].contactCount;
-    const std::uint32_t self = fromA ? a : b, other = fromA ? b : a;
-    for (std::int32_t e = bodies[self].contactHead; e != kNullIndex;) {
-        const ContactData& c = contacts[static_cast<std::size_t>(e >> 1)];
-        const int side = e & 1;
-        if ((side == 0 ? c.b : c.a) == other) return true;
-        e = c.next[side];
-    }
-    return false;
+    return contactPairs.contains(PairSet::key(a, b));
 }
 
 void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
@@ -45,6 +36,7 @@ void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
     ContactData& c = contacts[index];
     c.a = a;
     c.b = b;
+    contactPairs.insert(PairSet::key(a, b));
     c.manifold.bodyA = BodyId{a, bodies[a].generation};
     c.manifold.bodyB = BodyId{b, bodies[b].generation};
     const std::uint32_t ends[2] = {a, b};
@@ -65,6 +57,7 @@ void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
 
 void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
     ContactData& c = contacts[index];
+    contactPairs.erase(PairSet::key(c.a, c.b));
     const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
     if (c.touching && dynamicPair) unlinkBodies(c.a, c.b);
     if (c.awakeIndex != kNullIndex) removeAwakeContact(index);

@@ -142,11 +142,16 @@ void ContinuousBatch::addPair(std::int32_t a, std::int32_t b) {
 }
 
 void ContinuousBatch::clear() {
-    for (auto* v : {&shapes.kind, &shapes.firstVertex, &shapes.vertexCount, &bodies.shape, &pairs.a, &pairs.b})
-        v->clear();
+    for (auto* v : {&shapes.kind, &shapes.firstVertex, &shapes.vertexCount}) v->clear();
     for (auto* v : {&shapes.radius, &shapes.boundingRadius, &shapes.vertexX, &shapes.vertexY, &shapes.normalX,
-                    &shapes.normalY, &bodies.x0, &bodies.y0, &bodies.angle0, &bodies.x1, &bodies.y1, &bodies.angle1})
+                    &shapes.normalY})
         v->clear();
+    clearBodiesAndPairs();
+}
+
+void ContinuousBatch::clearBodiesAndPairs() {
+    for (auto* v : {&bodies.shape, &pairs.a, &pairs.b}) v->clear();
+    for (auto* v : {&bodies.x0, &bodies.y0, &bodies.angle0, &bodies.x1, &bodies.y1, &bodies.angle1}) v->clear();
 }
 
 void ContinuousBatchResult::resize(std::size_t pairs) {

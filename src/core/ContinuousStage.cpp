@@ -65,7 +65,7 @@ void ContinuousStage::consider(Candidate& c, const ToiResult& r, const Geometry&
                                const Sweep& theirSweep, double slop) {
     if (r.state == ToiState::Hit) {
         c.t = std::min(c.t, r.t);
-    } else if (r.state == ToiState::Touching && c.t > 0.0) {
+    } else if (r.state == ToiState::Touching && c.continuous && c.t > 0.0) {
         c.t = std::min(c.t, deepening(mine, c.sweep, theirs, theirSweep, slop));
     }
 }
@@ -86,9 +86,29 @@ void ContinuousStage::run(WorldImpl& w) {
 
     // Exact pairs go to the batch (the CPU, or the GPU through the CUDA layer); the paper's sampled method is
     // solved here, one pair at a time.
-    batch_.clear();
+    // The batch's shape table is every body slot's shape, rebuilt only when bodies are created or destroyed: a GPU
+    // solver keeps it on the device while shapesRevision stays the same.
+    if (shapeTableRevision_ != w.shapeRevision) {
+        batch_.clear();
+        for (const BodyData& body : w.bodies) batch_.addShape(body.shape);
+        shapeTableRevision_ = w.shapeRevision;
+    } else {
+        batch_.clearBodiesAndPairs();
+    }
+    batch_.shapesRevision = w.shapeRevision;
+    batchBody_.assign(w.bodies.size(), -1);
+    auto inBatch = [&](std::uint32_t slot, const Sweep& sweep) {
+        std::int32_t& index = batchBody_[slot];
+        if (index < 0) index = batch_.addBody(static_cast<std::int32_t>(slot), sweep);
+        return index;
+    };
     pairCandidate_.clear();
     pairPartner_.clear();
+    pairPartnerCandidate_.clear();
+    candidateOf_.assign(w.bodies.size(), -1);
+    for (std::uint32_t k = 0; k < candidates_.size(); ++k)
+        if (w.bodies[w.awake[candidates_[k].awakeIndex]].detection == CollisionDetection::ContinuousExact)
+            candidateOf_[w.awake[candidates_[k].awakeIndex]] = static_cast<std::int32_t>(k);
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
@@ -99,7 +119,6 @@ void ContinuousStage::run(WorldImpl& w) {
             return true;
         });
         std::sort(found_.begin(), found_.end());  // the trees' order depends on history; results must not
-        std::int32_t mine = -1;
         for (const std::uint32_t other : found_) {
             const BodyData& o = w.bodies[other];
             const bool still = !o.awake();
@@ -109,10 +128,13 @@ void ContinuousStage::run(WorldImpl& w) {
                 consider(c, sampledTimeOfImpact(b.shape, c.sweep, o.shape, theirs, b.precision), b.shape, o.shape,
                          theirs, slop);
             } else {
-                if (mine < 0) mine = batch_.addBody(batch_.addShape(b.shape), c.sweep);
-                batch_.addPair(mine, batch_.addBody(batch_.addShape(o.shape), theirs));
+                // Two exact candidates: one test serves both, asked by the one in the lower slot.
+                const std::int32_t partner = candidateOf_[other];
+                if (partner >= 0 && other < slot) continue;
+                batch_.addPair(inBatch(slot, c.sweep), inBatch(other, theirs));
                 pairCandidate_.push_back(k);
                 pairPartner_.push_back(other);
+                pairPartnerCandidate_.push_back(partner);
             }
         }
     }
@@ -121,9 +143,14 @@ void ContinuousStage::run(WorldImpl& w) {
         else solveOnCpu(batch_, batchResult_, 1);
         for (std::size_t p = 0; p < pairCandidate_.size(); ++p) {
             Candidate& c = candidates_[pairCandidate_[p]];
+            const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
             const BodyData& o = w.bodies[pairPartner_[p]];
-            consider(c, batchResult_.toi(p), w.bodies[w.awake[c.awakeIndex]].shape, o.shape,
-                     sweepOf(w, pairPartner_[p]), slop);
+            const ToiResult r = batchResult_.toi(p);
+            consider(c, r, mine.shape, o.shape, sweepOf(w, pairPartner_[p]), slop);
+            if (pairPartnerCandidate_[p] >= 0) {
+                Candidate& d = candidates_[static_cast<std::size_t>(pairPartnerCandidate_[p])];
+                consider(d, r, o.shape, mine.shape, c.sweep, slop);
+            }
         }
     }
 

@@ -43,7 +43,8 @@ private:
     };
     Sweep sweepOf(const WorldImpl& w, std::uint32_t slot) const;
     // Folds one pair's result into the candidate's earliest impact. Touching at the start is the contacts'
-    // business unless turning or approaching carries the pair more than the slop into each other (deepening).
+    // business, unless a continuous body's turning or approaching carries the pair more than the slop into each
+    // other (deepening); a fast discrete body only ever stops at a hit.
     static void consider(Candidate& c, const ToiResult& r, const Geometry& mine, const Geometry& theirs,
                          const Sweep& theirSweep, double slop);
     // First sample time (fraction of the sweeps) before the shapes overlap by more than `slop` (m); 1 if never.
@@ -55,6 +56,10 @@ private:
     ContinuousBatchResult batchResult_;
     std::vector<std::uint32_t> pairCandidate_;
     std::vector<std::uint32_t> pairPartner_;
+    std::vector<std::int32_t> pairPartnerCandidate_;  // per batch pair: the partner's candidate index, or -1
+    std::vector<std::int32_t> candidateOf_;           // per body slot: its exact candidate's index, or -1
+    std::vector<std::int32_t> batchBody_;      // per body slot: its index in the batch this run, or -1
+    std::uint64_t shapeTableRevision_ = 0;     // the World's shapeRevision the batch's shape table was built for
     std::shared_ptr<ContinuousSolver> solver_;
     std::size_t impacts_ = 0;
 };

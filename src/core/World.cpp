@@ -126,12 +126,21 @@ void WorldImpl::wakeOverlapping(const Aabb& box) {
 
 Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
     if (b.type == BodyType::Static) return b.aabb.fattened(margin);
-    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches.
-    const Vec2 travel = b.v * dt;
+    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
+    // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
+    // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
+    // world would pair it with everything on the way.
+    Vec2 travel = b.v * dt;
+    double turn = std::abs(b.w) * dt * b.extent;
+    if (b.detection == CollisionDetection::Discrete) {
+        const double length = travel.norm();
+        if (length > b.extent) travel *= b.extent / length;
+        turn = std::min(turn, b.extent);
+    }
     Aabb box = b.aabb;
     box.lower = box.lower.cwiseMin(b.aabb.lower + travel);
     box.upper = box.upper.cwiseMax(b.aabb.upper + travel);
-    return box.fattened(margin + std::abs(b.w) * dt * b.extent);
+    return box.fattened(margin + turn);
 }
 
 // --- World -------------------------------------------------------------------------------------------
@@ -206,6 +215,7 @@ BodyId World::createBody(const BodyDef& def) {
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
 
     w.touched.push_back(index);
+    ++w.shapeRevision;
     ++w.liveCount;
     if (b.type == BodyType::Dynamic) ++w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) ++w.continuousCount;
@@ -234,6 +244,7 @@ void World::destroyBody(BodyId id) {
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) --w.continuousCount;
     b.alive = false;
+    ++w.shapeRevision;
     w.freeBodies.push_back(index);
     w.touchingValid = false;
 }

@@ -18,6 +18,7 @@
 #include "Executor.hpp"
 #include "IslandData.hpp"
 #include "JointData.hpp"
+#include "PairSet.hpp"
 #include "SolverData.hpp"
 
 #include "physim/core/Contact.hpp"
@@ -46,12 +47,14 @@ struct WorldImpl {
     std::size_t liveCount = 0;
     std::size_t dynamicCount = 0;
     std::size_t continuousCount = 0;  // bodies whose detection is not Discrete
+    std::uint64_t shapeRevision = 1;  // changes whenever a body slot's shape may have (create, destroy)
     std::vector<std::uint32_t> awake;   // awake movable bodies (dynamic and kinematic): the solver's bodies
 
     // Contacts: one slot per overlapping pair of proxies.
     std::vector<ContactData> contacts;
     std::vector<std::uint32_t> freeContacts;
     std::vector<std::uint32_t> awakeContacts;  // contacts with an awake body: the narrow phase's work list
+    PairSet contactPairs;                      // (a, b) of every contact, a < b
 
     // Joints and islands.
     std::vector<JointData> joints;

@@ -53,6 +53,8 @@ struct ContinuousBatch {
     void addPair(std::int32_t a, std::int32_t b);
     /// Empties every array and keeps their capacity, so a batch refilled every step does not allocate.
     void clear();
+    /// Empties the bodies and pairs only: the next batch keeps the same shapes (see shapesRevision).
+    void clearBodiesAndPairs();
     std::size_t pairCount() const { return pairs.a.size(); }
 };
 

@@ -1,0 +1,85 @@
+// Box2D 2.4 (Debian's libbox2d-dev) as a peer: one world per run, Box2D's usual 8 velocity and 3 position
+// iterations, sleeping off, its other settings (continuous collision against static bodies included) left
+// at their defaults as a user would.
+//
+// Box2D 2.4 rounds every polygon by a skin of b2_polygonRadius (1 cm): a box made with SetAsBox(h, h)
+// collides as a box of half-size h + 1 cm. The scenes' boxes touch their neighbours, so such boxes would
+// start 2 cm into each other and push the pyramids apart. The polygon is therefore made one skin smaller,
+// so the outline that collides is the scene's box, and its density is raised to keep the scene's mass
+// (Box2D 2.4 computes a polygon's mass without its skin).
+
+#include "Engine.hpp"
+
+#include <box2d/box2d.h>
+
+namespace peers {
+
+namespace {
+
+constexpr int kVelocityIterations = 8;
+constexpr int kPositionIterations = 3;
+
+class Box2dRun final : public EngineRun {
+public:
+    explicit Box2dRun(const Scene& scene) : world_(b2Vec2(0.0f, static_cast<float>(kGravity))) {
+        world_.SetAllowSleeping(false);
+        for (const ShapeSpec& s : scene.statics) add(s, b2_staticBody);
+        bodies_.reserve(scene.dynamics.size());
+        for (const ShapeSpec& s : scene.dynamics) bodies_.push_back(add(s, b2_dynamicBody));
+    }
+
+    void step() override {
+        world_.Step(static_cast<float>(kTimeStep), kVelocityIterations, kPositionIterations);
+    }
+
+    Point position(std::size_t index) const override {
+        const b2Vec2& p = bodies_[index]->GetPosition();
+        return {p.x, p.y};
+    }
+
+    std::vector<std::pair<std::string, double>> lastStepStages() const override {
+        const b2Profile& p = world_.GetProfile();  // ms; solve includes the broad phase and the solver parts
+        const double solveOther = p.solve - p.solveInit - p.solveVelocity - p.solvePosition - p.broadphase;
+        return {{"narrow phase", 1e-3 * p.collide},        {"solve init", 1e-3 * p.solveInit},
+                {"solve velocity", 1e-3 * p.solveVelocity}, {"solve position", 1e-3 * p.solvePosition},
+                {"broad phase", 1e-3 * p.broadphase},      {"islands, integrate", 1e-3 * solveOther},
+                {"continuous", 1e-3 * p.solveTOI}};
+    }
+
+private:
+    b2Body* add(const ShapeSpec& s, b2BodyType type) {
+        b2BodyDef bd;
+        bd.type = type;
+        bd.position.Set(static_cast<float>(s.x), static_cast<float>(s.y));
+        b2Body* body = world_.CreateBody(&bd);  // owned by world_
+        b2PolygonShape box;
+        b2CircleShape circle;
+        b2FixtureDef fd;
+        double density = kDensity;
+        if (s.isCircle()) {
+            circle.m_radius = static_cast<float>(s.radius);
+            fd.shape = &circle;
+        } else {
+            const double hx = s.halfWidth - b2_polygonRadius, hy = s.halfHeight - b2_polygonRadius;
+            box.SetAsBox(static_cast<float>(hx), static_cast<float>(hy));
+            fd.shape = &box;
+            density *= (s.halfWidth * s.halfHeight) / (hx * hy);
+        }
+        fd.density = static_cast<float>(density);
+        fd.friction = static_cast<float>(kFriction);
+        body->CreateFixture(&fd);
+        return body;
+    }
+
+    b2World world_;
+    std::vector<b2Body*> bodies_;  // not owning: world_ frees them
+};
+
+}  // namespace
+
+Peers peerEngines() {
+    // The package's version: Box2D 2.4.1's own b2_version still says 2.4.0.
+    return {{Engine{"box2d-" PEERS_BOX2D_VERSION, 1, [](const Scene& s) { return std::make_unique<Box2dRun>(s); }}}, ""};
+}
+
+}  // namespace peers

@@ -1,0 +1,47 @@
+#pragma once
+// An engine as peer_bench sees it: something that builds a Scene, steps it at kTimeStep and reports where each
+// dynamic body is. physim and each peer engine implement it in their own file.
+
+#include "Scenes.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace peers {
+
+struct Point {
+    double x = 0.0;
+    double y = 0.0;
+};
+
+/// One engine's world holding one scene.
+class EngineRun {
+public:
+    virtual ~EngineRun() = default;
+    virtual void step() = 0;
+    /// Centre of scene.dynamics[index], m.
+    virtual Point position(std::size_t index) const = 0;
+    /// Seconds spent in each named stage of the last step; empty when the engine does not say.
+    virtual std::vector<std::pair<std::string, double>> lastStepStages() const { return {}; }
+};
+
+struct Engine {
+    std::string name;  ///< "physim", "box2d-2.4.1", ...
+    int threads = 1;   ///< threads the engine was asked to use
+    std::function<std::unique_ptr<EngineRun>(const Scene&)> start;
+};
+
+/// physim with one thread, and (when the machine has more than one) with every hardware thread.
+std::vector<Engine> physimEngines();
+
+/// The engines physim is measured against in this build. `missing` says why there are none.
+struct Peers {
+    std::vector<Engine> engines;
+    std::string missing;
+};
+Peers peerEngines();
+
+}  // namespace peers

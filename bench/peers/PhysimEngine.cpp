@@ -1,0 +1,76 @@
+#include "Engine.hpp"
+
+#include "physim/core/World.hpp"
+
+#include <thread>
+
+namespace peers {
+
+namespace {
+
+class PhysimRun final : public EngineRun {
+public:
+    PhysimRun(const Scene& scene, int threads) : world_(settings(threads)) {
+        for (const ShapeSpec& s : scene.statics) add(s, physim::BodyType::Static);
+        ids_.reserve(scene.dynamics.size());
+        for (const ShapeSpec& s : scene.dynamics) ids_.push_back(add(s, physim::BodyType::Dynamic));
+    }
+
+    void step() override { world_.step(kTimeStep); }
+
+    Point position(std::size_t index) const override {
+        const physim::Vec2 p = world_.position(ids_[index]);
+        return {p.x(), p.y()};
+    }
+
+    std::vector<std::pair<std::string, double>> lastStepStages() const override {
+        std::vector<std::pair<std::string, double>> out;
+        const physim::StepProfile& p = world_.profile();
+        for (std::size_t i = 0; i < physim::StepProfile::stageCount; ++i) {
+            const auto stage = static_cast<physim::Stage>(i);
+            out.emplace_back(std::string(physim::stageName(stage)), p.secondsOf(stage));
+        }
+        return out;
+    }
+
+private:
+    static physim::WorldSettings settings(int threads) {
+        physim::WorldSettings s;  // substeps and iterations stay at physim's defaults
+        s.gravity = {0.0, kGravity};
+        s.enableSleep = false;
+        s.threads = threads;
+        return s;
+    }
+
+    physim::BodyId add(const ShapeSpec& s, physim::BodyType type) {
+        physim::BodyDef d;
+        d.type = type;
+        d.position = {s.x, s.y};
+        if (s.isCircle())
+            d.shape = physim::makeCircle(s.radius);
+        else
+            d.shape = physim::makeBox(s.halfWidth, s.halfHeight);
+        d.density = kDensity;
+        d.staticFriction = kFriction;
+        d.dynamicFriction = kFriction;
+        return world_.createBody(d);
+    }
+
+    physim::World world_;
+    std::vector<physim::BodyId> ids_;
+};
+
+Engine physim(int threads, int reported) {
+    return {"physim", reported, [threads](const Scene& s) { return std::make_unique<PhysimRun>(s, threads); }};
+}
+
+}  // namespace
+
+std::vector<Engine> physimEngines() {
+    std::vector<Engine> out{physim(1, 1)};
+    const int all = static_cast<int>(std::thread::hardware_concurrency());
+    if (all > 1) out.push_back(physim(0, all));  // 0: every hardware thread
+    return out;
+}
+
+}  // namespace peers

@@ -1,0 +1,61 @@
+#pragma once
+// The scenes peer_bench runs, as plain data that each engine turns into its own bodies, so every engine is
+// handed the same bodies at the same places. Units: m, kg/m^2, s.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace peers {
+
+// Shared by every scene and engine (docs/performance.md, section "Peers").
+constexpr double kGravity = -10.0;     // m/s^2, along y
+constexpr double kTimeStep = 1.0 / 60.0;
+constexpr double kFriction = 0.6;      // physim's static and dynamic coefficients both, Box2D's one
+constexpr double kDensity = 1.0;
+
+/// An axis-aligned box (halfWidth, halfHeight > 0) or, with radius > 0, a circle, centred at (x, y).
+struct ShapeSpec {
+    double x = 0.0;
+    double y = 0.0;
+    double halfWidth = 0.0;
+    double halfHeight = 0.0;
+    double radius = 0.0;
+
+    bool isCircle() const { return radius > 0.0; }
+};
+
+struct Scene {
+    std::string name;
+    std::vector<ShapeSpec> statics;
+    std::vector<ShapeSpec> dynamics;
+    /// Indices into `dynamics` of the top box of each pyramid; empty for scenes without a stack, which then
+    /// report no drop, drift or sideways figures.
+    std::vector<std::size_t> tops;
+    /// Rows of base-10 pyramids: their step times enter the fit of step time against body count.
+    bool pyramidGrid = false;
+};
+
+/// The pyramid of base `base` (base * (base + 1) / 2 boxes of half-size 0.5) standing on the ground at
+/// height originY, centred on originX, without its ground.
+void addPyramid(Scene& scene, int base, double originX, double originY);
+
+/// `pyramid<N>` (large_pyramid is pyramid100): one pyramid on a static ground box of half-size (100, 1).
+Scene pyramidScene(const std::string& name, int base);
+/// 1000 circles of radius 0.25 dropped into a closed box.
+Scene circlesScene();
+/// `rows` rows of 20 base-10 pyramids (55 boxes each), each row on its own static ground box;
+/// many_pyramids is 19 rows: 20 900 boxes.
+Scene pyramidGridScene(const std::string& name, int rows);
+
+/// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids or
+/// pyramid_grid<R> (R in 1..100 rows). Throws std::invalid_argument naming an unknown one.
+Scene makeScene(const std::string& name);
+
+/// What `--scenes` accepts besides scene names: `all` (the default scenes and the scaling set), and
+/// `scaling`: grids of 1 100 to 20 900 boxes, for the fit of step time against body count.
+std::vector<std::string> expandSceneList(const std::vector<std::string>& names);
+std::vector<std::string> defaultScenes();
+std::vector<std::string> scalingScenes();
+
+}  // namespace peers
