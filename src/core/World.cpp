@@ -43,10 +43,10 @@ void requireDetection(CollisionDetection mode) {
 void validate(const BodyDef& def) {
     requireBodyType(def.type);
     requireDetection(def.collisionDetection);
-    requireFinite("body position", def.position);
+    requireWithin("body position", def.position, kMaxCoordinate);
     requireFinite("body angle", def.angle);
-    requireFinite("body velocity", def.velocity);
-    requireFinite("body angular velocity", def.angularVelocity);
+    requireWithin("body velocity", def.velocity, kMaxSpeed);
+    requireWithin("body angular velocity", def.angularVelocity, kMaxSpeed);
     if (def.type == BodyType::Dynamic) requirePositive("body density", def.density);
     else requireNonNegative("body density", def.density);
     requireInRange("body restitution", def.restitution, 0.0, 1.0);
@@ -302,7 +302,7 @@ double World::dynamicFriction(BodyId id) const { return at(id).dynamicFriction; 
 bool World::useGravity(BodyId id) const { return at(id).useGravity; }
 
 void World::setTransform(BodyId id, const Vec2& position, double angle) {
-    requireFinite("body position", position);
+    requireWithin("body position", position, kMaxCoordinate);
     requireFinite("body angle", angle);
     BodyData& b = wake(id, "setTransform");
     b.xf = {position, Rotation::fromAngle(angle)};
@@ -314,13 +314,13 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
 }
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
-    requireFinite("body velocity", velocity);
+    requireWithin("body velocity", velocity, kMaxSpeed);
     BodyData& b = wake(id, "setVelocity");
     if (b.movable()) b.v = velocity;
 }
 
 void World::setAngularVelocity(BodyId id, double angularVelocity) {
-    requireFinite("body angular velocity", angularVelocity);
+    requireWithin("body angular velocity", angularVelocity, kMaxSpeed);
     BodyData& b = wake(id, "setAngularVelocity");
     if (b.movable() && !b.fixedRotation) b.w = angularVelocity;
 }
@@ -434,7 +434,7 @@ void World::applyForce(BodyId id, const Vec2& force) {
 
 void World::applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint) {
     requireFinite("force", force);
-    requireFinite("force application point", worldPoint);
+    requireWithin("force application point", worldPoint, kMaxCoordinate);
     BodyData& b = wake(id, "applyForceAtPoint");
     b.force += force;
     b.torque += cross(worldPoint - b.center, force);
@@ -453,7 +453,7 @@ void World::applyLinearImpulse(BodyId id, const Vec2& impulse) {
 
 void World::applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint) {
     requireFinite("impulse", impulse);
-    requireFinite("impulse application point", worldPoint);
+    requireWithin("impulse application point", worldPoint, kMaxCoordinate);
     BodyData& b = wake(id, "applyLinearImpulseAtPoint");
     b.v += b.invMass * impulse;
     b.w += b.invInertia * cross(worldPoint - b.center, impulse);
@@ -500,9 +500,9 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     if (def.bodyA == def.bodyB) throw std::invalid_argument("physim: a distance joint needs two different bodies");
     if (A.type != BodyType::Dynamic && B.type != BodyType::Dynamic)
         throw std::invalid_argument("physim: a distance joint needs at least one dynamic body");
-    requireFinite("joint anchor A", def.localAnchorA);
-    requireFinite("joint anchor B", def.localAnchorB);
-    requireFinite("joint length", def.length);
+    requireWithin("joint anchor A", def.localAnchorA, kMaxCoordinate);
+    requireWithin("joint anchor B", def.localAnchorB, kMaxCoordinate);
+    requireWithin("joint length", def.length, kMaxCoordinate);
     double length = def.length;
     if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
     if (!(length > 1e-9))
@@ -528,8 +528,8 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
     const BodyData& B = at(def.body);
     impl_->requireNotStepping("createMouseJoint");
     if (B.type != BodyType::Dynamic) throw std::invalid_argument("physim: a mouse joint needs a dynamic body");
-    requireFinite("mouse joint target", def.target);
-    requireFinite("mouse joint anchor", def.localAnchor);
+    requireWithin("mouse joint target", def.target, kMaxCoordinate);
+    requireWithin("mouse joint anchor", def.localAnchor, kMaxCoordinate);
     requirePositive("mouse joint maxForce", def.maxForce);
     requirePositive("mouse joint hertz", def.hertz);
     requireNonNegative("mouse joint dampingRatio", def.dampingRatio);
@@ -550,7 +550,7 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
 }
 
 void World::setMouseJointTarget(JointId id, const Vec2& target) {
-    requireFinite("mouse joint target", target);
+    requireWithin("mouse joint target", target, kMaxCoordinate);
     const JointData& j = joint(id);
     impl_->requireNotStepping("setMouseJointTarget");
     if (j.kind != JointKind::Mouse) throw std::invalid_argument("physim: setMouseJointTarget needs a mouse joint");
