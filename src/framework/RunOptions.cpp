@@ -44,12 +44,13 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         } else if (a == "--seconds") {
             const std::string& text = value();
             const double s = parseNumber(a, text);
-            if (!(std::isfinite(s) && s >= 0.0)) throw UsageError("--seconds must be finite and >= 0, got " + text);
+            if (!(s >= 0.0 && s <= RunOptions::maxSeconds))
+                throw UsageError("--seconds must be in [0, 1e9] s, got " + text);
             o.seconds = s;
         } else if (a == "--hz") {
             const std::string& text = value();
             const double hz = parseNumber(a, text);
-            if (!(std::isfinite(hz) && hz > 0.0 && hz <= 10000.0))
+            if (!(std::isfinite(hz) && hz > 0.0 && hz <= RunOptions::maxHz))
                 throw UsageError("--hz must be in (0, 10000] Hz, got " + text);
             o.hz = hz;
         } else if (a == "--out") {

@@ -22,6 +22,10 @@ struct RunOptions {
     int height = 720;
 
     static constexpr double defaultHeadlessSeconds = 10.0;
+    /// Longest run --seconds accepts (about 32 years): at the highest --hz its step count still fits a 64-bit
+    /// integer exactly, so a run never silently does fewer steps than asked.
+    static constexpr double maxSeconds = 1e9;
+    static constexpr double maxHz = 10000.0;  ///< highest --hz
 };
 
 /// A command line that cannot be run; what() names the offending argument and value. Exit code 2.
