@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -59,10 +60,11 @@ void validate(const BodyDef& def) {
 // Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape; it turns about the shape's
 // centroid. Throws (naming the value) unless the mass and the inertia come out positive and finite.
 void assignMass(BodyData& b, double mass) {
-    requirePositive("body mass", mass);
+    requireInRange("body mass (kg)", mass, kMinMass, kMaxMass);
     const double density = mass / b.unitMass.area;
     const double inertia = density * b.unitMass.secondMoment;
-    requirePositive("body inertia (from the mass and shape)", inertia);
+    requireInRange("body inertia (kg m^2, from the mass and shape)", inertia, kMinInertia,
+                   std::numeric_limits<double>::max());
     b.mass = mass;
     b.density = density;
     b.invMass = 1.0 / mass;
@@ -183,6 +185,10 @@ BodyId World::createBody(const BodyDef& def) {
     validate(def);
     WorldImpl& w = *impl_;
     w.requireNotStepping("createBody");
+    BodyData massed;  // the mass is checked before a slot is taken, so a refused body leaves no trace
+    massed.unitMass = computeMassProperties(def.shape);
+    massed.fixedRotation = def.fixedRotation;
+    if (def.type == BodyType::Dynamic) assignMass(massed, def.density * massed.unitMass.area);
     const std::uint32_t index = takeSlot(w.bodies, w.freeBodies);
     BodyData& b = w.bodies[index];
     b.type = def.type;
@@ -207,7 +213,7 @@ BodyId World::createBody(const BodyDef& def) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
-    if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
+    if (def.type == BodyType::Dynamic) assignMass(b, massed.mass);
     b.aabb = computeAabb(b.shape, b.xf);
     b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
     w.addAwakeBody(index);
