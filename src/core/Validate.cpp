@@ -46,7 +46,8 @@ void requireInRange(std::string_view name, double value, double lo, double hi) {
 }
 
 void requireWithin(std::string_view name, double value, double limit) {
-    if (!(std::isfinite(value) && std::abs(value) <= limit)) fail(name, show(value), "finite, |value| <= " + show(limit));
+    if (!(std::isfinite(value) && std::abs(value) <= limit))
+        fail(name, show(value), "finite, |value| <= " + show(limit));
 }
 
 void requireWithin(std::string_view name, const Vec2& value, double limit) {

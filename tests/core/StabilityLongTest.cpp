@@ -63,7 +63,7 @@ TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShape) {
 }
 
 // Fails today: after 1 s the top box of the 100-box pyramid still moves 5.4 cm (criterion 5 cm): the stack's
-// soft contacts settle by about 7 cm in all at 120 Hz and ring for a few seconds. docs/stability.md, "Pyramids".
+// soft contacts settle by about 7 cm in all at 120 Hz and ring for a few seconds. docs/stability.md, Known limits.
 TEST(StabilityLong, DISABLED_PyramidWith100BoxBaseTopSettlesWithin5cm) {
     const PyramidRun r = runPyramid100();
     RecordProperty("top_drift_m", std::to_string(r.topDrift));
@@ -150,7 +150,7 @@ TEST(StabilityLong, MillionStepsOfABouncingPileStayFiniteAndGainNoEnergy) {
 
 // Fails today: with e = 1 and no friction under gravity the same 24 bodies gain energy without bound: from 1.7 J
 // to 300 J (of 253 J above the floor) in 10^5 steps; discs alone gain 119 J of 101 J in 10^6 steps, boxes alone
-// without gravity 17% in 4 x 10^4 steps. docs/stability.md, "Elastic bodies gain energy".
+// without gravity 17% in 4 x 10^4 steps. docs/stability.md, Known limits.
 TEST(StabilityLong, DISABLED_MillionStepsOfElasticBodiesUnderGravityGainNoEnergy) {
     const BouncingRun r = runBouncing(true, true, 1.0, 0.0);
     RecordProperty("energy_rise_fraction", std::to_string(r.rise / r.scale));

@@ -57,7 +57,7 @@ PyramidRun runPyramid(int base, int steps) {
     return r;
 }
 
-// The issue's criterion: after 1 s the top box drifts under 5 cm, and no box moves sideways more than 25 cm over
+// The criterion: after 1 s the top box drifts under 5 cm, and no box moves sideways more than 25 cm over
 // 500 steps. A pyramid of touching boxes has a static solution with no sideways force at all, so any sideways
 // motion is the solver's error; 25 cm is a quarter box, where a pyramid visibly starts to come apart.
 // (The 100-box base is in StabilityLongTest.cpp: 5050 boxes take minutes.)
@@ -118,10 +118,10 @@ double heavyOnLightSink(double ratio) {
     return 1.5 - lowest;
 }
 
-// Heavy-on-light stacks: the heavy box sinks less than 1 cm (issue #4's bound) at mass ratios 10 and 100. A soft
-// contact's static compression is its load over its effective mass times g / (2 pi f)^2: the ground contact
-// carries (1 + ratio) kg on a 1 kg box, the upper one ratio kg on a reduced mass of about 1 kg, so the sink grows
-// with the ratio: about 0.35 mm at 10, 3.5 mm at 100 (measured 0.4 and 4.5 mm with the landing transient).
+// Heavy-on-light stacks: the heavy box sinks less than 1 cm (the resting-contact bound) at mass ratios 10 and 100.
+// A soft contact's static compression is its load over its effective mass times g / (2 pi f)^2: the ground
+// contact carries (1 + ratio) kg on a 1 kg box, the upper one ratio kg on a reduced mass of about 1 kg, so the sink
+// grows with the ratio: about 0.35 mm at 10, 3.5 mm at 100 (measured 0.4 and 4.5 mm with the landing transient).
 TEST(Stability, HeavyOnLightStacksHoldAtMassRatios10And100) {
     for (const double ratio : {10.0, 100.0}) {
         const double sink = heavyOnLightSink(ratio);
@@ -131,7 +131,7 @@ TEST(Stability, HeavyOnLightStacksHoldAtMassRatios10And100) {
 }
 
 // Fails today: at mass ratio 1000 the same stack sinks 5.4 cm (3.5 cm at rest), as the soft contacts' load over
-// effective mass predicts (2 x 1000 x g / (2 pi 120 Hz)^2 = 3.5 cm). docs/stability.md, "Mass ratios".
+// effective mass predicts (2 x 1000 x g / (2 pi 120 Hz)^2 = 3.5 cm). docs/stability.md, Known limits.
 TEST(Stability, DISABLED_HeavyOnLightStackHoldsAtMassRatio1000) {
     const double sink = heavyOnLightSink(1000.0);
     RecordProperty("ratio1000_sink_m", std::to_string(sink));
@@ -179,8 +179,8 @@ TEST(Stability, BigBoxDroppedOnTwoSmallOnesComesToRest) {
 }
 
 // Fails today: the same drop with the big box 32 times each small one's mass (all density 1) throws the small boxes
-// 0.25 m into the air from a 1 m drop (0.53 m from 2 m), restitution 0. docs/stability.md, "Impacts at mass
-// ratios", traces it substep by substep.
+// 0.25 m into the air from a 1 m drop (0.53 m from 2 m), restitution 0. docs/stability.md, Known limits,
+// "Heavy box dropped on light ones".
 TEST(Stability, DISABLED_HeavyBigBoxDroppedOnTwoSmallOnesDoesNotBounce) {
     const DropRun r = dropBigBox(1.0, 1.0);
     RecordProperty("rise_m", std::to_string(r.rise));
@@ -222,7 +222,8 @@ double archMotion(int blocks, double inner, double outer, double mu) {
     double worst = 0.0;
     for (int s = 0; s < 10 * 60; ++s) {
         world.step(kDt);
-        for (std::size_t k = 0; k < ids.size(); ++k) worst = std::max(worst, (world.position(ids[k]) - start[k]).norm());
+        for (std::size_t k = 0; k < ids.size(); ++k)
+            worst = std::max(worst, (world.position(ids[k]) - start[k]).norm());
     }
     return worst;
 }
@@ -286,7 +287,8 @@ double cardHouseMotion(double mu) {
     double worst = 0.0;
     for (int s = 0; s < 10 * 60; ++s) {
         world.step(kDt);
-        for (std::size_t k = 0; k < cards.size(); ++k) worst = std::max(worst, (world.position(cards[k]) - start[k]).norm());
+        for (std::size_t k = 0; k < cards.size(); ++k)
+            worst = std::max(worst, (world.position(cards[k]) - start[k]).norm());
     }
     return worst;
 }
@@ -429,8 +431,8 @@ TEST(Stability, DeeplyOverlappingBodiesSeparateWithBoundedSpeed) {
 }
 
 // Fails today: a ten-row pyramid spawned 10% into itself launches its top box at 17 m/s in the first step (the
-// scene's energy goes from 1.7 kJ to 4.0 kJ), although 3 m/s would separate every pair. docs/stability.md,
-// "Overlap recovery".
+// scene's energy goes from 1.7 kJ to 4.0 kJ), although 3 m/s would separate every pair. docs/stability.md, Known
+// limits, "Tall overlapping spawn".
 TEST(Stability, DISABLED_TallOverlappingPyramidSeparatesAtThePushSpeed) {
     World world(awakeSettings());
     addGround(world);

@@ -149,7 +149,8 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
                 d.staticFriction = in.maybeBad(0.0, 1.0, 32);
                 d.dynamicFriction = in.maybeBad(0.0, 1.0, 32);
                 d.fixedRotation = in.pick(8) == 0;
-                d.collisionDetection = static_cast<CollisionDetection>(in.pick(16) == 0 ? 3 + in.pick(9) : in.pick(3));
+                d.collisionDetection =
+                    static_cast<CollisionDetection>(in.pick(16) == 0 ? 3 + in.pick(9) : in.pick(3));
                 d.precision = in.maybeBad(0.01, 1.0, 32);
                 ids.push_back(world.createBody(d));
                 break;
@@ -170,11 +171,16 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
             case 5:  // one call per operation, so a refusal can be checked to change nothing
                 switch (in.pick(3)) {
                 case 0:
-                    world.applyLinearImpulseAtPoint(anyBody(), {in.maybeBad(-10.0, 10.0, 16, false), in.maybeBad(-10.0, 10.0, 16, false)},
-                                                    {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)});
+                    world.applyLinearImpulseAtPoint(
+                        anyBody(), {in.maybeBad(-10.0, 10.0, 16, false), in.maybeBad(-10.0, 10.0, 16, false)},
+                        {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)});
                     break;
-                case 1: world.applyForce(anyBody(), {in.maybeBad(-1e3, 1e3, 16, false), in.maybeBad(-1e3, 1e3, 16, false)}); break;
-                default: world.applyTorque(anyBody(), in.maybeBad(-1e3, 1e3, 16, false)); break;
+                case 1:
+                    world.applyForce(anyBody(), {in.maybeBad(-1e3, 1e3, 16, false), in.maybeBad(-1e3, 1e3, 16, false)});
+                    break;
+                default:
+                    world.applyTorque(anyBody(), in.maybeBad(-1e3, 1e3, 16, false));
+                    break;
                 }
                 break;
             case 6:
@@ -182,10 +188,19 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
                 break;
             case 7:
                 switch (in.pick(4)) {
-                case 0: world.setMass(anyBody(), in.maybeBad(0.01, 100.0)); break;
-                case 1: world.setMaterial(anyBody(), in.maybeBad(0.0, 1.0), in.maybeBad(0.0, 1.0), in.maybeBad(0.0, 1.0)); break;
-                case 2: world.setCollisionDetection(anyBody(), static_cast<CollisionDetection>(in.pick(5)), in.maybeBad(0.01, 1.0)); break;
-                default: world.setFixedRotation(anyBody(), in.pick(2) == 0); break;
+                case 0:
+                    world.setMass(anyBody(), in.maybeBad(0.01, 100.0));
+                    break;
+                case 1:
+                    world.setMaterial(anyBody(), in.maybeBad(0.0, 1.0), in.maybeBad(0.0, 1.0), in.maybeBad(0.0, 1.0));
+                    break;
+                case 2:
+                    world.setCollisionDetection(anyBody(), static_cast<CollisionDetection>(in.pick(5)),
+                                                in.maybeBad(0.01, 1.0));
+                    break;
+                default:
+                    world.setFixedRotation(anyBody(), in.pick(2) == 0);
+                    break;
                 }
                 break;
             case 8: {
