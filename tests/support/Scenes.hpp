@@ -76,10 +76,10 @@ inline std::uint64_t stateHash(const World& world, const std::vector<BodyId>& id
     return h;
 }
 
-/// The determinism scene: a closed 12 m box with a tilted 8-row pyramid of boxes and 24 discs and small boxes
-/// thrown through it (restitution 0.5 and 1, friction on), gravity, sleep off, so it keeps colliding for the whole
-/// run. Returns the dynamic bodies in creation order.
-inline std::vector<BodyId> buildDeterminismScene(World& world) {
+/// The determinism scene: a closed 12 m box with a tilted pyramid of `rows` rows of boxes and 24 discs and small
+/// boxes thrown through it (restitution 0.5 and 1, friction on), gravity, sleep off, so it keeps colliding for the
+/// whole run. Returns the dynamic bodies in creation order.
+inline std::vector<BodyId> buildDeterminismScene(World& world, int rows = 8) {
     const double half = 6.0, wall = 0.5;
     for (const auto& [size, at] : {std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, -wall)},
                                    std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, 2 * half + wall)},
@@ -92,12 +92,12 @@ inline std::vector<BodyId> buildDeterminismScene(World& world) {
         world.createBody(d);
     }
     std::vector<BodyId> ids;
-    const int rows = 8;
+    const double size = 0.4 * 8 / rows;  // half-size: the pyramid fills the same 6.4 m base at any row count
     for (int row = 0; row < rows; ++row)
         for (int i = 0; i < rows - row; ++i) {
             BodyDef d;
-            d.shape = makeBox(0.4, 0.4);
-            d.position = {-3.0 + 0.8 * (i + 0.5 * row) + 0.01 * row, 0.4 + 0.8 * row};
+            d.shape = makeBox(size, size);
+            d.position = {-3.0 + 2 * size * (i + 0.5 * row) + 0.01 * row, size + 2 * size * row};
             d.angle = 0.01 * row;
             ids.push_back(world.createBody(d));
         }
