@@ -55,7 +55,7 @@ PyramidRun runPyramid100() {
 
 // The pyramid criterion's shape half at a 100-box base: no box moves sideways more than 25 cm (a quarter box)
 // over 500 steps. A pyramid of touching boxes has a static solution with no sideways force, so sideways motion
-// is the solver's error. Measured: 16.4 cm (the top box, in the first second; docs/stability.md).
+// is the solver's error. Measured: 19 cm (docs/stability.md).
 TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShape) {
     const PyramidRun r = runPyramid100();
     RecordProperty("sideways_m", std::to_string(r.sideways));
