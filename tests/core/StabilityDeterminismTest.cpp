@@ -38,8 +38,8 @@ TEST(StabilityDeterminism, SameSceneTwiceInOneProcessIsBitIdentical) {
 }
 
 // A different history (7 bodies created and destroyed first) changes the bits (the same history gives the same
-// bits: the test above). A failure here means the documented dependence (docs/stability.md, "Determinism") no longer holds
-// as written: update the documentation.
+// bits: the test above). A failure here means the documented dependence (docs/stability.md, "Determinism") no
+// longer holds as written: update the documentation.
 TEST(StabilityDeterminism, ResultsFollowTheCreateDestroyHistory) {
     EXPECT_NE(runScene(1, 7), reference());
 }
