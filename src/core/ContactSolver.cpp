@@ -10,7 +10,8 @@ namespace physim {
 
 Softness makeSoftness(double hertz, double dampingRatio, double h) {
     if (hertz <= 0.0) return {};  // rigid
-    const double omega = 2.0 * 3.14159265358979323846 * hertz;
+    constexpr double kMaxHertzPerSubstepRate = 0.25;
+    const double omega = 2.0 * 3.14159265358979323846 * std::min(hertz, kMaxHertzPerSubstepRate * (1.0 / h));
     const double a1 = 2.0 * dampingRatio + h * omega;
     const double a2 = h * omega * a1;
     const double a3 = 1.0 / (1.0 + a2);

@@ -36,6 +36,8 @@ struct Softness {
     double massScale = 1.0;
     double impulseScale = 0.0;
 };
+/// The spring is capped at a quarter of the substep rate (the stiffest the one-pass Gauss-Seidel solve keeps
+/// stable: measured on pyramids, a quarter holds, half already shakes a 40-box base apart).
 Softness makeSoftness(double hertz, double dampingRatio, double h);
 
 struct ContactConstraintPoint {

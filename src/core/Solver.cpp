@@ -17,9 +17,6 @@ namespace {
 constexpr int kColours = 24;
 constexpr std::size_t kBodyGrain = 256;
 constexpr std::size_t kRowGrain = 64;
-// Stiffest spring (Hz per Hz of substep rate) the one-pass Gauss-Seidel solve keeps stable: measured on pyramids,
-// a quarter holds, half already shakes a 40-box base apart.
-constexpr double kMaxHertzPerSubstepRate = 0.25;
 
 class StageTimer {
 public:
@@ -42,10 +39,8 @@ void WorldImpl::solve() {
     const std::size_t n = awake.size();
     const int substeps = settings.substeps;
     const double h = dt / substeps, invH = 1.0 / h;
-    const double contactHertz = std::min(settings.contactHertz, kMaxHertzPerSubstepRate * invH);
-    const Softness contactSoftness = makeSoftness(contactHertz, settings.contactDampingRatio, h);
-    const Softness rodSoftness =
-        makeSoftness(std::min(settings.jointHertz, kMaxHertzPerSubstepRate * invH), settings.jointDampingRatio, h);
+    const Softness contactSoftness = makeSoftness(settings.contactHertz, settings.contactDampingRatio, h);
+    const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
 
     {
         StageTimer timer(profile, Stage::Forces);

@@ -1,5 +1,6 @@
 #include "physim/core/Validate.hpp"
 
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -42,6 +43,17 @@ void requireNonNegative(std::string_view name, double value) {
 void requireInRange(std::string_view name, double value, double lo, double hi) {
     if (!(std::isfinite(value) && value >= lo && value <= hi))
         fail(name, show(value), "in [" + show(lo) + ", " + show(hi) + "]");
+}
+
+void requireWithin(std::string_view name, double value, double limit) {
+    if (!(std::isfinite(value) && std::abs(value) <= limit))
+        fail(name, show(value), "finite, |value| <= " + show(limit));
+}
+
+void requireWithin(std::string_view name, const Vec2& value, double limit) {
+    if (!(std::isfinite(value.x()) && std::isfinite(value.y()) && std::abs(value.x()) <= limit &&
+          std::abs(value.y()) <= limit))
+        fail(name, "(" + show(value.x()) + ", " + show(value.y()) + ")", "finite, each |component| <= " + show(limit));
 }
 
 }  // namespace physim

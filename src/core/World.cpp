@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -43,10 +44,10 @@ void requireDetection(CollisionDetection mode) {
 void validate(const BodyDef& def) {
     requireBodyType(def.type);
     requireDetection(def.collisionDetection);
-    requireFinite("body position", def.position);
+    requireWithin("body position", def.position, kMaxCoordinate);
     requireFinite("body angle", def.angle);
-    requireFinite("body velocity", def.velocity);
-    requireFinite("body angular velocity", def.angularVelocity);
+    requireWithin("body velocity", def.velocity, kMaxSpeed);
+    requireWithin("body angular velocity", def.angularVelocity, kMaxSpeed);
     if (def.type == BodyType::Dynamic) requirePositive("body density", def.density);
     else requireNonNegative("body density", def.density);
     requireInRange("body restitution", def.restitution, 0.0, 1.0);
@@ -61,10 +62,11 @@ void validate(const BodyDef& def) {
 // Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape; it turns about the shape's
 // centroid. Throws (naming the value) unless the mass and the inertia come out positive and finite.
 void assignMass(BodyData& b, double mass) {
-    requirePositive("body mass", mass);
+    requireInRange("body mass (kg)", mass, kMinMass, kMaxMass);
     const double density = mass / b.unitMass.area;
     const double inertia = density * b.unitMass.secondMoment;
-    requirePositive("body inertia (from the mass and shape)", inertia);
+    requireInRange("body inertia (kg m^2, from the mass and shape)", inertia, kMinInertia,
+                   std::numeric_limits<double>::max());
     b.mass = mass;
     b.density = density;
     b.invMass = 1.0 / mass;
@@ -185,6 +187,10 @@ BodyId World::createBody(const BodyDef& def) {
     validate(def);
     WorldImpl& w = *impl_;
     w.requireNotStepping("createBody");
+    BodyData massed;  // the mass is checked before a slot is taken, so a refused body leaves no trace
+    massed.unitMass = computeMassProperties(def.shape);
+    massed.fixedRotation = def.fixedRotation;
+    if (def.type == BodyType::Dynamic) assignMass(massed, def.density * massed.unitMass.area);
     const std::uint32_t index = takeSlot(w.bodies, w.freeBodies);
     BodyData& b = w.bodies[index];
     b.type = def.type;
@@ -210,7 +216,7 @@ BodyId World::createBody(const BodyDef& def) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
-    if (def.type == BodyType::Dynamic) assignMass(b, def.density * b.unitMass.area);
+    if (def.type == BodyType::Dynamic) assignMass(b, massed.mass);
     b.aabb = computeAabb(b.shape, b.xf);
     if (def.collides) b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
     w.addAwakeBody(index);
@@ -320,7 +326,7 @@ double World::dynamicFriction(BodyId id) const { return at(id).dynamicFriction; 
 bool World::useGravity(BodyId id) const { return at(id).useGravity; }
 
 void World::setTransform(BodyId id, const Vec2& position, double angle) {
-    requireFinite("body position", position);
+    requireWithin("body position", position, kMaxCoordinate);
     requireFinite("body angle", angle);
     BodyData& b = wake(id, "setTransform");
     b.xf = {position, Rotation::fromAngle(angle)};
@@ -333,13 +339,13 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
 }
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
-    requireFinite("body velocity", velocity);
+    requireWithin("body velocity", velocity, kMaxSpeed);
     BodyData& b = wake(id, "setVelocity");
     if (b.movable()) b.v = velocity;
 }
 
 void World::setAngularVelocity(BodyId id, double angularVelocity) {
-    requireFinite("body angular velocity", angularVelocity);
+    requireWithin("body angular velocity", angularVelocity, kMaxSpeed);
     BodyData& b = wake(id, "setAngularVelocity");
     if (b.movable() && !b.fixedRotation) b.w = angularVelocity;
 }
@@ -455,7 +461,7 @@ void World::applyForce(BodyId id, const Vec2& force) {
 
 void World::applyForceAtPoint(BodyId id, const Vec2& force, const Vec2& worldPoint) {
     requireFinite("force", force);
-    requireFinite("force application point", worldPoint);
+    requireWithin("force application point", worldPoint, kMaxCoordinate);
     BodyData& b = wake(id, "applyForceAtPoint");
     b.force += force;
     b.torque += cross(worldPoint - b.center, force);
@@ -474,7 +480,7 @@ void World::applyLinearImpulse(BodyId id, const Vec2& impulse) {
 
 void World::applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint) {
     requireFinite("impulse", impulse);
-    requireFinite("impulse application point", worldPoint);
+    requireWithin("impulse application point", worldPoint, kMaxCoordinate);
     BodyData& b = wake(id, "applyLinearImpulseAtPoint");
     b.v += b.invMass * impulse;
     b.w += b.invInertia * cross(worldPoint - b.center, impulse);
@@ -539,9 +545,9 @@ JointId World::createDistanceJoint(const DistanceJointDef& def) {
     if (def.bodyA == def.bodyB) throw std::invalid_argument("physim: a distance joint needs two different bodies");
     if (A.type != BodyType::Dynamic && B.type != BodyType::Dynamic)
         throw std::invalid_argument("physim: a distance joint needs at least one dynamic body");
-    requireFinite("joint anchor A", def.localAnchorA);
-    requireFinite("joint anchor B", def.localAnchorB);
-    requireFinite("joint length", def.length);
+    requireWithin("joint anchor A", def.localAnchorA, kMaxCoordinate);
+    requireWithin("joint anchor B", def.localAnchorB, kMaxCoordinate);
+    requireWithin("joint length", def.length, kMaxCoordinate);
     double length = def.length;
     if (length <= 0.0) length = (B.xf.apply(def.localAnchorB) - A.xf.apply(def.localAnchorA)).norm();
     if (!(length > 1e-9))
@@ -565,8 +571,8 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
     const BodyData& B = at(def.body);
     impl_->requireNotStepping("createMouseJoint");
     if (B.type != BodyType::Dynamic) throw std::invalid_argument("physim: a mouse joint needs a dynamic body");
-    requireFinite("mouse joint target", def.target);
-    requireFinite("mouse joint anchor", def.localAnchor);
+    requireWithin("mouse joint target", def.target, kMaxCoordinate);
+    requireWithin("mouse joint anchor", def.localAnchor, kMaxCoordinate);
     requirePositive("mouse joint maxForce", def.maxForce);
     requirePositive("mouse joint hertz", def.hertz);
     requireNonNegative("mouse joint dampingRatio", def.dampingRatio);
@@ -583,7 +589,7 @@ JointId World::createMouseJoint(const MouseJointDef& def) {
 }
 
 void World::setMouseJointTarget(JointId id, const Vec2& target) {
-    requireFinite("mouse joint target", target);
+    requireWithin("mouse joint target", target, kMaxCoordinate);
     const JointData& j = joint(id);
     impl_->requireNotStepping("setMouseJointTarget");
     if (j.kind != JointKind::Mouse) throw std::invalid_argument("physim: setMouseJointTarget needs a mouse joint");

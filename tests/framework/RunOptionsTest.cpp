@@ -68,6 +68,8 @@ TEST(RunOptions, BadArgumentsNameTheValue) {
     EXPECT_NE(errorOf({"--seconds", "inf"}).find("inf"), std::string::npos);
     EXPECT_NE(errorOf({"--seconds", "abc"}).find("abc"), std::string::npos);
     EXPECT_NE(errorOf({"--seconds"}).find("needs a value"), std::string::npos);
+    EXPECT_NE(errorOf({"--seconds", "1e8"}).find("1e8"), std::string::npos) << "just past the longest run";
+    static_assert(RunOptions::maxSeconds * RunOptions::maxHz < 9.2e18, "--seconds x --hz must count steps in a long long");
     EXPECT_NE(errorOf({"--hz", "0"}).find("--hz"), std::string::npos);
     EXPECT_NE(errorOf({"--hz", "-40"}).find("-40"), std::string::npos);
     EXPECT_NE(errorOf({"--hz", "1e9"}).find("1e9"), std::string::npos);

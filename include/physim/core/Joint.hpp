@@ -48,7 +48,7 @@ struct MouseJointDef {
     Vec2 target = Vec2::Zero();        ///< world point the anchor is pulled towards, m
     Vec2 localAnchor = Vec2::Zero();   ///< grabbed point in the body's frame (origin-relative), m
     double maxForce = 0.0;             ///< N, > 0: the pull never exceeds it (e.g. 1000 m |g|)
-    double hertz = 5.0;                ///< spring frequency, Hz, > 0
+    double hertz = 5.0;                ///< spring frequency, Hz, > 0 (capped at a quarter of the substep rate)
     double dampingRatio = 0.7;         ///< >= 0; 1 is critical damping
 };
 

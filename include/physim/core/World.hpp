@@ -48,6 +48,8 @@ public:
 
     // --- bodies -------------------------------------------------------------------------------------
     /// Validates the definition (throws std::invalid_argument naming the bad value) and adds the body.
+    /// Everywhere in the World, positions, points, anchors and lengths must lie within kMaxCoordinate and speeds
+    /// within kMaxSpeed (Validate.hpp); other values must be finite.
     BodyId createBody(const BodyDef& def);
     void destroyBody(BodyId id);
     bool contains(BodyId id) const;

@@ -1,0 +1,11 @@
+# Runs PROGRAM twice, in two processes, and fails unless both print the same non-empty output.
+foreach(run 1 2)
+  execute_process(COMMAND ${PROGRAM} OUTPUT_VARIABLE out${run} RESULT_VARIABLE rc${run})
+  if(NOT rc${run} EQUAL 0)
+    message(FATAL_ERROR "run ${run} of ${PROGRAM} failed: ${rc${run}}")
+  endif()
+endforeach()
+if(out1 STREQUAL "" OR NOT out1 STREQUAL out2)
+  message(FATAL_ERROR "two processes differ: '${out1}' vs '${out2}'")
+endif()
+message(STATUS "both processes: ${out1}")

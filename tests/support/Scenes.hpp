@@ -1,0 +1,130 @@
+#pragma once
+// Small scene builders and measures shared by the stability, determinism and bad-input tests (and the programs
+// ctest runs twice to compare). Header-only; no global state.
+
+#include "physim/core/World.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <utility>
+#include <vector>
+
+namespace physim::test {
+
+/// Default settings with sleep off (so the solver, not sleeping, holds a scene) and the given gravity.
+inline WorldSettings awakeSettings(const Vec2& gravity = {0.0, -9.81}) {
+    WorldSettings s;
+    s.gravity = gravity;
+    s.enableSleep = false;
+    return s;
+}
+
+/// A static slab whose top face is the line y = 0, `halfWidth` m each side of x = 0.
+inline BodyId addGround(World& world, double halfWidth = 200.0) {
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.shape = makeBox(halfWidth, 0.5);
+    ground.position = {0.0, -0.5};
+    return world.createBody(ground);
+}
+
+inline BodyId addBox(World& world, const Vec2& position, double halfWidth, double halfHeight, double density = 1.0) {
+    BodyDef def;
+    def.shape = makeBox(halfWidth, halfHeight);
+    def.position = position;
+    def.density = density;
+    return world.createBody(def);
+}
+
+/// Kinetic energy (J) of the bodies, translation and rotation about the centre of mass.
+inline double kineticEnergy(const World& world, const std::vector<BodyId>& ids) {
+    double e = 0.0;
+    for (const BodyId id : ids) {
+        const double w = world.angularVelocity(id);
+        e += 0.5 * world.mass(id) * world.velocity(id).squaredNorm() + 0.5 * world.inertia(id) * w * w;
+    }
+    return e;
+}
+
+/// Kinetic plus potential energy (J) in uniform gravity g (m/s^2), potential 0 at the origin.
+inline double mechanicalEnergy(const World& world, const std::vector<BodyId>& ids) {
+    double e = kineticEnergy(world, ids);
+    const Vec2 g = world.settings().gravity;
+    for (const BodyId id : ids) e -= world.mass(id) * g.dot(world.centerOfMass(id));
+    return e;
+}
+
+/// FNV-1a over the bits of every live body's pose and velocities, in creation-slot order of `ids`: equal hashes
+/// mean bit-identical states (up to the 2^-64 chance of a collision).
+inline std::uint64_t stateHash(const World& world, const std::vector<BodyId>& ids) {
+    std::uint64_t h = 1469598103934665603ull;
+    auto mix = [&](double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        for (int i = 0; i < 8; ++i) {
+            h ^= (bits >> (8 * i)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    };
+    for (const BodyId id : ids) {
+        const Transform xf = world.transform(id);
+        for (const double v : {xf.p.x(), xf.p.y(), xf.q.c, xf.q.s, world.angle(id), world.velocity(id).x(),
+                               world.velocity(id).y(), world.angularVelocity(id)})
+            mix(v);
+    }
+    return h;
+}
+
+/// The determinism scene: a closed 12 m box with a tilted pyramid of `rows` rows of boxes and 24 discs and small
+/// boxes thrown through it (restitution 0.5 and 1, friction on), gravity, sleep off, so it keeps colliding for the
+/// whole run. Returns the dynamic bodies in creation order.
+inline std::vector<BodyId> buildDeterminismScene(World& world, int rows = 8) {
+    const double half = 6.0, wall = 0.5;
+    for (const auto& [size, at] : {std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, -wall)},
+                                   std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, 2 * half + wall)},
+                                   std::pair{Vec2(wall, half + 2 * wall), Vec2(-half - wall, half)},
+                                   std::pair{Vec2(wall, half + 2 * wall), Vec2(half + wall, half)}}) {
+        BodyDef d;
+        d.type = BodyType::Static;
+        d.shape = makeBox(size.x(), size.y());
+        d.position = at;
+        world.createBody(d);
+    }
+    std::vector<BodyId> ids;
+    const double size = 0.4 * 8 / rows;  // half-size: the pyramid fills the same 6.4 m base at any row count
+    for (int row = 0; row < rows; ++row)
+        for (int i = 0; i < rows - row; ++i) {
+            BodyDef d;
+            d.shape = makeBox(size, size);
+            d.position = {-3.0 + 2 * size * (i + 0.5 * row) + 0.01 * row, size + 2 * size * row};
+            d.angle = 0.01 * row;
+            ids.push_back(world.createBody(d));
+        }
+    for (int k = 0; k < 24; ++k) {
+        BodyDef d;
+        d.shape = k % 3 ? Geometry(makeCircle(0.2)) : Geometry(makeBox(0.2, 0.15));
+        d.position = {-5.0 + 0.45 * k, 9.0 + 0.3 * (k % 4)};
+        d.velocity = {6.0 * std::cos(0.7 * k), -8.0 + std::sin(1.1 * k)};
+        d.angularVelocity = 0.5 * (k % 5) - 1.0;
+        d.restitution = k % 2 ? 1.0 : 0.5;
+        ids.push_back(world.createBody(d));
+    }
+    return ids;
+}
+
+/// Leaves `count` freed body slots behind (and freed broad-phase nodes and contacts): creates that many touching
+/// discs, steps once so they meet, then destroys them in creation order.
+inline void churn(World& world, int count) {
+    std::vector<BodyId> ids;
+    for (int i = 0; i < count; ++i) {
+        BodyDef d;
+        d.shape = makeCircle(0.3);
+        d.position = {100.0 + 0.5 * i, 100.0};
+        ids.push_back(world.createBody(d));
+    }
+    if (count > 0) world.step(1.0 / 60.0);
+    for (const BodyId id : ids) world.destroyBody(id);
+}
+
+}  // namespace physim::test
