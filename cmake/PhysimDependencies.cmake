@@ -21,7 +21,7 @@ if(PHYSIM_BUILD_FRAMEWORK)
       set(ROOT_DIR "${_physim_root_dir}" CACHE PATH "Directory with ROOTConfig.cmake")
     endif()
   endif()
-  find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO)
+  find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO Tree)
   # The wheel bundles libraries (bz2, freetype, ...) in site-packages/root.libs, found at run time through
   # RPATH; the linker needs to be told where they are when it links an executable.
   get_filename_component(PHYSIM_ROOT_LIBS_DIR "${ROOT_DIR}/../../root.libs" ABSOLUTE)
