@@ -1,5 +1,7 @@
 #include "physim/framework/RunOptions.hpp"
 
+#include "AccuracyOptions.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -68,10 +70,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, got '" + text + "'");
             o.width = parseInt(a, text.substr(0, x), 64, 16384);
             o.height = parseInt(a, text.substr(x + 1), 64, 16384);
-        } else {
+        } else if (!parseAccuracyOption(a, value, o)) {
             throw UsageError("unknown argument '" + a + "' (see --help)");
         }
     }
+    checkAccuracyOptions(o);
     return o;
 }
 
@@ -90,6 +93,7 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
+       << accuracyUsage()
        << "  --help                   this text\n\n"
        << "keys (window): Space restart, P pause, Esc quit, mouse wheel zoom; the simulation may add its own.\n"
        << "exit codes: 0 success, 1 error while running, 2 bad arguments.\n";

@@ -1,5 +1,6 @@
 #include "physim/framework/Runner.hpp"
 
+#include "AccuracyOptions.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
@@ -57,6 +58,8 @@ void Runner::restart() {
     if (options_.hz) sim.setPhysicsRate(*options_.hz);
     sim.onCreate();
     if (options_.hz) sim.setPhysicsRate(*options_.hz);  // the command line wins over onCreate's choice
+    applyAccuracyOptions(options_, sim);
+    accuracyApplied_ = sim.entities().size();
     sim.start = true;
     accumulator_ = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
 }
@@ -65,6 +68,10 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     Simulation& sim = simulation();
     sim.onUpdate();
     sim.updateEntities();
+    if (sim.entities().size() != accuracyApplied_) {  // bodies added since (a key, a spawner): same knobs
+        applyAccuracyOptions(options_, sim);
+        accuracyApplied_ = sim.entities().size();
+    }
     int steps = 0;
     if (!sim.paused) {
         steps = accumulator_.advance(frameSeconds);

@@ -64,6 +64,7 @@ private:
     std::unique_ptr<sf::Font> overlayFont_;  // null when no font file is found: no overlay then
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
     double framesPerSecond_ = 0.0;
+    std::size_t accuracyApplied_ = 0;  // entities given the command line's accuracy knobs so far
 };
 
 /// Parses the command line and runs. Prints usage errors with exit code 2, runtime errors with 1.
