@@ -91,7 +91,8 @@ def floor_for(points):
     return min(positive) / 10 if positive else 1e-6
 
 
-FAMILY_COLOURS = {"rate": 1, "substeps": 2, "iterations": 4, "relax": 8, "hertz": 6, "ccd": 28}  # ROOT colours
+FAMILY_COLOURS = {"rate": 1, "substeps": 2, "iterations": 4, "relax": 8, "hertz": 6, "damping": 7,
+                  "ccd": 28}  # ROOT colours
 
 
 def draw_pareto(scene, meaning, points, path):
@@ -199,7 +200,7 @@ def tenfold(points):
 def tenfold_by_slope(points, family):
     """Fit error ~ cost^-k over a family's points: a tenfold accuracy gain then costs 10^(1/k) times more."""
     fam = [p for p in points if p["family"] == family and p["error"] > 0]
-    if len(fam) < 3:
+    if len(fam) < 3 or fam[-1]["error"] >= fam[0]["error"]:
         return None
     xs = [math.log10(p["cost"]) for p in fam]
     ys = [math.log10(p["error"]) for p in fam]
@@ -211,13 +212,21 @@ def tenfold_by_slope(points, family):
     return k if k > 0.2 else None
 
 
-def stops_paying(points, family, order):
-    """The first setting of the family after which the next step of the setting cuts error by less than 10 %."""
+def family_effect(points, family, order):
+    """What a family does on a scene, in words: no effect, or the setting past which it stops paying (no later
+    setting cuts the error by 10 % more), or that it pays to the end of the sweep."""
     fam = sorted([p for p in points if p["family"] == family], key=lambda p: order.index(p["setting"]))
-    for a, b in zip(fam, fam[1:]):
-        if b["error"] > 0.9 * a["error"]:
-            return a
-    return None
+    if len(fam) < 2:
+        return None
+    errors = [p["error"] for p in fam]
+    if max(errors) <= 1.1 * min(errors) or max(errors) == 0:
+        return f"{family}: no effect (error within 10 % over {fam[0]['setting']} to {fam[-1]['setting']})"
+    for i, p in enumerate(fam[:-1]):
+        if min(errors[i + 1:]) > 0.9 * p["error"]:
+            best = min(fam, key=lambda q: q["error"])
+            return (f"{family}: stops paying past {p['setting']} (error {p['error']:.3g}; best in the family "
+                    f"{best['error']:.3g} at {best['setting']})")
+    return f"{family}: still paying at {fam[-1]['setting']} (error {fam[-1]['error']:.3g})"
 
 
 def write_summary(out, rows, meanings, cases, elapsed, how):
@@ -253,14 +262,15 @@ def write_summary(out, rows, meanings, cases, elapsed, how):
             lines.append(f"- a tenth of the defaults' error: {p['family']} {p['setting']}, {ratio:.2g}x the cost")
         elif base and base["error"] > 0:
             lines.append("- a tenth of the defaults' error: no setting in the sweep reaches it")
-        for family in order:
+        for family in ("rate", "substeps"):  # the step-size knobs: error against cost is a power law while they pay
             k = tenfold_by_slope(pts, family)
             if k:
-                lines.append(f"- {family}: error ~ cost^-{k:.2f}, so a tenth of the error costs {10 ** (1 / k):.2g}x")
+                lines.append(f"- {family}: error ~ cost^-{k:.2f} over the sweep, so a tenth of the error costs about "
+                             f"{10 ** (1 / k):.2g}x")
         for family in order:
-            stop = stops_paying(pts, family, order[family])
-            if stop:
-                lines.append(f"- {family}: past {stop['setting']} the error falls by less than 10 % per step")
+            effect = family_effect(pts, family, order[family])
+            if effect:
+                lines.append(f"- {effect}")
         lines.append("")
     with open(os.path.join(out, "summary.md"), "w") as f:
         f.write("\n".join(lines))

@@ -7,7 +7,7 @@
 // of repeated runs each); the CPU figure is the one to compare on a shared machine.
 // A family is one knob swept with the others at the baseline (60 Hz, WorldSettings' defaults, discrete):
 // rate (Hz), substeps, iterations (velocity), relax (iterations), hertz (contact, or joint on the pendulum,
-// stiffness), ccd (discrete | sampled<precision> | exact on every dynamic body).
+// stiffness), damping (ratio of that spring), ccd (discrete | sampled<precision> | exact on every dynamic body).
 
 #include "StudyScenes.hpp"
 
@@ -43,6 +43,7 @@ const std::map<std::string, std::vector<std::string>>& familySettings() {
         {"iterations", {"1", "2", "4", "8"}},
         {"relax", {"1", "2", "4", "8"}},
         {"hertz", {"15", "30", "60", "120", "240"}},
+        {"damping", {"0.5", "1", "3", "10", "30"}},
         {"ccd", {"discrete", "sampled0.5", "sampled0.2", "sampled0.1", "sampled0.05", "exact"}},
     };
     return all;
@@ -82,6 +83,8 @@ Knobs knobsFor(const std::string& scene, const std::string& family, const std::s
     else if (family == "iterations") k.world.velocityIterations = wholeNumber(setting);
     else if (family == "relax") k.world.relaxIterations = wholeNumber(setting);
     else if (family == "hertz") (scene == "pendulum" ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting);
+    else if (family == "damping")
+        (scene == "pendulum" ? k.world.jointDampingRatio : k.world.contactDampingRatio) = std::stod(setting);
     else if (family == "ccd") {
         k.ccd = setting;
         if (setting == "exact") k.detection = physim::CollisionDetection::ContinuousExact;
@@ -224,12 +227,12 @@ int main(int argc, char** argv) {
         const double wall = o.wallSeconds / info.seconds, cpu = o.cpuSeconds / info.seconds;
         if (header)
             std::cout << "scene,family,setting,hz,substeps,velocity_iterations,relax_iterations,contact_hertz,"
-                         "joint_hertz,ccd,wall_s_per_sim_s,cpu_s_per_sim_s,error\n";
+                         "contact_damping,joint_hertz,joint_damping,ccd,wall_s_per_sim_s,cpu_s_per_sim_s,error\n";
         char row[512];
-        std::snprintf(row, sizeof row, "%s,%s,%s,%g,%d,%d,%d,%g,%g,%s,%.6g,%.6g,%.17g", sceneName.c_str(),
+        std::snprintf(row, sizeof row, "%s,%s,%s,%g,%d,%d,%d,%g,%g,%g,%g,%s,%.6g,%.6g,%.17g", sceneName.c_str(),
                       family.c_str(), setting.c_str(), k.hz, k.world.substeps, k.world.velocityIterations,
-                      k.world.relaxIterations, k.world.contactHertz, k.world.jointHertz, k.ccd.c_str(), wall, cpu,
-                      o.error);
+                      k.world.relaxIterations, k.world.contactHertz, k.world.contactDampingRatio, k.world.jointHertz,
+                      k.world.jointDampingRatio, k.ccd.c_str(), wall, cpu, o.error);
         std::cout << row << std::endl;
         if (!rootPath.empty()) writeRoot(rootPath, sceneName, family, setting, wall, cpu, o.error);
     } catch (const std::invalid_argument& e) {
