@@ -107,7 +107,7 @@ def draw_pareto(scene, meaning, points, path):
     canvas.SetLogx()
     canvas.SetLogy()
     canvas.SetGrid()
-    canvas.SetLeftMargin(0.1)
+    canvas.SetLeftMargin(0.12)
     canvas.SetRightMargin(0.2)
     canvas.SetTopMargin(0.12)
     zero_note = " (0 drawn at %.1g)" % floor if any(p["error"] == 0 for p in points) else ""
@@ -161,7 +161,7 @@ def draw_pareto(scene, meaning, points, path):
     multi.GetXaxis().SetTitleOffset(1.2)
     multi.GetXaxis().SetMoreLogLabels()
     multi.GetYaxis().SetMoreLogLabels()
-    multi.GetYaxis().SetTitleOffset(1.3)
+    multi.GetYaxis().SetTitleOffset(1.6)
     text = ROOT.TLatex()
     text.SetTextSize(0.024)
     for x, yy, label, colour in labels:
@@ -219,7 +219,9 @@ def family_effect(points, family, order):
     if len(fam) < 2:
         return None
     errors = [p["error"] for p in fam]
-    if max(errors) <= 1.1 * min(errors) or max(errors) == 0:
+    if max(errors) < 1e-12:  # every scene's error is relative or in metres: this is rounding, not a trend
+        return f"{family}: no effect (every error below 1e-12: rounding)"
+    if max(errors) <= 1.1 * min(errors):
         return f"{family}: no effect (error within 10 % over {fam[0]['setting']} to {fam[-1]['setting']})"
     for i, p in enumerate(fam[:-1]):
         if min(errors[i + 1:]) > 0.9 * p["error"]:
