@@ -92,7 +92,7 @@ def floor_for(points):
 
 
 FAMILY_COLOURS = {"rate": 1, "substeps": 2, "iterations": 4, "relax": 8, "hertz": 6, "damping": 7,
-                  "ccd": 28}  # ROOT colours
+                  "stiff": 46, "ccd": 28}  # ROOT colours
 
 
 def draw_pareto(scene, meaning, points, path):

@@ -7,7 +7,7 @@
 // of repeated runs each); the CPU figure is the one to compare on a shared machine.
 // A family is one knob swept with the others at the baseline (60 Hz, WorldSettings' defaults, discrete):
 // rate (Hz), substeps, iterations (velocity), relax (iterations), hertz (contact, or joint on the pendulum,
-// stiffness), damping (ratio of that spring), ccd (discrete | sampled<precision> | exact on every dynamic body).
+// stiffness), damping (ratio of that spring), stiff (substeps x hertz together), ccd (discrete | sampled<precision> | exact on every dynamic body).
 
 #include "StudyScenes.hpp"
 
@@ -44,6 +44,7 @@ const std::map<std::string, std::vector<std::string>>& familySettings() {
         {"relax", {"1", "2", "4", "8"}},
         {"hertz", {"15", "30", "60", "120", "240"}},
         {"damping", {"0.5", "1", "3", "10", "30"}},
+        {"stiff", {"8x120", "16x240", "32x480"}},
         {"ccd", {"discrete", "sampled0.5", "sampled0.2", "sampled0.1", "sampled0.05", "exact"}},
     };
     return all;
@@ -85,6 +86,11 @@ Knobs knobsFor(const std::string& scene, const std::string& family, const std::s
     else if (family == "hertz") (scene == "pendulum" ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting);
     else if (family == "damping")
         (scene == "pendulum" ? k.world.jointDampingRatio : k.world.contactDampingRatio) = std::stod(setting);
+    else if (family == "stiff") {  // substeps and stiffness together: the stiffness cap (substep rate / 4) moves up
+        const auto x = setting.find('x');
+        k.world.substeps = wholeNumber(setting.substr(0, x));
+        (scene == "pendulum" ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting.substr(x + 1));
+    }
     else if (family == "ccd") {
         k.ccd = setting;
         if (setting == "exact") k.detection = physim::CollisionDetection::ContinuousExact;

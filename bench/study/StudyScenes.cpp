@@ -346,7 +346,7 @@ std::function<std::unique_ptr<SceneRun>()> maker(Args... args) {
 
 const std::vector<SceneInfo>& scenes() {
     const std::vector<std::string> motion{"rate", "substeps"};
-    const std::vector<std::string> contact{"rate", "substeps", "iterations", "relax", "hertz", "damping"};
+    const std::vector<std::string> contact{"rate", "substeps", "iterations", "relax", "hertz", "damping", "stiff"};
     std::vector<std::string> fast = contact;
     fast.push_back("ccd");
     static const std::vector<SceneInfo> all{
