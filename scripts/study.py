@@ -264,7 +264,7 @@ def write_summary(out, rows, meanings, cases, elapsed, how):
             lines.append(f"- a tenth of the defaults' error: {p['family']} {p['setting']}, {ratio:.2g}x the cost")
         elif base and base["error"] > 0:
             lines.append("- a tenth of the defaults' error: no setting in the sweep reaches it")
-        for family in ("rate", "substeps"):  # the step-size knobs: error against cost is a power law while they pay
+        for family in ("rate", "substeps", "stiff"):  # error against cost is a power law while these pay
             k = tenfold_by_slope(pts, family)
             if k:
                 lines.append(f"- {family}: error ~ cost^-{k:.2f} over the sweep, so a tenth of the error costs about "
