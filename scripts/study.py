@@ -239,7 +239,7 @@ def write_summary(out, rows, meanings, cases, elapsed, how):
         if v not in order[f]:
             order[f].append(v)
     lines = ["# Accuracy study: summary", "",
-             f"{len(rows)} cases, {elapsed:.0f} s wall ({how}). Cost: CPU seconds of the process per simulated "
+             f"{len(rows)} cases" + (f", {elapsed:.0f} s wall" if elapsed is not None else "") + f" ({how}). Cost: CPU seconds of the process per simulated "
              "second of stepping (the fastest of repeated runs of the case; wall seconds beside it); error: each "
              "scene's measure against its trusted answer. Figures compare within this run only.",
              ""]
@@ -278,6 +278,15 @@ def write_summary(out, rows, meanings, cases, elapsed, how):
         f.write("\n".join(lines))
 
 
+def report(out, rows, meanings, cases, no_plots, elapsed, how):
+    if not no_plots:
+        for scene in dict.fromkeys(r["scene"] for r in rows):
+            pts = scene_points(rows, scene)
+            if len(pts) > 1:
+                draw_pareto(scene, meanings.get(scene, ""), pts, os.path.join(out, f"pareto_{scene}.png"))
+    write_summary(out, rows, meanings, cases, elapsed, how)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--bin", required=True, help="the physim_study program")
@@ -286,16 +295,26 @@ def main():
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1, help="parallel local cases (default: cores)")
     ap.add_argument("--dask", metavar="ADDRESS", help="run the cases on this Dask scheduler instead")
     ap.add_argument("--no-plots", action="store_true", help="skip the PNGs (tables and CSV only)")
+    ap.add_argument("--replot", action="store_true",
+                    help="run nothing: redraw summary.md and the plots from DIR/runs.csv")
     args = ap.parse_args()
     if args.jobs < 1:
         ap.error(f"--jobs must be >= 1, got {args.jobs}")
     binary = os.path.abspath(args.bin)
     out = os.path.abspath(args.out)
+    meanings = dict(line.split("\t", 1) for line in
+                    subprocess.run([binary, "--scenes"], capture_output=True, text=True, check=True)
+                    .stdout.splitlines())
+    if args.replot:
+        with open(os.path.join(out, "runs.csv")) as f:
+            ordered = list(csv.DictReader(f))
+        cases = [(r["scene"], r["family"], r["setting"]) for r in ordered]
+        report(out, ordered, meanings, cases, args.no_plots, None, "redrawn from runs.csv")
+        return
     cases_dir = os.path.join(out, "cases")
     os.makedirs(cases_dir, exist_ok=True)
     for old in glob.glob(os.path.join(cases_dir, "*.root")):
         os.remove(old)  # a rerun into the same folder must not merge an earlier sweep's cases
-
     cases = list_cases(binary, args.quick)
     roots = [os.path.join(cases_dir, "_".join(c) + ".root") for c in cases]
     start = time.monotonic()
@@ -316,15 +335,7 @@ def main():
                         f"{sys.version_info.minor}", "site-packages", "ROOT", "bin", "hadd")
     subprocess.run([os.path.normpath(hadd), "-f", "-v", "0", os.path.join(out, "runs.root")] + roots, check=True)
 
-    meanings = dict(line.split("\t", 1) for line in
-                    subprocess.run([binary, "--scenes"], capture_output=True, text=True, check=True)
-                    .stdout.splitlines())
-    if not args.no_plots:
-        for scene in dict.fromkeys(r["scene"] for r in ordered):
-            pts = scene_points(ordered, scene)
-            if len(pts) > 1:
-                draw_pareto(scene, meanings.get(scene, ""), pts, os.path.join(out, f"pareto_{scene}.png"))
-    write_summary(out, ordered, meanings, cases, elapsed, how)
+    report(out, ordered, meanings, cases, args.no_plots, elapsed, how)
     print(f"[study] {len(ordered)} cases in {elapsed:.0f} s: {out}/runs.csv, runs.root, summary.md, "
           f"pareto_<scene>.png", file=sys.stderr)
 

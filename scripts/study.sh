@@ -2,6 +2,7 @@
 # The accuracy study in one command: every reference scene under every accuracy setting the engine has, each
 # case an independent headless run, in parallel here or on a Dask cluster (docs/accuracy.md).
 #   scripts/study.sh [--quick] [--jobs N] [--dask ADDRESS] [--no-plots] --out DIR
+#   scripts/study.sh --replot --out DIR     redraw DIR's summary.md and plots from its runs.csv, running nothing
 # Writes DIR/runs.csv, DIR/runs.root (the cases' .root files merged by hadd), DIR/summary.md and
 # DIR/pareto_<scene>.png. Sets up dependencies and builds physim_study (build/default) first, unless
 # PHYSIM_STUDY names an already built program (ctest does).
