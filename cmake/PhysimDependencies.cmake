@@ -4,27 +4,19 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 
 if(PHYSIM_BUILD_FRAMEWORK)
   find_package(SFML 2.5 REQUIRED COMPONENTS graphics window system)
+  find_package(X11 REQUIRED)
   find_package(nlohmann_json 3.10 REQUIRED)
 
   # The ROOT wheel lives in a virtual environment outside the build tree (scripts/common.sh says where).
+  include(PhysimRootWheel)
   if(NOT ROOT_DIR AND NOT DEFINED ENV{ROOT_DIR})
-    if(DEFINED ENV{PHYSIM_DEPS_DIR})
-      set(_physim_deps "$ENV{PHYSIM_DEPS_DIR}")
-    elseif(DEFINED ENV{XDG_CACHE_HOME})
-      set(_physim_deps "$ENV{XDG_CACHE_HOME}/physim")
-    else()
-      set(_physim_deps "$ENV{HOME}/.cache/physim")
-    endif()
-    file(GLOB _physim_root_dirs "${_physim_deps}/root-venv/lib/python3*/site-packages/ROOT/cmake")
-    if(_physim_root_dirs)
-      list(GET _physim_root_dirs 0 _physim_root_dir)
+    physim_find_root_wheel(_physim_root_dir)
+    if(_physim_root_dir)
       set(ROOT_DIR "${_physim_root_dir}" CACHE PATH "Directory with ROOTConfig.cmake")
     endif()
   endif()
   find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO Tree)
-  # The wheel bundles libraries (bz2, freetype, ...) in site-packages/root.libs, found at run time through
-  # RPATH; the linker needs to be told where they are when it links an executable.
-  get_filename_component(PHYSIM_ROOT_LIBS_DIR "${ROOT_DIR}/../../root.libs" ABSOLUTE)
+  physim_root_wheel_link_dir(PHYSIM_ROOT_LIBS_DIR "${ROOT_DIR}")
 endif()
 
 if(PHYSIM_BUILD_TESTS)

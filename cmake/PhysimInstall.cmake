@@ -22,4 +22,5 @@ configure_package_config_file(cmake/physimConfig.cmake.in ${PROJECT_BINARY_DIR}/
   INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/physim)
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/physimConfigVersion.cmake COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/physimConfig.cmake ${PROJECT_BINARY_DIR}/physimConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/PhysimRootWheel.cmake
   DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/physim)

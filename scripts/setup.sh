@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs everything physim needs on a Debian machine. Idempotent: a second run only checks.
-#   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML, GoogleTest, Google Benchmark, nlohmann-json, Xvfb,
-#     Box2D 2.4.1 (the peer engine bench/peers measures against)
+#   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML (and X11), Dear ImGui, GoogleTest,
+#     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
 #   - Dask (`dask`, `distributed` from PyPI) in the same environment: scripts/study.sh --dask runs cases on a cluster
 set -euo pipefail
@@ -9,8 +9,8 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libsfml-dev libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libtbb-dev libbox2d-dev
-  xvfb xauth libgl1-mesa-dri fonts-dejavu-core libx11-dev
+  libeigen3-dev libtbb-dev libsfml-dev libx11-dev libimgui-dev libgtest-dev libgmock-dev libbenchmark-dev
+  nlohmann-json3-dev libbox2d-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   python3 python3-venv
 )
 

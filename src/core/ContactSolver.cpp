@@ -176,36 +176,47 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
     B.dAngle += turnB;
 }
 
-// Applies the bounces, both points of a face together when both bounce (a box landing flat stays level), else
-// one at a time. A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep.
+// Applies the bounces. Both points of a face bounce together (a box landing flat stays level): the impulses x >= 0
+// bring each point to its target speed, or leave it at x = 0 already leaving faster, as the normal rows' 2x2
+// complementarity problem does. Point by point would let the second point's blow undo the first's target and
+// gain energy (a thin spinning box struck on both corners). A bounce is a blow, not a lasting push: nothing of it
+// is warm-started into the next substep.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2]) {
     auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]); };
-    if (c.pointCount == 2 && bounce[0].active && bounce[1].active && c.invDet > 0.0) {
+    double x[2] = {0.0, 0.0}, q[2] = {0.0, 0.0};
+    if (c.pointCount == 2 && bounce[0].active && bounce[1].active) {
         const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
-        const double x1 = (c.k22 * d1 - c.k12 * d2) * c.invDet, x2 = (c.k11 * d2 - c.k12 * d1) * c.invDet;
-        if (x1 >= 0.0 && x2 >= 0.0) {
-            const double x[2] = {x1, x2};
-            const double g1 = bounce[0].gap, g2 = bounce[1].gap;
-            const double q[2] = {(c.k22 * g1 - c.k12 * g2) * c.invDet, (c.k11 * g2 - c.k12 * g1) * c.invDet};
-            for (int i = 0; i < 2; ++i) {
-                ContactConstraintPoint& cp = c.points[i];
-                pushNormal(c, A, B, cp, x[i]);
-                cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
-                cp.normalImpulse = 0.0;
-            }
-            for (int i = 0; i < 2; ++i) shift(c, c.points[i], A, B, q[i]);
-            return;
+        const double g1 = bounce[0].gap, g2 = bounce[1].gap;
+        const double y1 = (c.k22 * d1 - c.k12 * d2) * c.invDet, y2 = (c.k11 * d2 - c.k12 * d1) * c.invDet;
+        if (c.invDet > 0.0 && y1 >= 0.0 && y2 >= 0.0) {
+            x[0] = y1, x[1] = y2;
+            q[0] = (c.k22 * g1 - c.k12 * g2) * c.invDet, q[1] = (c.k11 * g2 - c.k12 * g1) * c.invDet;
+        } else if (d1 > 0.0 && d2 - c.k12 * d1 / c.k11 <= 0.0) {
+            x[0] = d1 / c.k11, q[0] = g1 / c.k11;  // the first bounces; the second then leaves fast enough
+        } else if (d2 > 0.0 && d1 - c.k12 * d2 / c.k22 <= 0.0) {
+            x[1] = d2 / c.k22, q[1] = g2 / c.k22;
+        } else if (d1 > 0.0 || d2 > 0.0) {
+            // Degenerate face (the points' rows nearly equal): one blow, at the point that needs more.
+            const int i = d1 / c.k11 >= d2 / c.k22 ? 0 : 1;
+            x[i] = (i == 0 ? d1 : d2) / (i == 0 ? c.k11 : c.k22);
+            q[i] = (i == 0 ? g1 : g2) / (i == 0 ? c.k11 : c.k22);
+        }
+    } else {
+        for (int i = 0; i < c.pointCount; ++i) {
+            if (!bounce[i].active) continue;
+            x[i] = std::max(c.points[i].normalMass * (bounce[i].target - speedAt(i)), 0.0);
+            q[i] = bounce[i].gap * c.points[i].normalMass;
         }
     }
     for (int i = 0; i < c.pointCount; ++i) {
         if (!bounce[i].active) continue;
         ContactConstraintPoint& cp = c.points[i];
-        const double impulse = std::max(cp.normalMass * (bounce[i].target - speedAt(i)), 0.0);
-        pushNormal(c, A, B, cp, impulse);
-        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + impulse);
+        pushNormal(c, A, B, cp, x[i]);
+        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
         cp.normalImpulse = 0.0;
-        shift(c, cp, A, B, bounce[i].gap * cp.normalMass);
     }
+    for (int i = 0; i < c.pointCount; ++i)
+        if (bounce[i].active && q[i] != 0.0) shift(c, c.points[i], A, B, q[i]);
 }
 
 }  // namespace

@@ -18,6 +18,13 @@ double deepest(const Geometry& a, const Transform& xa, const Geometry& b, const 
     return separation;
 }
 
+// How far the outline can move per radian the body turns about its origin, m: a circle's outline turns onto
+// itself, so only its centre's offset counts (a rolling ball is not carried into the ground by its spin).
+double turningRadius(const Geometry& g) {
+    if (const auto* c = std::get_if<Circle>(&g)) return c->center.norm();
+    return boundingRadius(g);
+}
+
 }  // namespace
 
 Sweep ContinuousStage::sweepOf(const WorldImpl& w, std::uint32_t slot) const {
@@ -46,8 +53,8 @@ double ContinuousStage::deepening(const Geometry& a, const Sweep& sa, const Geom
         if (m.pointCount > 0) n = m.normal;
     }
     const double approach = n.isZero() ? motion.norm() : std::max(0.0, motion.dot(n));
-    const double reach = approach + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
-                         std::abs(sb.a1 - sb.a0) * boundingRadius(b);
+    const double reach = approach + std::abs(sa.a1 - sa.a0) * turningRadius(a) +
+                         std::abs(sb.a1 - sb.a0) * turningRadius(b);
     if (!(reach > slop)) return 1.0;  // cannot overlap by more than the slop: the contacts' business
     // Deeper than the slop; or, for a pair that already starts deeper (spawned so, or pressed in: the contacts'
     // push-out is on it), half a slop deeper than it starts, so its own overlap never counts as an impact.

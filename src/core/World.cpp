@@ -257,6 +257,14 @@ bool World::contains(BodyId id) const {
 
 std::size_t World::bodyCount() const { return impl_->liveCount; }
 
+std::vector<BodyId> World::bodies() const {
+    std::vector<BodyId> ids;
+    ids.reserve(impl_->liveCount);
+    for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
+        if (impl_->bodies[i].alive) ids.push_back(BodyId{i, impl_->bodies[i].generation});
+    return ids;
+}
+
 const BodyData& World::at(BodyId id) const {
     if (!contains(id))
         throw std::invalid_argument("physim: body id (index " + std::to_string(id.index) + ", generation " +
@@ -591,7 +599,11 @@ std::size_t World::jointCount() const { return impl_->jointCount; }
 JointType World::jointType(JointId id) const {
     return joint(id).kind == JointKind::Mouse ? JointType::Mouse : JointType::Distance;
 }
-double World::jointLength(JointId id) const { return joint(id).length; }
+double World::jointLength(JointId id) const {
+    const JointData& j = joint(id);
+    if (j.kind != JointKind::Distance) throw std::invalid_argument("physim: jointLength needs a distance joint");
+    return j.length;
+}
 
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);

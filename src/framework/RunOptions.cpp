@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <sstream>
 
 namespace physim {
@@ -32,27 +33,39 @@ int parseInt(const std::string& flag, const std::string& text, int lo, int hi) {
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
     for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
+        // --name=value is --name value.
+        const std::size_t equals = args[i].rfind("--", 0) == 0 ? args[i].find('=') : std::string::npos;
+        const std::string a = args[i].substr(0, equals);
+        std::optional<std::string> inlineValue;
+        if (equals != std::string::npos) inlineValue = args[i].substr(equals + 1);
         auto value = [&]() -> const std::string& {
+            if (inlineValue) return *inlineValue;
             if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
             return args[++i];
         };
+        const auto flag = [&] {  // an option without a value
+            if (inlineValue) throw UsageError(a + " takes no value, got '" + args[i] + "'");
+        };
         if (a == "--help" || a == "-h") {
+            flag();
             o.help = true;
         } else if (a == "--headless") {
+            flag();
             o.headless = true;
         } else if (a == "--quiet") {
+            flag();
             o.quiet = true;
         } else if (a == "--seconds") {
             const std::string& text = value();
             const double s = parseNumber(a, text);
-            if (!(std::isfinite(s) && s >= 0.0)) throw UsageError("--seconds must be finite and >= 0, got " + text);
+            if (!(std::isfinite(s) && s >= 0.0 && s <= RunOptions::maxSeconds))
+                throw UsageError("--seconds must be in [0, 1e7] s, got " + text);
             o.seconds = s;
         } else if (a == "--hz") {
             const std::string& text = value();
             const double hz = parseNumber(a, text);
-            if (!(std::isfinite(hz) && hz > 0.0 && hz <= 10000.0))
-                throw UsageError("--hz must be in (0, 10000] Hz, got " + text);
+            if (!(std::isfinite(hz) && hz >= RunOptions::minHz && hz <= RunOptions::maxHz))
+                throw UsageError("--hz must be in [1, 10000] Hz, got " + text);
             o.hz = hz;
         } else if (a == "--out") {
             const std::string& text = value();
@@ -62,6 +75,13 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             const std::string& text = value();
             if (text.empty()) throw UsageError("--screenshot needs a file name, got ''");
             o.screenshot = text;
+        } else if (a == "--param") {
+            const std::string& text = value();
+            const auto eq = text.find('=');
+            if (eq == std::string::npos || eq == 0)
+                throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
+            const double v = parseNumber("--param " + text.substr(0, eq), text.substr(eq + 1));
+            o.parameters.emplace_back(text.substr(0, eq), v);
         } else if (a == "--max-steps-per-frame") {
             o.maxStepsPerFrame = parseInt(a, value(), 1, 1000);
         } else if (a == "--size") {
@@ -71,10 +91,12 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             o.width = parseInt(a, text.substr(0, x), 64, 16384);
             o.height = parseInt(a, text.substr(x + 1), 64, 16384);
         } else if (!parseAccuracyOption(a, value, o)) {
-            throw UsageError("unknown argument '" + a + "' (see --help)");
+            throw UsageError("unknown argument '" + args[i] + "' (see --help)");
         }
     }
     checkAccuracyOptions(o);
+    if (o.headless && o.screenshot)
+        throw UsageError("--screenshot needs a window: a --headless run draws nothing to save");
     return o;
 }
 
@@ -89,13 +111,19 @@ std::string usage(std::string_view program, std::string_view title) {
        << "                           (graph_<i>.csv, graphs.png, graphs.root) to DIR at the end;\n"
        << "                           DIR is created and checked before the run\n"
        << "  --quiet                  no progress on stderr for long headless runs, no closing line\n"
-       << "  --hz H                   physics rate in Hz (default: the simulation's, 40 as in the paper)\n"
+       << "  --hz H                   physics rate in Hz, 1 to 10000 (default: the simulation's, 40 as in\n"
+       << "                           the paper)\n"
+       << "  --param NAME=VALUE       set one of the simulation's parameters (listed below, if it has any)\n"
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
        << accuracyUsage()
-       << "  --help                   this text\n\n"
-       << "keys (window): Space restart, P pause, Esc quit, mouse wheel zoom; the simulation may add its own.\n"
+       << "  --help                   this text\n"
+       << "  --name=value is the same as --name value.\n\n"
+       << "in a window: " << "Space restart, P pause, O one step, [ ] slower / faster, F fit the view,\n"
+       << "  Tab statistics, 1-6 debug drawing (contacts, boxes, velocities, joints, centres, sleep),\n"
+       << "  left drag moves a body, right drag pans, the wheel zooms about the cursor, Esc quits;\n"
+       << "  the simulation may add its own keys.\n"
        << "exit codes: 0 success, 1 error while running, 2 bad arguments.\n";
     return os.str();
 }

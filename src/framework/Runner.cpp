@@ -9,44 +9,110 @@
 #include "physim/cuda/ContinuousSolver.hpp"
 #endif
 
+#include "Display.hpp"
+#include "Overlay.hpp"
+
 #include <SFML/Graphics/RenderWindow.hpp>
-#include <SFML/Graphics/Font.hpp>
-#include <SFML/Graphics/RectangleShape.hpp>
-#include <SFML/Graphics/Text.hpp>
 #include <SFML/Graphics/Texture.hpp>
 #include <SFML/Window/Event.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 namespace physim {
+namespace {
 
-Runner::Runner(SimulationFactory factory, RunOptions options)
-    : factory_(std::move(factory)), options_(std::move(options)), accumulator_(1.0 / 40.0, options_.maxStepsPerFrame) {
-    if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
-#ifdef PHYSIM_WITH_CUDA
-    // Built with the CUDA layer: large continuous batches go to the GPU, or a line says why they stay on the CPU.
-    continuousSolver_ = cuda::makeContinuousSolver(std::clog);
-#endif
+// "1x", "1/4x", "2x": the time scale as the overlay shows it.
+std::string showScale(double scale) {
+    char text[32];
+    if (scale >= 1.0) std::snprintf(text, sizeof text, "%gx", scale);
+    else std::snprintf(text, sizeof text, "1/%gx", 1.0 / scale);
+    return text;
 }
 
-Runner::~Runner() = default;
+// The overlay bar's text: status, then the keys. `tallest`: with every optional item, for the bar's most height.
+std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& controls, const PaceMeter& pace,
+                                        int maxStepsPerFrame, double framesPerSecond, bool tallest) {
+    const sf::Color warning(190, 40, 0), keyColor(85, 85, 85);
+    char text[160];
+    std::vector<Overlay::Item> items;
+    std::snprintf(text, sizeof text, "t = %.2f s", sim.time);
+    items.push_back({text});
+    std::snprintf(text, sizeof text, "physics %.0f Hz", sim.physicsRate());
+    items.push_back({text});
+    std::snprintf(text, sizeof text, "%.0f FPS", framesPerSecond);
+    items.push_back({text});
+    items.push_back({"speed " + showScale(controls.timeScale())});
+    if (sim.paused || tallest) items.push_back({"PAUSED (O steps)", warning});
+    if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
+        std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
+                      pace.pace(), maxStepsPerFrame);
+        items.push_back({text, warning});
+    }
+    // The keys start a new line: a long first line of status would otherwise run into them.
+    std::string keys = Controls::keysHelp();
+    if (!sim.keysHelp().empty()) keys += "   " + sim.keysHelp();
+    bool first = true;
+    for (std::size_t from = 0; from < keys.size();) {
+        const std::size_t to = std::min(keys.find("   ", from), keys.size());
+        items.push_back({keys.substr(from, to - from), keyColor});
+        items.back().newLine = first;
+        first = false;
+        from = to == keys.size() ? to : keys.find_first_not_of(' ', to);
+    }
+    return items;
+}
+
+}  // namespace
+
+Runner::Runner(SimulationFactory factory, RunOptions options)
+    : factory_(std::move(factory)), options_(std::move(options)), accumulator_(1.0 / 40.0, options_.maxStepsPerFrame),
+      windowSize_(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)) {
+    if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
+#ifdef PHYSIM_WITH_CUDA
+    // Built with the CUDA layer: large continuous batches go to the GPU, or a line says why they stay on the CPU
+    // (not under --quiet). A GPU that fails later is always reported.
+    std::ostream silent(nullptr);
+    cuda::GpuSolverOptions gpu;
+    gpu.log = &std::clog;
+    continuousSolver_ = cuda::makeContinuousSolver(options_.quiet ? silent : std::clog, gpu);
+#endif
+}
 
 Simulation& Runner::simulation() {
     if (!simulation_) throw std::logic_error("physim: Runner has no simulation yet (call restart or run)");
     return *simulation_;
 }
 
+Runner::~Runner() = default;
+
 void Runner::restart() {
+    // A restart of the same simulation keeps what the user chose: parameter values and debug drawing.
+    std::optional<Parameters> keptParameters;
+    std::optional<DebugDrawOptions> keptDrawing;
+    if (simulation_ && !factoryChanged_) {
+        keptParameters = simulation_->parameters;
+        keptDrawing = simulation_->debugDraw;
+    }
+    controls_.forgetDrag();  // its joint lives in the old world
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
     Simulation& sim = *simulation_;
+    if (keptParameters) {
+        sim.parameters.copyValuesFrom(*keptParameters);
+    } else {
+        for (const auto& [name, value] : options_.parameters)
+            if (sim.parameters.contains(name)) sim.parameters.set(name, value);
+    }
+    factoryChanged_ = false;
     if (continuousSolver_) sim.world().setContinuousSolver(continuousSolver_);
     sim.graphsManager.setLive(!options_.headless);
     if (graphsWindow_) {  // beside the window; onCreate may place it elsewhere
@@ -60,8 +126,38 @@ void Runner::restart() {
     if (options_.hz) sim.setPhysicsRate(*options_.hz);  // the command line wins over onCreate's choice
     applyAccuracyOptions(options_, sim);
     accuracyApplied_ = sim.entities().size();
+    if (keptDrawing) sim.debugDraw = *keptDrawing;
     sim.start = true;
     accumulator_ = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
+    stepTimes_.clear();
+    pace_.clear();
+    viewSetByScene_ = sim.view != View{};
+    if (!viewSetByScene_) fitView();
+}
+
+void Runner::setFactory(SimulationFactory factory) {
+    if (!factory) throw std::invalid_argument("physim: Runner needs a simulation factory");
+    factory_ = std::move(factory);
+    factoryChanged_ = true;
+}
+
+void Runner::setPanel(std::unique_ptr<RunnerPanel> panel) { panel_ = std::move(panel); }
+
+sf::FloatRect Runner::sceneArea() const {
+    const float left = panel_ ? std::min(panel_->width(), static_cast<float>(windowSize_.x)) : 0.f;
+    float top = 0.f;
+    if (overlay_ && simulation_) {
+        // The bar at its tallest (paused, the catch-up warning shown), so the scene stays clear of it.
+        const std::vector<Overlay::Item> items =
+            overlayItems(*simulation_, controls_, pace_, accumulator_.maxStepsPerFrame(), framesPerSecond_, true);
+        top = overlay_->barHeight(items, static_cast<float>(windowSize_.x) - left);
+    }
+    return {left, top, static_cast<float>(windowSize_.x) - left, static_cast<float>(windowSize_.y) - top};
+}
+
+void Runner::fitView() {
+    Simulation& sim = simulation();
+    if (const std::optional<Aabb> bounds = sim.viewBounds()) sim.view.fit(*bounds, sceneArea(), windowSize_);
 }
 
 int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
@@ -73,41 +169,50 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         accuracyApplied_ = sim.entities().size();
     }
     int steps = 0;
-    if (!sim.paused) {
-        steps = accumulator_.advance(frameSeconds);
-        for (int i = 0; i < steps; ++i) sim.fixedStep();
+    const std::uint64_t droppedBefore = accumulator_.droppedSteps();
+    const bool singleStep = controls_.takeSingleStep();  // O: one step, asked for while paused
+    if (!sim.paused) steps = accumulator_.advance(frameSeconds * controls_.timeScale());
+    else if (singleStep) steps = 1;
+    for (int i = 0; i < steps; ++i) {
+        sim.fixedStep();
+        stepTimes_.record(sim.world().profile());
     }
+    pace_.record(frameSeconds, steps * sim.fixedTimeStep(), accumulator_.droppedSteps() - droppedBefore, sim.paused);
     sim.onDrawGraphs();
+    if (controls_.takeFitRequest()) fitView();
     if (window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
         sim.onRender(window);
+        drawDebug(*window, sim.view, sim.world(), sim.debugDraw);
         drawOverlay(*window);
+        if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it
     }
-    sim.graphsManager.render();
+    simulation().graphsManager.render();
     if (window) window->display();
     return steps;
 }
 
 void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
+    if (panel_ && panel_->handleEvent(event)) return;
     Simulation& sim = simulation();
     switch (event.type) {
         case sf::Event::Closed: quit_ = true; break;
         case sf::Event::Resized:
+            windowSize_ = {event.size.width, event.size.height};
             if (window)
                 window->setView(sf::View(sf::FloatRect(0.f, 0.f, static_cast<float>(event.size.width),
                                                        static_cast<float>(event.size.height))));
-            break;
-        case sf::Event::MouseWheelScrolled:
-            sim.view.zoom(event.mouseWheelScroll.delta > 0 ? 1.1 : 1.0 / 1.1);
+            if (!viewSetByScene_) fitView();
             break;
         case sf::Event::KeyPressed:
             sim.onEvent(event);
             if (event.key.code == sf::Keyboard::Space) restart();
             else if (event.key.code == sf::Keyboard::P) sim.paused = !sim.paused;
             else if (event.key.code == sf::Keyboard::Escape) quit_ = true;
+            else controls_.handleEvent(event, sim, window ? window->getSize() : windowSize_);
             break;
-        default: break;
+        default: controls_.handleEvent(event, sim, window ? window->getSize() : windowSize_); break;
     }
 }
 
@@ -149,22 +254,16 @@ int Runner::runHeadless() {
     return 0;
 }
 
-void Runner::drawOverlay(sf::RenderWindow& window) {
-    if (!overlayFont_) return;
-    const Simulation& sim = simulation();
-    char status[160];
-    std::snprintf(status, sizeof status, "t = %.2f s   physics %.0f Hz   %.0f FPS%s", sim.time, sim.physicsRate(),
-                  framesPerSecond_, sim.paused ? "   PAUSED" : "");
-    std::string keys = "Space restart   P pause   Esc quit   wheel zoom";
-    if (!sim.keysHelp().empty()) keys += "   " + sim.keysHelp();
-    sf::Text text(std::string(status) + "\n" + keys, *overlayFont_, 15);
-    text.setFillColor(sf::Color(30, 30, 30));
-    text.setPosition(10.f, 8.f);
-    sf::RectangleShape backing({text.getLocalBounds().width + 16.f, text.getLocalBounds().height + 18.f});
-    backing.setFillColor(sf::Color(255, 255, 255, 200));
-    backing.setPosition(2.f, 2.f);
-    window.draw(backing);  // pixel space: the window's default view
-    window.draw(text);
+float Runner::drawOverlay(sf::RenderWindow& window) {
+    if (!overlay_) return 0.f;
+    const float left = panel_ ? panel_->width() : 0.f;
+    const float height =
+        overlay_->drawBar(window, left, static_cast<float>(window.getSize().x) - left,
+                          overlayItems(simulation(), controls_, pace_, accumulator_.maxStepsPerFrame(),
+                                       framesPerSecond_, false));
+    if (controls_.statsShown())
+        overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), stepTimes_));
+    return height;
 }
 
 int Runner::runWindow() {
@@ -173,11 +272,15 @@ int Runner::runWindow() {
     sf::RenderWindow window(sf::VideoMode(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)),
                             "physim", sf::Style::Default, context);
     window.setFramerateLimit(60);
-    overlayFont_ = std::make_unique<sf::Font>();
-    if (!overlayFont_->loadFromFile("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf")) {
-        std::cerr << "physim: DejaVuSans.ttf not found (Debian: fonts-dejavu-core); the overlay is off\n";
-        overlayFont_.reset();
-    }
+    windowSize_ = window.getSize();
+    overlay_ = std::make_unique<Overlay>();
+    struct PanelOnWindow {  // the panel lets go of the window before the window goes, even on an exception
+        RunnerPanel* panel;
+        ~PanelOnWindow() {
+            if (panel) panel->close();
+        }
+    } panelOnWindow{panel_.get()};
+    if (panel_) panel_->open(window);
     // The live graphs window opens beside this one (the pair centred when the screen is wide enough).
     const sf::VideoMode desktop = sf::VideoMode::getDesktopMode();
     const SideBySide layout = placeBeside(options_.width, options_.height, static_cast<int>(desktop.width),
@@ -217,7 +320,8 @@ int Runner::runWindow() {
     return 0;
 }
 
-int runMain(int argc, const char* const* argv, const SimulationFactory& factory) {
+int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
+            const std::function<void(Runner&)>& setup) {
     const std::string program = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : "physim";
     RunOptions options;
     try {
@@ -229,17 +333,30 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory)
     }
     try {
         if (options.help) {
-            std::cout << usage(program, factory()->title());
+            const std::unique_ptr<Simulation> sim = factory();
+            std::cout << usage(program, sim->title());
+            if (!sim->parameters.empty())
+                std::cout << "\nparameters (--param name=value):\n" << sim->parameters.describe();
             return 0;
         }
+        // Parameters are checked against the simulation's declarations before anything runs.
+        const std::unique_ptr<Simulation> probe = factory();
+        try {
+            for (const auto& [name, value] : options.parameters) probe->parameters.set(name, value);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << program << ": --param: " << e.what() << "\n";
+            return 2;
+        }
+        std::optional<DisplayConnection> display;  // held open until the run ends (Display.hpp says why)
         if (!options.headless) {
-            const char* display = std::getenv("DISPLAY");
-            if (!display || !*display) {
-                std::cerr << program << ": no display to open a window on; use --headless (or run under xvfb-run)\n";
+            display.emplace();
+            if (!display->problem().empty()) {
+                std::cerr << program << ": " << display->problem() << "; use --headless (or run under xvfb-run)\n";
                 return 2;
             }
         }
         Runner runner(factory, options);
+        if (setup) setup(runner);
         return runner.run();
     } catch (const std::exception& e) {
         std::cerr << program << ": error: " << e.what() << "\n";

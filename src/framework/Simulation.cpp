@@ -45,6 +45,15 @@ Entity* Simulation::findEntity(int id) const {
     return nullptr;
 }
 
+std::optional<Aabb> Simulation::viewBounds() const {
+    std::optional<Aabb> bounds;
+    for (BodyId id : world_.bodies()) {
+        const Aabb box = computeAabb(world_.shape(id), world_.transform(id));
+        bounds = bounds ? Aabb::merged(*bounds, box) : box;
+    }
+    return bounds;
+}
+
 void Simulation::setPhysicsRate(double hz) {
     requireInRange("physics rate (Hz)", hz, 1e-3, 1e4);
     fixedTimeStep_ = 1.0 / hz;

@@ -183,7 +183,7 @@ TEST(Step, OffsetShapesKeepMomentumInACollision) {
     b.position = {1.0, 0.0};
     b.velocity = {-1.0, 0.0};
     const BodyId ia = world.createBody(a), ib = world.createBody(b);
-    auto momentum = [&] { return world.mass(ia) * world.velocity(ia) + world.mass(ib) * world.velocity(ib); };
+    auto momentum = [&]() -> Vec2 { return world.mass(ia) * world.velocity(ia) + world.mass(ib) * world.velocity(ib); };
     auto angular = [&] {
         double l = 0.0;
         for (const BodyId id : {ia, ib})

@@ -48,6 +48,8 @@ public:
     void destroyBody(BodyId id);
     bool contains(BodyId id) const;
     std::size_t bodyCount() const;
+    /// The live bodies in creation-slot order (for drawing and inspection).
+    std::vector<BodyId> bodies() const;
 
     BodyType type(BodyId id) const;
     const Geometry& shape(BodyId id) const;
@@ -135,7 +137,7 @@ public:
     bool contains(JointId id) const;
     std::size_t jointCount() const;
     JointType jointType(JointId id) const;
-    /// The joint's rod length, m (distance joints).
+    /// The joint's rod length, m (distance joints; others are refused with std::invalid_argument).
     double jointLength(JointId id) const;
     /// The joint's anchors in world coordinates, m (a mouse joint's first anchor is its target).
     std::pair<Vec2, Vec2> jointAnchors(JointId id) const;

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace physim {
@@ -19,6 +20,8 @@ struct RunOptions {
     std::optional<double> hz;          ///< physics rate; the simulation's own default otherwise (40 Hz)
     std::optional<std::string> screenshot;  ///< window mode: the last frame is saved to this PNG at the end
     bool quiet = false;                ///< no progress on stderr and no closing line
+    /// --param name=value, in order: the simulation's Parameters set before onCreate.
+    std::vector<std::pair<std::string, double>> parameters;
     int maxStepsPerFrame = 8;          ///< cap on catch-up steps per window frame
     int width = 1280;                  ///< window size, pixels
     int height = 720;
@@ -29,6 +32,10 @@ struct RunOptions {
     std::optional<double> precision;        ///< sampled detection's spacing, fraction of the step, (0, 1]
 
     static constexpr double defaultHeadlessSeconds = 10.0;
+    /// Longest --seconds: 10^7 s (116 days) is 10^11 steps at the highest rate, still counted exactly.
+    static constexpr double maxSeconds = 1e7;
+    static constexpr double minHz = 1.0;  ///< a step is at most 1 s (World::step's limit)
+    static constexpr double maxHz = 10000.0;
 };
 
 /// A command line that cannot be run; what() names the offending argument and value. Exit code 2.
@@ -37,7 +44,7 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-/// Parses the arguments after the program name. Throws UsageError.
+/// Parses the arguments after the program name; `--name value` and `--name=value` both work. Throws UsageError.
 RunOptions parseRunOptions(const std::vector<std::string>& args);
 std::string usage(std::string_view program, std::string_view title);
 

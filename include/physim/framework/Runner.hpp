@@ -3,9 +3,14 @@
 //   onCreate once; then per frame: onUpdate, update of each entity, zero or more fixed steps,
 //   onDrawGraphs, render of each entity, onRender, graphs refresh.
 
+#include "physim/framework/Controls.hpp"
 #include "physim/framework/FixedStepAccumulator.hpp"
+#include "physim/framework/PaceMeter.hpp"
 #include "physim/framework/RunOptions.hpp"
 #include "physim/framework/Simulation.hpp"
+#include "physim/framework/Stats.hpp"
+
+#include <SFML/Graphics/Rect.hpp>
 
 #include <array>
 #include <functional>
@@ -22,7 +27,27 @@ class RenderWindow;
 
 namespace physim {
 
+class Overlay;  // src/framework/Overlay.hpp
+class Runner;
+
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
+
+/// A panel beside the scene, such as the gallery's scene list and sliders: it sees the window's events first
+/// and draws over each finished frame.
+class RunnerPanel {
+public:
+    virtual ~RunnerPanel() = default;
+    /// The window exists (called once, before the first simulation is made).
+    virtual void open(sf::RenderWindow& window) = 0;
+    /// The window is about to close: let go of everything tied to it.
+    virtual void close() = 0;
+    /// true: the panel used the event, and neither the simulation nor the controls see it.
+    virtual bool handleEvent(const sf::Event& event) = 0;
+    /// Draws the panel over the frame, before it is shown; it may change the runner (switch scenes).
+    virtual void draw(sf::RenderWindow& window, Runner& runner, double frameSeconds) = 0;
+    /// Pixels at the window's left the panel covers: the scene is fitted to their right.
+    virtual float width() const = 0;
+};
 
 class Runner {
 public:
@@ -40,20 +65,34 @@ public:
     /// One frame of `frameSeconds` real time. `window` may be null (headless): nothing is drawn then.
     /// Returns the number of fixed steps run.
     int frame(double frameSeconds, sf::RenderWindow* window);
-    /// A window event: key presses go to onEvent, then Space restarts, P pauses, Esc quits.
+    /// A window event: the panel's first; key presses go to onEvent, then Space restarts, P pauses, Esc quits,
+    /// and the rest (mouse, the other keys) go to the controls. `window` may be null: the window size is then
+    /// --size's.
     void handleEvent(const sf::Event& event, sf::RenderWindow* window);
     bool quitRequested() const { return quit_; }
 
     Simulation& simulation();
     const FixedStepAccumulator& accumulator() const { return accumulator_; }
+    Controls& controls() { return controls_; }
+    const PaceMeter& pace() const { return pace_; }
+    const StepTimes& stepTimes() const { return stepTimes_; }
+    /// The next restart makes its simulation with `factory` (the gallery switching scenes), with that
+    /// simulation's own parameter values and debug drawing.
+    void setFactory(SimulationFactory factory);
+    void setPanel(std::unique_ptr<RunnerPanel> panel);
+    /// Fits the simulation's view to its viewBounds() inside sceneArea().
+    void fitView();
+    /// The part of the window the scene is fitted into: below the overlay's bar, right of the panel (px).
+    sf::FloatRect sceneArea() const;
     /// summary.json and the graphs' files into `directory`. Returns the paths written.
     std::vector<std::string> writeOutputs(const std::string& directory) const;
 
 private:
     int runHeadless();
     int runWindow();
-    /// Top-left overlay: simulated time, physics rate, frames per second, pause state and the keys.
-    void drawOverlay(sf::RenderWindow& window);
+    /// The bar across the top (simulated time, physics rate, frames per second, time scale, pause, the
+    /// catch-up warning, the keys) and, on demand, the statistics. Returns the bar's height (px).
+    float drawOverlay(sf::RenderWindow& window);
 
     SimulationFactory factory_;
     RunOptions options_;
@@ -61,14 +100,24 @@ private:
     std::shared_ptr<ContinuousSolver> continuousSolver_;  // the CUDA layer's, in a `cuda` build; else null (CPU)
     FixedStepAccumulator accumulator_;
     bool quit_ = false;
-    std::unique_ptr<sf::Font> overlayFont_;  // null when no font file is found: no overlay then
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
+    bool factoryChanged_ = false;  // setFactory since the last restart: start from the new scene's defaults
+    bool viewSetByScene_ = false;  // onCreate set the view: the runner does not refit it on resize
+    Controls controls_;
+    PaceMeter pace_;
+    StepTimes stepTimes_;
+    std::unique_ptr<RunnerPanel> panel_;
+    std::unique_ptr<Overlay> overlay_;  // window runs only
+    sf::Vector2u windowSize_;           // px: the window's, or --size's without one
     double framesPerSecond_ = 0.0;
     std::size_t accuracyApplied_ = 0;  // entities given the command line's accuracy knobs so far
 };
 
-/// Parses the command line and runs. Prints usage errors with exit code 2, runtime errors with 1.
-int runMain(int argc, const char* const* argv, const SimulationFactory& factory);
+/// Parses the command line and runs. Prints usage errors (bad arguments or parameters, no display to open a
+/// window on) with exit code 2, runtime errors with 1. `setup`, when given, prepares the runner before it runs
+/// (the gallery adds its panel).
+int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
+            const std::function<void(Runner&)>& setup = {});
 
 template <class T>
 int runMain(int argc, const char* const* argv) {

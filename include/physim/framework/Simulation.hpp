@@ -3,11 +3,14 @@
 // It owns its entities, its physics World and its GraphsManager. A Runner drives it (window or headless).
 
 #include "physim/core/World.hpp"
+#include "physim/framework/DebugDraw.hpp"
 #include "physim/framework/Entity.hpp"
+#include "physim/framework/Parameters.hpp"
 #include "physim/framework/View.hpp"
 #include "physim/graphs/GraphsManager.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -28,6 +31,11 @@ public:
     bool start = false;            ///< true once onCreate has run
     bool paused = false;           ///< no fixed steps while paused (P toggles it)
     View view;                     ///< what the window shows: centre and zoom, in metres
+    /// Debug drawing over the scene (keys 1 to 6 toggle each); a simulation may switch some on in onCreate.
+    DebugDrawOptions debugDraw;
+    /// Adjustable values (declare them in the constructor, read them in onCreate): the gallery's sliders and
+    /// `--param name=value`. The runner carries them over when it makes the simulation again.
+    Parameters parameters;
 
     Simulation();
     virtual ~Simulation();
@@ -44,6 +52,10 @@ public:
     virtual std::string title() const { return "physim"; }
     /// The simulation's own keys, shown in the window's overlay next to the runner's (e.g. "N: kick").
     virtual std::string keysHelp() const { return ""; }
+    /// The region (m) the window fits its view to at the start, on resize and on F, unless onCreate set
+    /// `view` itself. By default the bounding box of every body after onCreate; override to frame the subject
+    /// (a flight's whole path, a stack without its wide ground). nullopt: leave the view alone.
+    virtual std::optional<Aabb> viewBounds() const;
 
     /// Takes ownership, gives the entity the next id (1, 2, ...) and creates its physics body. Throws
     /// std::invalid_argument for a null entity, std::logic_error for one already in a simulation.

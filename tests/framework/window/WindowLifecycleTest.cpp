@@ -2,6 +2,7 @@
 // phase comes after the fixed steps and onDrawGraphs, entities first, then onRender.
 
 #include "support/Recorder.hpp"
+#include "support/SfmlEvents.hpp"
 
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Runner.hpp>
@@ -34,12 +35,7 @@ TEST(WindowLifecycle, RenderPhaseFollowsTheGraphs) {
     EXPECT_EQ(log, expected);
 }
 
-sf::Event keyPress(sf::Keyboard::Key key) {
-    sf::Event e;
-    e.type = sf::Event::KeyPressed;
-    e.key = {key, false, false, false, false};
-    return e;
-}
+using test::keyPress;
 
 TEST(WindowLifecycle, KeysReachOnEventThenPauseRestartQuit) {
     CallLog log;

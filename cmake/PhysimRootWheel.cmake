@@ -1,0 +1,28 @@
+# physim_find_root_wheel(<variable>): sets <variable> to the directory holding ROOTConfig.cmake of the ROOT wheel
+# that scripts/setup.sh installs (a virtual environment under the user's cache, scripts/common.sh says where),
+# or leaves it unset when there is none. Used by physim's build and by its installed package, so an installed
+# physim finds the ROOT of the machine it is used on, never a path of the machine that built it.
+function(physim_find_root_wheel variable)
+  if(DEFINED ENV{PHYSIM_DEPS_DIR})
+    set(deps "$ENV{PHYSIM_DEPS_DIR}")
+  elseif(DEFINED ENV{XDG_CACHE_HOME})
+    set(deps "$ENV{XDG_CACHE_HOME}/physim")
+  else()
+    set(deps "$ENV{HOME}/.cache/physim")
+  endif()
+  file(GLOB dirs "${deps}/root-venv/lib/python3*/site-packages/ROOT/cmake")
+  if(dirs)
+    list(GET dirs 0 dir)
+    set(${variable} "${dir}" PARENT_SCOPE)
+  endif()
+endfunction()
+
+# physim_root_wheel_link_dir(<variable> <ROOT_DIR>): the wheel bundles libraries (bz2, freetype, ...) in
+# site-packages/root.libs, found at run time through RPATH; the linker must be told where they are when it links
+# an executable. Sets <variable> to that folder, or leaves it unset for a ROOT that is not the wheel.
+function(physim_root_wheel_link_dir variable root_dir)
+  get_filename_component(libs "${root_dir}/../../root.libs" ABSOLUTE)
+  if(IS_DIRECTORY "${libs}")
+    set(${variable} "${libs}" PARENT_SCOPE)
+  endif()
+endfunction()

@@ -1,0 +1,15 @@
+#include "Scenes.hpp"
+
+namespace physim::examples {
+
+const std::vector<Scene>& scenes() {
+    static const std::vector<Scene> all{
+        {"falling_box", makeFallingBox}, {"test_scene", makeTestScene},       {"circles", makeCircles},
+        {"gas", makeGas},                {"pendulum", makePendulum},          {"rope", makeRope},
+        {"projectile", makeProjectile},  {"incline", makeIncline},            {"collisions", makeCollisions},
+        {"newtons_cradle", makeNewtonsCradle}, {"pyramid", makePyramid},
+    };
+    return all;
+}
+
+}  // namespace physim::examples

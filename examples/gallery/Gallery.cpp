@@ -1,0 +1,150 @@
+#include "Gallery.hpp"
+
+#include <imgui.h>
+
+#include <SFML/Graphics/RenderWindow.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace physim::examples {
+
+Gallery::Gallery(std::vector<Scene> scenes, std::size_t first) : scenes_(std::move(scenes)), current_(first) {
+    if (first >= scenes_.size()) throw std::invalid_argument("physim: the gallery's first scene is not in its list");
+}
+
+Gallery::~Gallery() = default;
+
+void Gallery::open(sf::RenderWindow& window) { imgui_ = std::make_unique<ImGuiSfml>(window); }
+void Gallery::close() { imgui_.reset(); }
+
+bool Gallery::handleEvent(const sf::Event& event) { return imgui_ && imgui_->processEvent(event); }
+
+namespace {
+
+sf::FloatRect lastItemRect() {
+    const ImVec2 lo = ImGui::GetItemRectMin(), hi = ImGui::GetItemRectMax();
+    return {lo.x, lo.y, hi.x - lo.x, hi.y - lo.y};
+}
+
+}  // namespace
+
+std::optional<sf::FloatRect> Gallery::itemRect(const std::string& name) const {
+    for (const auto& [item, rect] : itemRects_)
+        if (item == name) return rect;
+    return std::nullopt;
+}
+
+void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds) {
+    if (!imgui_) return;
+    imgui_->newFrame(frameSeconds);
+    itemRects_.clear();
+    ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
+    ImGui::SetNextWindowSize(ImVec2(panelWidth, static_cast<float>(window.getSize().y)));
+    ImGui::Begin("physim gallery", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings);
+    drawScenes(runner);
+    drawParameters(runner);
+    drawRunControls(runner);
+    drawDebugSwitches(runner);
+    ImGui::Separator();
+    ImGui::TextWrapped("Left drag moves a body, right drag pans, the wheel zooms. The keys are in the bar above "
+                       "the scene.");
+    ImGui::End();
+    imgui_->render();
+}
+
+void Gallery::drawScenes(Runner& runner) {
+    ImGui::TextUnformatted("Scenes");
+    std::optional<std::size_t> chosen;
+    for (std::size_t i = 0; i < scenes_.size(); ++i) {
+        if (ImGui::Selectable(scenes_[i].name.c_str(), i == current_)) chosen = i;
+        itemRects_.emplace_back(scenes_[i].name, lastItemRect());
+    }
+    ImGui::Separator();
+    ImGui::TextWrapped("%s", runner.simulation().title().c_str());
+    if (chosen && *chosen != current_) {
+        current_ = *chosen;
+        runner.setFactory(scenes_[current_].make);
+        runner.restart();
+        edits_.clear();
+    }
+}
+
+void Gallery::drawParameters(Runner& runner) {
+    Parameters& parameters = runner.simulation().parameters;
+    if (parameters.empty()) return;
+    ImGui::Separator();
+    ImGui::TextUnformatted("Parameters (applied when the slider is let go)");
+    const std::vector<Parameter>& all = parameters.all();
+    if (edits_.size() != all.size() || !ImGui::IsAnyItemActive()) {  // no slider held: show the values in use
+        edits_.clear();
+        for (const Parameter& p : all) edits_.push_back(p.value);
+    }
+    std::optional<std::size_t> changed;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const Parameter& p = all[i];
+        ImGui::PushID(static_cast<int>(i));
+        ImGui::TextUnformatted(p.label.c_str());
+        ImGui::SetNextItemWidth(-1.f);
+        if (p.integer) {
+            int v = static_cast<int>(edits_[i]);
+            if (ImGui::SliderInt("##value", &v, static_cast<int>(p.min), static_cast<int>(p.max))) edits_[i] = v;
+        } else {
+            ImGui::SliderScalar("##value", ImGuiDataType_Double, &edits_[i], &p.min, &p.max, "%.3g");
+        }
+        itemRects_.emplace_back(p.name, lastItemRect());
+        if (ImGui::IsItemDeactivatedAfterEdit()) changed = i;
+        ImGui::PopID();
+    }
+    if (ImGui::Button("Defaults")) {
+        runner.setFactory(scenes_[current_].make);  // a fresh scene: its own defaults
+        runner.restart();
+    } else if (changed) {
+        parameters.set(all[*changed].name, edits_[*changed]);
+        runner.restart();  // keeps the values of the simulation it replaces
+    }
+}
+
+void Gallery::drawRunControls(Runner& runner) {
+    ImGui::Separator();
+    Simulation& sim = runner.simulation();
+    Controls& controls = runner.controls();
+    ImGui::Checkbox("Paused", &sim.paused);
+    ImGui::SameLine();
+    if (ImGui::Button("Step")) {
+        sim.paused = true;
+        controls.requestSingleStep();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Restart")) runner.restart();
+    ImGui::SameLine();
+    if (ImGui::Button("Fit view")) controls.requestFit();
+    float scale = static_cast<float>(controls.timeScale());
+    ImGui::TextUnformatted("Time scale (simulated s per real s)");
+    ImGui::SetNextItemWidth(-1.f);
+    if (ImGui::SliderFloat("##timescale", &scale, static_cast<float>(Controls::minTimeScale),
+                           static_cast<float>(Controls::maxTimeScale), "%.3gx", ImGuiSliderFlags_Logarithmic))
+        controls.setTimeScale(std::clamp<double>(scale, Controls::minTimeScale, Controls::maxTimeScale));
+}
+
+void Gallery::drawDebugSwitches(Runner& runner) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("Debug drawing");
+    DebugDrawOptions& d = runner.simulation().debugDraw;
+    ImGui::Checkbox("Contacts", &d.contacts);
+    ImGui::SameLine(150.f);
+    ImGui::Checkbox("Bounding boxes", &d.boxes);
+    ImGui::Checkbox("Velocities", &d.velocities);
+    ImGui::SameLine(150.f);
+    ImGui::Checkbox("Joints", &d.joints);
+    ImGui::Checkbox("Centres of mass", &d.centres);
+    ImGui::SameLine(150.f);
+    ImGui::Checkbox("Sleep (dimmed)", &d.sleep);
+    bool stats = runner.controls().statsShown();
+    if (ImGui::Checkbox("Statistics", &stats)) runner.controls().setStatsShown(stats);
+}
+
+}  // namespace physim::examples

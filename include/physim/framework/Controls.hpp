@@ -1,0 +1,82 @@
+#pragma once
+// What the user does to a running simulation in a window, with the mouse and keys (the runner passes events
+// here after the simulation's own onEvent):
+//   left drag    moves a dynamic body through a mouse joint (a soft spring to the cursor with a force cap, so
+//                the body pushes others and stops at walls)
+//   right drag   pans; wheel zooms about the cursor
+//   O            one fixed step (pauses first when running)
+//   [ and ]      slower / faster: time scale halved or doubled, 1/16x to 8x
+//   F            fits the view to the scene
+//   Tab          statistics on or off
+//   1 to 6       debug draw: contacts, bounding boxes, velocities, joints, centres of mass, sleeping bodies
+
+#include "physim/core/Joint.hpp"
+#include "physim/framework/DebugDraw.hpp"
+
+#include <SFML/System/Vector2.hpp>
+
+#include <optional>
+#include <string>
+
+namespace sf {
+class Event;
+}
+
+namespace physim {
+
+class Simulation;
+
+class Controls {
+public:
+    static constexpr double minTimeScale = 1.0 / 16.0;
+    static constexpr double maxTimeScale = 8.0;
+    /// The mouse joint's spring (Box2D's samples use the same): stiff enough to follow the cursor closely,
+    /// soft enough that a grabbed body never jerks.
+    static constexpr double dragHertz = 5.0;
+    static constexpr double dragDampingRatio = 0.7;
+    /// The pull is capped at this many times the body's weight (with g at least 9.81 m/s^2, so bodies drag
+    /// in zero gravity too).
+    static constexpr double dragForcePerWeight = 1000.0;
+
+    /// Handles a mouse or control-key event for `sim` shown in a window of `windowSize` pixels. Returns true
+    /// when the event was one of the controls'.
+    bool handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u windowSize);
+
+    /// Simulated seconds per real second, in [minTimeScale, maxTimeScale]. Throws std::invalid_argument
+    /// outside.
+    double timeScale() const { return timeScale_; }
+    void setTimeScale(double scale);
+    void slower();
+    void faster();
+
+    /// True once after O was pressed (the runner then runs exactly one fixed step).
+    bool takeSingleStep();
+    void requestSingleStep() { singleStep_ = true; }
+    /// True once after F was pressed.
+    bool takeFitRequest();
+    void requestFit() { fit_ = true; }
+
+    bool statsShown() const { return statsShown_; }
+    void setStatsShown(bool shown) { statsShown_ = shown; }
+
+    /// The mouse joint of the body being dragged, if any.
+    std::optional<JointId> dragJoint() const { return drag_; }
+    /// Lets go of the dragged body; forget (no World call) when the simulation is about to be replaced.
+    void releaseDrag(Simulation& sim);
+    void forgetDrag();
+
+    /// The keys, for the window's overlay.
+    static std::string keysHelp();
+
+private:
+    void startDrag(Simulation& sim, const Vec2& point);
+
+    double timeScale_ = 1.0;
+    bool singleStep_ = false;
+    bool fit_ = false;
+    bool statsShown_ = false;
+    std::optional<JointId> drag_;
+    std::optional<sf::Vector2i> panFrom_;  // pixel where the right button went down / last moved
+};
+
+}  // namespace physim

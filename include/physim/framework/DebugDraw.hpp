@@ -1,0 +1,36 @@
+#pragma once
+// Debug drawing over a scene: what the engine knows that the meshes do not show. Drawn from the World's public
+// getters only, in pixels (fixed line widths at any zoom).
+
+#include "physim/core/Contact.hpp"
+#include "physim/framework/View.hpp"
+
+#include <vector>
+
+namespace sf {
+class RenderTarget;
+}
+
+namespace physim {
+
+class World;
+
+struct DebugDrawOptions {
+    bool contacts = false;    ///< contact points (red) and normals (blue, from A to B); resting ones dimmed
+    bool boxes = false;       ///< bounding boxes
+    bool velocities = false;  ///< velocity arrows: the distance each body covers in 0.1 s
+    bool joints = false;      ///< joint lines between their anchors; a mouse joint to its target
+    bool centres = false;     ///< centres of mass (body origins)
+    bool sleep = false;       ///< sleeping bodies dimmed
+
+    bool any() const { return contacts || boxes || velocities || joints || centres || sleep; }
+};
+
+/// Draws what `options` asks for, over the scene, into a target whose current view is the pixel view.
+void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options);
+
+/// Contacts of bodies at rest, which the step no longer computes (a sleeping body against a sleeping or
+/// static one): the manifolds of every such touching pair, from the same narrow phase the step uses.
+std::vector<Manifold> restingContacts(const World& world);
+
+}  // namespace physim

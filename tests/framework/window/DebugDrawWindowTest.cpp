@@ -1,0 +1,137 @@
+// Debug drawing rendered off screen (needs a display for the OpenGL context: run under Xvfb by
+// tests/support/with-display.sh), checked pixel by pixel where each item must appear: a contact point's dot,
+// a resting contact's ring, a bounding box's edge, a velocity arrow, a joint's line, a centre's cross, and the
+// veil over a sleeping body.
+
+#include <physim/core/World.hpp>
+#include <physim/framework/DebugDraw.hpp>
+
+#include <SFML/Graphics/RenderTexture.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace physim {
+namespace {
+
+constexpr double kDt = 1.0 / 60.0;
+
+// Background white; the view maps the world origin to the texture's centre at 100 px/m.
+struct Canvas {
+    sf::RenderTexture texture;
+    View view;
+    sf::Image image;
+
+    Canvas() { EXPECT_TRUE(texture.create(800, 600)); }
+    void draw(const World& world, const DebugDrawOptions& options, const char* name) {
+        texture.clear(sf::Color::White);
+        drawDebug(texture, view, world, options);
+        texture.display();
+        image = texture.getTexture().copyToImage();
+        if (const char* dir = std::getenv("PHYSIM_TEST_SHOTS"))
+            image.saveToFile(std::string(dir) + "/" + name + ".png");
+    }
+    sf::Color at(const Vec2& world) const {
+        const sf::Vector2f p = view.worldToPixels(texture.getSize()).transformPoint(float(world.x()), float(world.y()));
+        return image.getPixel(static_cast<unsigned>(std::lround(p.x)), static_cast<unsigned>(std::lround(p.y)));
+    }
+};
+
+bool reddish(sf::Color c) { return c.r > 150 && c.g < 120 && c.b < 120; }
+
+BodyId ground(World& world) {
+    BodyDef def;
+    def.type = BodyType::Static;
+    def.shape = makeBox(3.5, 0.25);
+    def.position = {0.0, -2.25};  // top at y = -2
+    return world.createBody(def);
+}
+
+TEST(DebugDrawWindow, ContactsAwakeAndResting) {
+    World world;
+    ground(world);
+    BodyDef box;
+    box.shape = makeBox(0.5, 0.5);
+    box.position = {-1.5, -1.5};
+    box.allowSleep = false;  // stays awake: its contacts are the step's
+    world.createBody(box);
+    box.position = {1.5, -1.5};
+    box.allowSleep = true;
+    const BodyId sleeper = world.createBody(box);
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    world.step(kDt);
+    ASSERT_FALSE(world.isAwake(sleeper));
+    ASSERT_EQ(world.contacts().size(), 1u) << "only the awake box's contact is computed by the step";
+
+    Canvas canvas;
+    DebugDrawOptions options;
+    options.contacts = true;
+    canvas.draw(world, options, "debug_contacts");
+    // Each box touches the ground at its two bottom corners, y = -2 (within the 5 mm slop: under a pixel).
+    // (Sampled 2.5 px beside each point: the normal's 2 px line covers the point itself.)
+    EXPECT_TRUE(reddish(canvas.at({-2.0 + 0.025, -2.0}))) << "awake contact point: a red dot";
+    EXPECT_TRUE(reddish(canvas.at({-1.0 + 0.025, -2.0})));
+    const sf::Color ring = canvas.at({1.0 + 0.03, -2.0});
+    EXPECT_NE(ring, sf::Color::White) << "resting contact point: a ring";
+    EXPECT_LT(ring.r - ring.g, 150) << "faded, not the awake red";
+    // The normal points from the ground (A) up into the box: blue above the point, nothing below it.
+    const sf::Color normal = canvas.at({-2.0, -2.0 + 0.2});
+    EXPECT_GT(normal.b, 150);
+    EXPECT_LT(normal.r, 120);
+    EXPECT_EQ(canvas.at({-2.0, -2.0 - 0.2}), sf::Color::White);
+}
+
+TEST(DebugDrawWindow, BoxesVelocitiesJointsCentresAndSleep) {
+    WorldSettings settings;
+    settings.gravity = Vec2::Zero();
+    World world(settings);
+    BodyDef def;
+    def.shape = makeBox(0.5, 0.5);
+    def.angle = M_PI / 4;  // its box is wider than the shape: the corners of the box are empty space
+    def.position = {-2.0, 1.0};
+    world.createBody(def);
+    def.angle = 0.0;
+    def.position = {0.0, 1.0};
+    def.velocity = {10.0, 0.0};  // arrow of 1 m (0.1 s of travel) to the right
+    const BodyId mover = world.createBody(def);
+    def.velocity = Vec2::Zero();
+    def.position = {2.0, -1.0};
+    const BodyId sleeper = world.createBody(def);
+    world.setAwake(sleeper, false);
+    def.type = BodyType::Static;
+    def.position = {-2.0, -1.5};
+    const BodyId anchor = world.createBody(def);
+    DistanceJointDef rod;
+    rod.bodyA = anchor;
+    rod.bodyB = mover;
+    const JointId joint = world.createDistanceJoint(rod);
+    const auto [a, b] = world.jointAnchors(joint);
+
+    Canvas canvas;
+    DebugDrawOptions options;
+    options.boxes = options.velocities = options.joints = options.centres = options.sleep = true;
+    canvas.draw(world, options, "debug_items");
+    const double h = 0.5 * std::sqrt(2.0);  // the rotated box's half-size
+    const sf::Color box = canvas.at({-2.0 - h, 1.0 + 0.3});
+    EXPECT_GT(box.r, 150) << "bounding box edge: magenta";
+    EXPECT_GT(box.b, 150);
+    EXPECT_LT(box.g, 80);
+    const sf::Color arrow = canvas.at({0.5, 1.0});
+    EXPECT_GT(arrow.g, 100) << "velocity arrow: green";
+    EXPECT_LT(arrow.r, 80);
+    EXPECT_EQ(canvas.at({0.0, 1.0 + 0.3}), sf::Color::White) << "nothing drawn inside the moving box";
+    const sf::Color line = canvas.at(0.5 * (a + b));
+    EXPECT_LT(line.r, 80) << "joint line: teal";
+    EXPECT_GT(line.g, 90);
+    EXPECT_GT(line.b, 90);
+    EXPECT_LT(canvas.at({-2.0, 1.0 + 0.04}).r, 60) << "centre of mass: a dark cross";
+    const sf::Color veil = canvas.at({2.2, -0.8});
+    EXPECT_LT(veil.r, 255) << "the sleeping body is veiled";
+    EXPECT_GT(veil.r, 200) << "lightly";
+}
+
+}  // namespace
+}  // namespace physim
