@@ -15,7 +15,7 @@ if(PHYSIM_BUILD_FRAMEWORK)
       set(ROOT_DIR "${_physim_root_dir}" CACHE PATH "Directory with ROOTConfig.cmake")
     endif()
   endif()
-  find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO)
+  find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO Tree)
   physim_root_wheel_link_dir(PHYSIM_ROOT_LIBS_DIR "${ROOT_DIR}")
 endif()
 

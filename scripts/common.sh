@@ -6,6 +6,7 @@ PHYSIM_ROOT_DIR="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 PHYSIM_DEPS_DIR="${PHYSIM_DEPS_DIR:-${XDG_CACHE_HOME:-$HOME/.cache}/physim}"
 PHYSIM_ROOT_VENV="$PHYSIM_DEPS_DIR/root-venv"
 PHYSIM_ROOT_WHEEL_VERSION="${PHYSIM_ROOT_WHEEL_VERSION:-0.1a12}"
+PHYSIM_DASK_VERSION="${PHYSIM_DASK_VERSION:-2026.8.0}"
 
 physim_log() { printf '[physim] %s\n' "$*" >&2; }
 

@@ -3,6 +3,7 @@
 #   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML (and X11), Dear ImGui, GoogleTest,
 #     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
+#   - Dask (`dask`, `distributed` from PyPI) in the same environment: scripts/study.sh --dask runs cases on a cluster
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
@@ -54,6 +55,15 @@ install_root_wheel() {
   [ -e "$mock" ] || ln -s site-packages "$mock"
 }
 
+install_dask() {
+  local want="$PHYSIM_DASK_VERSION"
+  if ! "$PHYSIM_ROOT_VENV/bin/python" -c "import importlib.metadata as m, sys; sys.exit(not all(m.version(p) == '$want' for p in ('dask', 'distributed')))" 2>/dev/null; then
+    physim_log "installing dask and distributed $want (PyPI) into $PHYSIM_ROOT_VENV"
+    "$PHYSIM_ROOT_VENV/bin/pip" install -q --disable-pip-version-check "dask==$want" "distributed==$want"
+  fi
+}
+
 install_apt_packages
 install_root_wheel
+install_dask
 physim_log "setup complete (ROOT: $(physim_root_cmake_dir))"

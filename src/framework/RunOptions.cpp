@@ -1,5 +1,7 @@
 #include "physim/framework/RunOptions.hpp"
 
+#include "AccuracyOptions.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -88,10 +90,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, got '" + text + "'");
             o.width = parseInt(a, text.substr(0, x), 64, 16384);
             o.height = parseInt(a, text.substr(x + 1), 64, 16384);
-        } else {
+        } else if (!parseAccuracyOption(a, value, o)) {
             throw UsageError("unknown argument '" + args[i] + "' (see --help)");
         }
     }
+    checkAccuracyOptions(o);
     if (o.headless && o.screenshot)
         throw UsageError("--screenshot needs a window: a --headless run draws nothing to save");
     return o;
@@ -114,6 +117,7 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
+       << accuracyUsage()
        << "  --help                   this text\n"
        << "  --name=value is the same as --name value.\n\n"
        << "in a window: " << "Space restart, P pause, O one step, [ ] slower / faster, F fit the view,\n"

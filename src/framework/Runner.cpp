@@ -1,5 +1,6 @@
 #include "physim/framework/Runner.hpp"
 
+#include "AccuracyOptions.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
@@ -123,6 +124,8 @@ void Runner::restart() {
     if (options_.hz) sim.setPhysicsRate(*options_.hz);
     sim.onCreate();
     if (options_.hz) sim.setPhysicsRate(*options_.hz);  // the command line wins over onCreate's choice
+    applyAccuracyOptions(options_, sim);
+    accuracyApplied_ = sim.entities().size();
     if (keptDrawing) sim.debugDraw = *keptDrawing;
     sim.start = true;
     accumulator_ = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
@@ -161,6 +164,10 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     Simulation& sim = simulation();
     sim.onUpdate();
     sim.updateEntities();
+    if (sim.entities().size() != accuracyApplied_) {  // bodies added since (a key, a spawner): same knobs
+        applyAccuracyOptions(options_, sim);
+        accuracyApplied_ = sim.entities().size();
+    }
     int steps = 0;
     const std::uint64_t droppedBefore = accumulator_.droppedSteps();
     const bool singleStep = controls_.takeSingleStep();  // O: one step, asked for while paused

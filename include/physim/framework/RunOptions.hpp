@@ -1,6 +1,8 @@
 #pragma once
 // Command-line options shared by every physim program (examples included).
 
+#include "physim/core/TimeOfImpact.hpp"
+
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -23,6 +25,11 @@ struct RunOptions {
     int maxStepsPerFrame = 8;          ///< cap on catch-up steps per window frame
     int width = 1280;                  ///< window size, pixels
     int height = 720;
+    // Accuracy knobs (docs/accuracy.md); applied after onCreate, so they win over the simulation's own choice.
+    std::optional<int> substeps;            ///< substeps per physics step
+    std::optional<int> iterations;          ///< solver velocity iterations per substep
+    std::optional<CollisionDetection> ccd;  ///< every dynamic body's collision detection
+    std::optional<double> precision;        ///< sampled detection's spacing, fraction of the step, (0, 1]
 
     static constexpr double defaultHeadlessSeconds = 10.0;
     /// Longest --seconds: 10^7 s (116 days) is 10^11 steps at the highest rate, still counted exactly.

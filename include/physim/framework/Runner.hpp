@@ -110,6 +110,7 @@ private:
     std::unique_ptr<Overlay> overlay_;  // window runs only
     sf::Vector2u windowSize_;           // px: the window's, or --size's without one
     double framesPerSecond_ = 0.0;
+    std::size_t accuracyApplied_ = 0;  // entities given the command line's accuracy knobs so far
 };
 
 /// Parses the command line and runs. Prints usage errors (bad arguments or parameters, no display to open a
