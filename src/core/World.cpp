@@ -641,7 +641,8 @@ JointType World::jointType(JointId id) const {
 }
 double World::jointLength(JointId id) const {
     const JointData& j = joint(id);
-    if (j.kind != JointKind::Distance) throw std::invalid_argument("physim: jointLength needs a distance joint");
+    if (j.kind != JointKind::Distance && j.kind != JointKind::Spring)
+        throw std::invalid_argument("physim: jointLength needs a distance joint or a spring");
     return j.length;
 }
 
