@@ -140,7 +140,9 @@ inline std::vector<FastPair> spinningPairs(int count, unsigned seed) {
         const double shift = (graze ? gaps[i % 12] : in(0.0, 0.5)) - d.distance;
         cB += shift * d.normal;
         if (graze) {  // zero the rate of change of the gap between the closest points at t*
-            auto velocity = [](const Vec2& v, double w, const Vec2& c, const Vec2& at) { return v + w * perp(at - c); };
+            auto velocity = [](const Vec2& v, double w, const Vec2& c, const Vec2& at) -> Vec2 {
+                return v + w * perp(at - c);  // a Vec2, not an expression over perp's temporary
+            };
             const Vec2 pointB = d.pointB + shift * d.normal;
             vB -= d.normal.dot(velocity(vB, spinB, cB, pointB) - velocity(vA, spinA, cA, d.pointA)) * d.normal;
         }
