@@ -20,6 +20,7 @@ namespace {
 using test::addBox;
 using test::addGround;
 using test::awakeSettings;
+using test::PyramidRun;
 
 constexpr double kDt = 1.0 / 60.0;
 
@@ -29,42 +30,11 @@ std::string shortest(double v) {  // for recorded values that std::to_string wou
     return text;
 }
 
-struct PyramidRun {
-    double topDrift = 0.0;  // m: farthest the top box gets from where it was at t = 1 s
-    double sideways = 0.0;  // m: largest |x - x0| of any box over the run
-};
-
-// A pyramid of 5050 1 m boxes, 100 in its bottom row, touching, on the ground; 500 steps at 60 Hz.
-PyramidRun runPyramid100() {
-    World world(awakeSettings());
-    addGround(world);
-    const int base = 100;
-    std::vector<BodyId> ids;
-    std::vector<double> x0;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            const Vec2 at{-0.5 * (base - row - 1) + 1.0 * i, 0.5 + 1.0 * row};
-            ids.push_back(addBox(world, at, 0.5, 0.5));
-            x0.push_back(at.x());
-        }
-    const BodyId top = ids.back();
-    Vec2 settled = Vec2::Zero();
-    PyramidRun r;
-    for (int s = 0; s < 500; ++s) {
-        world.step(kDt);
-        if (s + 1 == 60) settled = world.position(top);
-        if (s + 1 > 60) r.topDrift = std::max(r.topDrift, (world.position(top) - settled).norm());
-        for (std::size_t k = 0; k < ids.size(); ++k)
-            r.sideways = std::max(r.sideways, std::abs(world.position(ids[k]).x() - x0[k]));
-    }
-    return r;
-}
-
 // The pyramid criterion's shape half at a 100-box base: no box moves sideways more than 25 cm (a quarter box)
 // over 500 steps. A pyramid of touching boxes has a static solution with no sideways force, so sideways motion
 // is the solver's error. Measured: 19 cm (docs/stability.md).
 TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShape) {
-    const PyramidRun r = runPyramid100();
+    const PyramidRun r = test::runPyramid(100, 500);
     RecordProperty("sideways_m", std::to_string(r.sideways));
     EXPECT_LT(r.sideways, 0.25);
 }
@@ -72,7 +42,7 @@ TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShape) {
 // Fails today: after 1 s the top box of the 100-box pyramid still moves 5.4 cm (criterion 5 cm): the stack's
 // soft contacts settle by about 7 cm in all at 120 Hz and ring for a few seconds. docs/stability.md, Known limits.
 TEST(StabilityLong, DISABLED_PyramidWith100BoxBaseTopSettlesWithin5cm) {
-    const PyramidRun r = runPyramid100();
+    const PyramidRun r = test::runPyramid(100, 500);
     RecordProperty("top_drift_m", std::to_string(r.topDrift));
     EXPECT_LT(r.topDrift, 0.05);
 }

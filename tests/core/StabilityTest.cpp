@@ -21,41 +21,13 @@ namespace {
 using test::addBox;
 using test::addGround;
 using test::awakeSettings;
+using test::PyramidRun;
+using test::runPyramid;
 
 constexpr double kDt = 1.0 / 60.0;
 constexpr double kG = 9.81;
 
 // --- stacks ---------------------------------------------------------------------------------------------------
-
-struct PyramidRun {
-    double topDrift = 0.0;  // m: farthest the top box gets from where it was at t = 1 s
-    double sideways = 0.0;  // m: largest |x - x0| of any box over the run
-};
-
-// A pyramid of 1 m boxes with `base` boxes in its bottom row, touching, on the ground; `steps` steps.
-PyramidRun runPyramid(int base, int steps) {
-    World world(awakeSettings());
-    addGround(world);
-    std::vector<BodyId> ids;
-    std::vector<double> x0;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            const Vec2 at{-0.5 * (base - row - 1) + 1.0 * i, 0.5 + 1.0 * row};
-            ids.push_back(addBox(world, at, 0.5, 0.5));
-            x0.push_back(at.x());
-        }
-    const BodyId top = ids.back();
-    PyramidRun r;
-    Vec2 settled = Vec2::Zero();
-    for (int s = 0; s < steps; ++s) {
-        world.step(kDt);
-        if (s + 1 == 60) settled = world.position(top);
-        if (s + 1 > 60) r.topDrift = std::max(r.topDrift, (world.position(top) - settled).norm());
-        for (std::size_t k = 0; k < ids.size(); ++k)
-            r.sideways = std::max(r.sideways, std::abs(world.position(ids[k]).x() - x0[k]));
-    }
-    return r;
-}
 
 // The criterion: after 1 s the top box drifts under 5 cm, and no box moves sideways more than 25 cm over
 // 500 steps. A pyramid of touching boxes has a static solution with no sideways force at all, so any sideways
