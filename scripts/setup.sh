@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs everything physim needs on a Debian machine. Idempotent: a second run only checks.
 #   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML (and X11), Dear ImGui, GoogleTest,
-#     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against)
+#     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against),
+#     clang with its libFuzzer runtime (the fuzz preset)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
 #   - Dask (`dask`, `distributed` from PyPI) in the same environment: scripts/study.sh --dask runs cases on a cluster
 set -euo pipefail
@@ -11,6 +12,7 @@ APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libtbb-dev libsfml-dev libx11-dev libimgui-dev libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libbox2d-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core
+  clang libclang-rt-14-dev
   python3 python3-venv
 )
 
