@@ -20,14 +20,17 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
 
 namespace {
 
-// The rows' impulses along their fixed directions, with the moments prepared once per step.
-inline void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
-                       double lambda) {
+// The rows' impulses along their fixed directions, with the moments prepared once per step (Turns: see solveRow).
+template <bool Turns = true>
+void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
+                double lambda) {
     const Vec2 P = lambda * c.normal;
     A.v -= c.invMassA * P;
-    A.w -= c.invIA * lambda * p.rnA;
     B.v += c.invMassB * P;
-    B.w += c.invIB * lambda * p.rnB;
+    if constexpr (Turns) {
+        A.w -= c.invIA * lambda * p.rnA;
+        B.w += c.invIB * lambda * p.rnB;
+    }
 }
 
 inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const MotionSide& B,
@@ -35,16 +38,24 @@ inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const
     return c.normal.dot(B.v - A.v) + B.w * p.rnB - A.w * p.rnA;
 }
 
-inline void pushTangent(const ContactConstraint& c, MotionSide& A, MotionSide& B, double lambda) {
+template <bool Turns = true>
+void pushTangent(const ContactConstraint& c, MotionSide& A, MotionSide& B, double lambda) {
     const Vec2 P = lambda * perp(c.normal);
     A.v -= c.invMassA * P;
-    A.w -= c.invIA * lambda * c.rtA;
     B.v += c.invMassB * P;
-    B.w += c.invIB * lambda * c.rtB;
+    if constexpr (Turns) {
+        A.w -= c.invIA * lambda * c.rtA;
+        B.w += c.invIB * lambda * c.rtB;
+    }
 }
 
-inline double tangentSpeed(const ContactConstraint& c, const MotionSide& A, const MotionSide& B) {
-    return perp(c.normal).dot(B.v - A.v) + B.w * c.rtB - A.w * c.rtA;
+template <bool Turns>
+void warmStartRow(const ContactConstraint& c, SolverBody* states) {
+    MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
+    for (int i = 0; i < c.pointCount; ++i) pushNormal<Turns>(c, A, B, c.points[i], c.points[i].normalImpulse);
+    pushTangent<Turns>(c, A, B, c.tangentImpulse);
+    storeSide(states, c.indexA, c.invMassA, A);
+    storeSide(states, c.indexB, c.invMassB, B);
 }
 
 }  // namespace
@@ -63,6 +74,8 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.invIA = movesA ? A.invInertia : 0.0;
     c.invMassB = movesB ? B.invMass : 0.0;
     c.invIB = movesB ? B.invInertia : 0.0;
+    // Neither body can turn during the step: no impulse turns it (zero inverse inertia) and it is not spinning.
+    c.turns = c.invIA != 0.0 || c.invIB != 0.0 || A.w != 0.0 || B.w != 0.0;
     // The paper's combination rules: restitution min, friction coefficients averaged.
     c.restitution = std::min(A.restitution, B.restitution);
     c.staticFriction = 0.5 * (A.staticFriction + B.staticFriction);
@@ -120,11 +133,8 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
 
 void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states) {
     for (ContactConstraint* c = begin; c != end; ++c) {
-        MotionSide A = loadSide(states, c->indexA), B = loadSide(states, c->indexB);
-        for (int i = 0; i < c->pointCount; ++i) pushNormal(*c, A, B, c->points[i], c->points[i].normalImpulse);
-        pushTangent(*c, A, B, c->tangentImpulse);
-        storeSide(states, c->indexA, c->invMassA, A);
-        storeSide(states, c->indexB, c->invMassB, B);
+        if (c->turns) warmStartRow<true>(*c, states);
+        else warmStartRow<false>(*c, states);
     }
 }
 
@@ -222,147 +232,150 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
 
 }  // namespace
 
+namespace {
+
+// One row's pass. Turns is false for a row neither of whose bodies can turn (rotation locked, or immovable and not
+// spinning; prepareContact decides once per step): the same rule with its angular terms left out, so a scene whose
+// bodies all have rotation locked does no rotation work in its hottest loop.
+template <bool Turns>
+void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const ContactPass& pass) {
+    SolverBody& sa = c.indexA == kNullIndex ? still : states[c.indexA];
+    SolverBody& sb = c.indexB == kNullIndex ? still : states[c.indexB];
+    const double nx = c.normal.x(), ny = c.normal.y();
+    const double mA = c.invMassA, iA = c.invIA, mB = c.invMassB, iB = c.invIB;
+    double vAx = sa.v.x(), vAy = sa.v.y(), wA = Turns ? sa.w : 0.0;
+    double vBx = sb.v.x(), vBy = sb.v.y(), wB = Turns ? sb.w : 0.0;
+    // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB; an impulse d along it (B +, A -).
+    auto speed = [&](double dx, double dy, double armA, double armB) {
+        if constexpr (Turns) return dx * (vBx - vAx) + dy * (vBy - vAy) + wB * armB - wA * armA;
+        else return dx * (vBx - vAx) + dy * (vBy - vAy);
+    };
+    auto apply = [&](double d, double dx, double dy, double armA, double armB) {
+        vAx -= mA * d * dx;
+        vAy -= mA * d * dy;
+        vBx += mB * d * dx;
+        vBy += mB * d * dy;
+        if constexpr (Turns) {
+            wA -= iA * d * armA;
+            wB += iB * d * armB;
+        }
+    };
+    const double normalShift = nx * (sb.dp.x() - sa.dp.x()) + ny * (sb.dp.y() - sa.dp.y());
+    const int count = c.pointCount;
+    double separation[2], bias[2], massScale[2], leak[2], before[2];
+    for (int i = 0; i < count; ++i) {
+        const ContactConstraintPoint& cp = c.points[i];
+        // Separation now: the start's, moved by the bodies' displacement and turn since the step began
+        // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
+        double s;
+        if constexpr (Turns)
+            s = normalShift + (sb.dq.c * cp.ndB + sb.dq.s * cp.rnB) - (sa.dq.c * cp.ndA + sa.dq.s * cp.rnA) +
+                cp.baseSeparation;
+        else
+            s = normalShift + cp.ndB - cp.ndA + cp.baseSeparation;
+        separation[i] = s;
+        if (s > 0.0) {  // speculative: close the gap in this substep, no further
+            bias[i] = s * pass.invH;
+            massScale[i] = 1.0;
+            leak[i] = 0.0;
+        } else if (pass.useBias) {
+            bias[i] = std::max(pass.softness.biasRate * s, -pass.maxPushVelocity);
+            massScale[i] = pass.softness.massScale;
+            leak[i] = pass.softness.impulseScale;
+        } else {
+            bias[i] = 0.0;
+            massScale[i] = 1.0;
+            leak[i] = 0.0;
+        }
+        before[i] = speed(nx, ny, cp.rnA, cp.rnB);
+    }
+    double delta[2] = {0.0, 0.0};  // this pass's change of each accumulated impulse
+    const bool block = count == 2 && c.invDet > 0.0;
+    if (block) {
+        // Both points at once: the 2x2 complementarity problem on the accumulated impulses
+        // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
+        const double x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
+        const double b1 = before[0] + bias[0] - (c.k11 * x1 + c.k12 * x2);
+        const double b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
+        double y1 = -(c.k22 * b1 - c.k12 * b2) * c.invDet;
+        double y2 = -(c.k11 * b2 - c.k12 * b1) * c.invDet;
+        if (!(y1 >= 0.0 && y2 >= 0.0)) {
+            y1 = -b1 / c.k11;  // only point 1 pushes; point 2 must then separate
+            y2 = 0.0;
+            if (!(y1 >= 0.0 && c.k12 * y1 + b2 >= 0.0)) {
+                y1 = 0.0;  // only point 2 pushes
+                y2 = -b2 / c.k22;
+                if (!(y2 >= 0.0 && c.k12 * y2 + b1 >= 0.0)) y1 = y2 = 0.0;  // neither
+            }
+        }
+        delta[0] = std::max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, 0.0) - x1;
+        delta[1] = std::max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, 0.0) - x2;
+    }
+    bool started[2] = {false, false};
+    double totalNormal = 0.0;
+    for (int i = 0; i < count; ++i) {
+        ContactConstraintPoint& cp = c.points[i];
+        if (!block) {
+            // One point at a time (Gauss-Seidel): the second sees the first's impulse.
+            const double vn = i == 0 ? before[0] : speed(nx, ny, cp.rnA, cp.rnB);
+            before[i] = vn;
+            const double x = cp.normalImpulse;
+            delta[i] = std::max(x - cp.normalMass * massScale[i] * (vn + bias[i]) - leak[i] * x, 0.0) - x;
+        }
+        apply(delta[i], nx, ny, cp.rnA, cp.rnB);
+        started[i] = cp.normalImpulse == 0.0 && delta[i] > 0.0;
+        cp.normalImpulse += delta[i];
+        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
+        totalNormal += cp.normalImpulse;
+    }
+    if (started[0] || started[1]) {
+        Bounce bounce[2];
+        for (int i = 0; i < count; ++i)
+            if (started[i]) bounce[i] = planBounce(c, c.points[i], before[i], separation[i], pass);
+        if (bounce[0].active || bounce[1].active) {
+            MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
+            applyBounces(c, A, B, bounce);
+            storeSideWithPose(states, c.indexA, mA, A);
+            storeSideWithPose(states, c.indexB, mB, B);
+            vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
+            totalNormal = c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
+        }
+    }
+    // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
+    if (c.staticFriction > 0.0 || c.dynamicFriction > 0.0) {
+        const double tx = -ny, ty = nx;
+        const double vt = speed(tx, ty, c.rtA, c.rtB);
+        // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the
+        // substep's last word, decides which it is for the next substep: sliding when even the bound leaves the
+        // faces moving against each other faster than slipSpeed (a transient of one pass does not break a
+        // face loose).
+        const double bound = (c.sliding ? c.dynamicFriction : c.staticFriction) * totalNormal;
+        const double tangent = std::clamp(c.tangentImpulse - c.tangentMass * vt, -bound, bound);
+        if (!pass.useBias)
+            c.sliding = c.tangentMass > 0.0 &&
+                        std::abs(vt + (tangent - c.tangentImpulse) / c.tangentMass) > pass.slipSpeed;
+        apply(tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
+        c.tangentImpulse = tangent;
+    }
+    // Only bodies a row can move are written back: a kinematic body is read by many rows of one colour.
+    if (mA != 0.0) {
+        sa.v = {vAx, vAy};
+        if constexpr (Turns) sa.w = wA;
+    }
+    if (mB != 0.0) {
+        sb.v = {vBx, vBy};
+        if constexpr (Turns) sb.w = wB;
+    }
+}
+
+}  // namespace
+
 void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass) {
     // The hot loop of the step, in plain scalars: each row reads its two bodies once and writes them back once.
     SolverBody still{};  // stands for an immovable body; never written (its rows' inverse masses are 0)
-    const double biasRate = pass.softness.biasRate, softMass = pass.softness.massScale;
-    const double softLeak = pass.softness.impulseScale;
     for (ContactConstraint* c = begin; c != end; ++c) {
-        SolverBody& sa = c->indexA == kNullIndex ? still : states[c->indexA];
-        SolverBody& sb = c->indexB == kNullIndex ? still : states[c->indexB];
-        const double nx = c->normal.x(), ny = c->normal.y();
-        const double mA = c->invMassA, iA = c->invIA, mB = c->invMassB, iB = c->invIB;
-        double vAx = sa.v.x(), vAy = sa.v.y(), wA = sa.w;
-        double vBx = sb.v.x(), vBy = sb.v.y(), wB = sb.w;
-        const double normalShift = nx * (sb.dp.x() - sa.dp.x()) + ny * (sb.dp.y() - sa.dp.y());
-        const int count = c->pointCount;
-        double separation[2], bias[2], massScale[2], leak[2], before[2];
-        for (int i = 0; i < count; ++i) {
-            const ContactConstraintPoint& cp = c->points[i];
-            // Separation now: the start's, moved by the bodies' displacement and turn since the step began
-            // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
-            const double s = normalShift + (sb.dq.c * cp.ndB + sb.dq.s * cp.rnB) -
-                             (sa.dq.c * cp.ndA + sa.dq.s * cp.rnA) + cp.baseSeparation;
-            separation[i] = s;
-            if (s > 0.0) {  // speculative: close the gap in this substep, no further
-                bias[i] = s * pass.invH;
-                massScale[i] = 1.0;
-                leak[i] = 0.0;
-            } else if (pass.useBias) {
-                bias[i] = std::max(biasRate * s, -pass.maxPushVelocity);
-                massScale[i] = softMass;
-                leak[i] = softLeak;
-            } else {
-                bias[i] = 0.0;
-                massScale[i] = 1.0;
-                leak[i] = 0.0;
-            }
-            before[i] = nx * (vBx - vAx) + ny * (vBy - vAy) + wB * cp.rnB - wA * cp.rnA;
-        }
-        double delta[2] = {0.0, 0.0};  // this pass's change of each accumulated impulse
-        bool started[2] = {false, false};
-        if (count == 2 && c->invDet > 0.0) {
-            // Both points at once: the 2x2 complementarity problem on the accumulated impulses
-            // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
-            const double x1 = c->points[0].normalImpulse, x2 = c->points[1].normalImpulse;
-            const double b1 = before[0] + bias[0] - (c->k11 * x1 + c->k12 * x2);
-            const double b2 = before[1] + bias[1] - (c->k12 * x1 + c->k22 * x2);
-            double y1 = -(c->k22 * b1 - c->k12 * b2) * c->invDet;
-            double y2 = -(c->k11 * b2 - c->k12 * b1) * c->invDet;
-            if (!(y1 >= 0.0 && y2 >= 0.0)) {
-                y1 = -b1 / c->k11;  // only point 1 pushes; point 2 must then separate
-                y2 = 0.0;
-                if (!(y1 >= 0.0 && c->k12 * y1 + b2 >= 0.0)) {
-                    y1 = 0.0;  // only point 2 pushes
-                    y2 = -b2 / c->k22;
-                    if (!(y2 >= 0.0 && c->k12 * y2 + b1 >= 0.0)) y1 = y2 = 0.0;  // neither
-                }
-            }
-            const double t1 = std::max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, 0.0);
-            const double t2 = std::max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, 0.0);
-            delta[0] = t1 - x1;
-            delta[1] = t2 - x2;
-        } else {
-            // One point at a time (Gauss-Seidel): the second sees the first's impulse.
-            for (int i = 0; i < count; ++i) {
-                const ContactConstraintPoint& cp = c->points[i];
-                const double vn = i == 0 ? before[0]
-                                         : nx * (vBx - vAx) + ny * (vBy - vAy) + wB * cp.rnB - wA * cp.rnA;
-                before[i] = vn;
-                const double x = cp.normalImpulse;
-                const double total = std::max(x - cp.normalMass * massScale[i] * (vn + bias[i]) - leak[i] * x, 0.0);
-                delta[i] = total - x;
-                if (i == 0 && count == 2) {
-                    vAx -= mA * delta[0] * nx;
-                    vAy -= mA * delta[0] * ny;
-                    wA -= iA * delta[0] * cp.rnA;
-                    vBx += mB * delta[0] * nx;
-                    vBy += mB * delta[0] * ny;
-                    wB += iB * delta[0] * cp.rnB;
-                }
-            }
-        }
-        double totalNormal = 0.0;
-        for (int i = 0; i < count; ++i) {
-            ContactConstraintPoint& cp = c->points[i];
-            const double d = delta[i];
-            if (!(i == 0 && count == 2 && c->invDet <= 0.0)) {  // the one-at-a-time path applied point 0 already
-                vAx -= mA * d * nx;
-                vAy -= mA * d * ny;
-                wA -= iA * d * cp.rnA;
-                vBx += mB * d * nx;
-                vBy += mB * d * ny;
-                wB += iB * d * cp.rnB;
-            }
-            started[i] = cp.normalImpulse == 0.0 && d > 0.0;
-            cp.normalImpulse += d;
-            cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
-            totalNormal += cp.normalImpulse;
-        }
-        if (started[0] || started[1]) {
-            Bounce bounce[2];
-            for (int i = 0; i < count; ++i)
-                if (started[i]) bounce[i] = planBounce(*c, c->points[i], before[i], separation[i], pass);
-            if (bounce[0].active || bounce[1].active) {
-                MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
-                applyBounces(*c, A, B, bounce);
-                storeSideWithPose(states, c->indexA, mA, A);
-                storeSideWithPose(states, c->indexB, mB, B);
-                vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
-                totalNormal = c->points[0].normalImpulse + (count == 2 ? c->points[1].normalImpulse : 0.0);
-            }
-        }
-        // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
-        if (c->staticFriction > 0.0 || c->dynamicFriction > 0.0) {
-            const double tx = -ny, ty = nx;
-            const double vt = tx * (vBx - vAx) + ty * (vBy - vAy) + wB * c->rtB - wA * c->rtA;
-            // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the
-            // substep's last word, decides which it is for the next substep: sliding when even the bound leaves the
-            // faces moving against each other faster than slipSpeed (a transient of one pass does not break a
-            // face loose).
-            const double bound = (c->sliding ? c->dynamicFriction : c->staticFriction) * totalNormal;
-            const double tangent = std::clamp(c->tangentImpulse - c->tangentMass * vt, -bound, bound);
-            if (!pass.useBias)
-                c->sliding = c->tangentMass > 0.0 &&
-                             std::abs(vt + (tangent - c->tangentImpulse) / c->tangentMass) > pass.slipSpeed;
-            const double dt = tangent - c->tangentImpulse;
-            c->tangentImpulse = tangent;
-            vAx -= mA * dt * tx;
-            vAy -= mA * dt * ty;
-            wA -= iA * dt * c->rtA;
-            vBx += mB * dt * tx;
-            vBy += mB * dt * ty;
-            wB += iB * dt * c->rtB;
-        }
-        // Only bodies a row can move are written back: a kinematic body is read by many rows of one colour.
-        if (mA != 0.0) {
-            sa.v = {vAx, vAy};
-            sa.w = wA;
-        }
-        if (mB != 0.0) {
-            sb.v = {vBx, vBy};
-            sb.w = wB;
-        }
+        if (c->turns) solveRow<true>(*c, states, still, pass);
+        else solveRow<false>(*c, states, still, pass);
     }
 }
 

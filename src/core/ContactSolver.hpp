@@ -64,6 +64,7 @@ struct ContactConstraint {
     double tangentMass = 0.0;
     double tangentImpulse = 0.0;
     bool sliding = false;         // friction bound mu_d (true) or mu_s (false); the relax pass decides
+    bool turns = true;            // a body can turn: false skips the angular terms (both stay unturned)
     int pointCount = 0;
     ContactConstraintPoint points[2];
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block

@@ -66,6 +66,7 @@ void WorldImpl::solve() {
                 sim.invInertia = dynamic ? b.invInertia : 0.0;
                 sim.body = awake[i];
                 sim.dynamic = dynamic;
+                sim.turns = sim.invInertia != 0.0 || b.w != 0.0;
             }
         });
     }
@@ -112,6 +113,8 @@ void WorldImpl::solve() {
             for (std::size_t i = begin; i < end; ++i)
                 prepareContact(constraints[i], contacts[constraints[i].contact], bodies, settings.gravity);
         });
+        profile.turningRows = static_cast<std::size_t>(std::count_if(
+            constraints.begin(), constraints.end(), [](const ContactConstraint& c) { return c.turns; }));
         jointConstraints.clear();
         for (std::uint32_t j = 0; j < joints.size(); ++j) {
             const JointData& joint = joints[j];
@@ -163,7 +166,7 @@ void WorldImpl::solve() {
                     const SolverBodySim& sim = sims[i];
                     if (!sim.dynamic) continue;
                     st[i].v += h * sim.acceleration;
-                    st[i].w += h * sim.angularAcceleration;
+                    if (sim.turns) st[i].w += h * sim.angularAcceleration;
                 }
             });
         }
@@ -225,8 +228,10 @@ void WorldImpl::solve() {
             b.v = s.v;
             b.w = s.w;
             b.center = sim.center0 + s.dp;
-            b.angle = sim.angle0 + s.dAngle;
-            b.xf.q = compose(s.dq, sim.q0);
+            if (sim.turns) {
+                b.angle = sim.angle0 + s.dAngle;
+                b.xf.q = compose(s.dq, sim.q0);
+            }
             b.xf.p = b.center - b.xf.q.apply(b.localCenter);
             b.force.setZero();
             b.torque = 0.0;

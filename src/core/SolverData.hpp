@@ -31,6 +31,7 @@ struct SolverBodySim {
     double invInertia = 0.0;
     std::uint32_t body = 0;        // slot in World::bodies_
     bool dynamic = false;
+    bool turns = false;            // it can turn this step (free to, or spinning): else no rotation work at all
 };
 
 /// Small-angle rotation by theta (rad): a Taylor series accurate to rounding for |theta| <= 0.5 (error below

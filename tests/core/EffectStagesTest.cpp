@@ -171,6 +171,43 @@ TEST(Collides, BodiesThatTouchNothingPassThroughAndRunNoContactStage) {
     EXPECT_FALSE(world.collides(a));
 }
 
+TEST(EffectStages, RotationLockedEverywhereDoesNoRotationWork) {
+    // Boxes stacked off-centre: their contacts have lever arms, so free boxes would topple. All locked: no contact row
+    // carries angular terms, no box turns by a single bit, and the stack still rests on its contacts. Sleep off: the
+    // rows must run every step.
+    WorldSettings settings;
+    settings.enableSleep = false;
+    World world(settings);
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.shape = makeBox(5.0, 0.5);
+    ground.position = {0.0, -0.5};
+    world.createBody(ground);
+    std::vector<BodyId> boxes;
+    BodyDef box;
+    box.shape = makeBox(0.5, 0.5);
+    box.fixedRotation = true;
+    for (int i = 0; i < 4; ++i) {
+        box.position = {0.3 * i, 0.5 + 1.0 * i};
+        boxes.push_back(world.createBody(box));
+    }
+    for (int i = 0; i < 120; ++i) {
+        world.step(kDt);
+        ASSERT_EQ(world.profile().turningRows, 0u) << "step " << i;
+    }
+    EXPECT_EQ(world.profile().manifolds, 4u) << "the stack touches: ground and three box-on-box contacts";
+    for (const BodyId b : boxes) {
+        EXPECT_EQ(world.angle(b), 0.0);
+        EXPECT_EQ(world.angularVelocity(b), 0.0);
+    }
+    EXPECT_NEAR(world.position(boxes.back()).y(), 3.5, 0.02) << "the top box rests at its stacked height";
+    // Free the top box: only its own contact turns (it sits on the one below, so one row), the rest stay lean.
+    world.setFixedRotation(boxes.back(), false);
+    world.step(kDt);
+    EXPECT_EQ(world.profile().turningRows, 1u);
+    EXPECT_GT(world.profile().manifolds, 1u);
+}
+
 TEST(GravityScale, ScalesTheWorldsGravityPerBody) {
     World world;
     BodyDef d;

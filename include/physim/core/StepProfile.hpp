@@ -43,6 +43,9 @@ struct StepProfile {
     std::array<bool, effectCount> effectRan{};
     std::size_t candidatePairs = 0;
     std::size_t manifolds = 0;
+    /// Contact rows solved with angular terms: those with a body that can turn. Rows between bodies whose rotation
+    /// is locked (or immovable and not spinning) skip them, so a scene with every rotation locked has none.
+    std::size_t turningRows = 0;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
     double secondsOf(Stage s) const { return seconds[static_cast<std::size_t>(s)]; }
