@@ -183,20 +183,18 @@ std::vector<Row> rows() {
     r.push_back({"gravitation, Barnes-Hut", "3000 bodies that touch nothing", "all 3000 attract (tree, theta 0.5)",
                  [] { return cluster(3000); }, [attracting] { return attracting(3000, false); },
                  [attracting] { return attracting(3000, true); }});
-    auto pin = [](World& w, BodyId a, BodyId b) {
-        RevoluteJointDef d;
-        d.bodyA = a;
-        d.bodyB = b;
-        d.anchor = 0.5 * (w.position(a) + w.position(b));
-        return w.createRevoluteJoint(d);
+    // A joint of definition `def`, made by World member `create`, joining a and b at their midpoint.
+    auto atMidpoint = [](auto def, auto create) {
+        return [def, create](World& w, BodyId a, BodyId b) {
+            auto d = def;
+            d.bodyA = a;
+            d.bodyB = b;
+            d.anchor = 0.5 * (w.position(a) + w.position(b));
+            return (w.*create)(d);
+        };
     };
-    auto weld = [](World& w, BodyId a, BodyId b) {
-        WeldJointDef d;
-        d.bodyA = a;
-        d.bodyB = b;
-        d.anchor = 0.5 * (w.position(a) + w.position(b));
-        return w.createWeldJoint(d);
-    };
+    auto pin = atMidpoint(RevoluteJointDef{}, &World::createRevoluteJoint);
+    auto weld = atMidpoint(WeldJointDef{}, &World::createWeldJoint);
     auto soft = [](World& w, BodyId a, BodyId b) {
         DistanceJointDef d;
         d.bodyA = a;

@@ -65,15 +65,14 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     const BodyData& A = bodies[contact.a];
     const BodyData& B = bodies[contact.b];
     const Manifold& m = contact.manifold;
-    // A sleeping body in an awake contact acts as immovable for this step (it wakes if the contact touches).
-    const bool movesA = A.awake() && A.type == BodyType::Dynamic;
-    const bool movesB = B.awake() && B.type == BodyType::Dynamic;
-    c.indexA = A.awakeIndex;
-    c.indexB = B.awakeIndex;
-    c.invMassA = movesA ? A.invMass : 0.0;
-    c.invIA = movesA ? A.invInertia : 0.0;
-    c.invMassB = movesB ? B.invMass : 0.0;
-    c.invIB = movesB ? B.invInertia : 0.0;
+    const RowSide sideA = rowSide(A), sideB = rowSide(B);
+    const bool movesA = sideA.moves, movesB = sideB.moves;
+    c.indexA = sideA.index;
+    c.indexB = sideB.index;
+    c.invMassA = sideA.invMass;
+    c.invIA = sideA.invI;
+    c.invMassB = sideB.invMass;
+    c.invIB = sideB.invI;
     // Neither body can turn during the step: no impulse turns it (zero inverse inertia) and it is not spinning.
     c.turns = c.invIA != 0.0 || c.invIB != 0.0 || A.w != 0.0 || B.w != 0.0;
     // The paper's combination rules: restitution min, friction coefficients averaged.

@@ -7,6 +7,19 @@
 
 namespace physim {
 
+/// What a row sees of one of its bodies for a step: a body asleep, static or kinematic is immovable (zero inverse
+/// mass and inertia), so the row cannot move it; a sleeping one wakes if the row's contact touches.
+struct RowSide {
+    std::int32_t index = kNullIndex;  // awake body index, kNullIndex when not awake
+    bool moves = false;
+    double invMass = 0.0, invI = 0.0;
+};
+
+inline RowSide rowSide(const BodyData& b) {
+    const bool moves = b.awake() && b.type == BodyType::Dynamic;
+    return {b.awakeIndex, moves, moves ? b.invMass : 0.0, moves ? b.invInertia : 0.0};
+}
+
 /// A row's working copy of one body's motion.
 struct MotionSide {
     Vec2 v = Vec2::Zero();

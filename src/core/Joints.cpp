@@ -118,10 +118,10 @@ void solveWeld(const JointConstraint& row, JointData& joint, MotionSide& A, Moti
 void prepareJoint(JointConstraint& row, const JointData& joint, const std::vector<BodyData>& bodies, double h,
                   const Softness& rodSoftness) {
     const BodyData& B = bodies[joint.b];
-    const bool movesB = B.awake() && B.type == BodyType::Dynamic;
-    row.indexB = B.awakeIndex;
-    row.invMassB = movesB ? B.invMass : 0.0;
-    row.invIB = movesB ? B.invInertia : 0.0;
+    const RowSide sideB = rowSide(B);
+    row.indexB = sideB.index;
+    row.invMassB = sideB.invMass;
+    row.invIB = sideB.invI;
     row.anchorB = B.xf.q.apply(joint.localB - B.localCenter);
     if (joint.kind == JointKind::Mouse) {
         row.indexA = kNullIndex;
@@ -133,10 +133,10 @@ void prepareJoint(JointConstraint& row, const JointData& joint, const std::vecto
         return;
     }
     const BodyData& A = bodies[joint.a];
-    const bool movesA = A.awake() && A.type == BodyType::Dynamic;
-    row.indexA = A.awakeIndex;
-    row.invMassA = movesA ? A.invMass : 0.0;
-    row.invIA = movesA ? A.invInertia : 0.0;
+    const RowSide sideA = rowSide(A);
+    row.indexA = sideA.index;
+    row.invMassA = sideA.invMass;
+    row.invIA = sideA.invI;
     row.anchorA = A.xf.q.apply(joint.localA - A.localCenter);
     row.deltaCenter = B.center - A.center;
     row.softness = joint.kind == JointKind::Distance && joint.hertz > 0.0

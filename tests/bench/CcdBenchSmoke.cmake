@@ -1,31 +1,14 @@
 # cmake -DCCD_BENCH=<ccd_bench> -DWORK_DIR=<dir> -P CcdBenchSmoke.cmake
 # Runs ccd_bench's crowd mode on a tiny setting (10 bullets, 3 steps) and checks what it writes, not how fast
-# anything is: the JSON parses and has every key as a number, the bullet count is the one asked for, the escape
-# counts lie in [0, bullets], and command-line errors exit with status 2 and a message.
+# anything is: the JSON has every key as a number, the bullet count is the one asked for, the escape counts lie
+# in [0, bullets], and command-line errors exit with status 2 and a message.
 cmake_policy(VERSION 3.25)
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-set(json "${WORK_DIR}/crowd.json")
-execute_process(COMMAND "${CCD_BENCH}" --crowd 10 --steps 3 --json "${json}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(rc)
-  message(FATAL_ERROR "ccd_bench failed (${rc}):\n${out}\n${err}")
-endif()
-if(NOT out MATCHES "\\| detection \\| ms per step \\|")
-  message(FATAL_ERROR "no table on stdout:\n${out}")
-endif()
-
-file(READ "${json}" text)
-string(JSON type ERROR_VARIABLE jerr TYPE "${text}")
-if(jerr OR NOT type STREQUAL "OBJECT")
-  message(FATAL_ERROR "the JSON does not parse as an object: ${jerr}\n${text}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
+bench_smoke_fresh_dir()
+bench_smoke_run("${CCD_BENCH}" "${WORK_DIR}/crowd.json" "\\| detection \\| ms per step \\|"
+  --crowd 10 --steps 3 --json "${WORK_DIR}/crowd.json")
 foreach(key bullets steps exact_ms_per_step discrete_ms_per_step escaped discrete_escaped)
-  string(JSON type ERROR_VARIABLE jerr TYPE "${text}" ${key})
-  if(jerr OR NOT type STREQUAL "NUMBER")
-    message(FATAL_ERROR "'${key}' is missing or not a number (${type} ${jerr}):\n${text}")
-  endif()
-  string(JSON ${key} GET "${text}" ${key})
+  bench_smoke_number("${bench_json}" ${key} ${key})
 endforeach()
 if(NOT bullets EQUAL 10 OR NOT steps EQUAL 3)
   message(FATAL_ERROR "asked for 10 bullets and 3 steps, the JSON says ${bullets} and ${steps}")
@@ -39,11 +22,6 @@ foreach(count escaped discrete_escaped)
     message(FATAL_ERROR "'${count}' is ${${count}}, outside [0, ${bullets}]")
   endif()
 endforeach()
-
-foreach(bad "--crowd;0" "--crowd;ten" "--crowd;10;--steps" "--steps;3" "--crowd;10;--frobnicate;1")
-  execute_process(COMMAND "${CCD_BENCH}" ${bad} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "ccd_bench: ")
-    message(FATAL_ERROR "ccd_bench ${bad} exited ${rc}, expected 2 with a message:\n${err}")
-  endif()
-endforeach()
+bench_smoke_usage_errors("${CCD_BENCH}" "--crowd 0" "--crowd ten" "--crowd 10 --steps" "--steps 3"
+  "--crowd 10 --frobnicate 1")
 file(REMOVE_RECURSE "${WORK_DIR}")

@@ -1,44 +1,28 @@
 # cmake -DEFFECTS_BENCH=<effects_bench> -DWORK_DIR=<dir> -P EffectsBenchSmoke.cmake
 # Runs effects_bench on one effect with one short round and checks what it writes, not how fast anything is: the
-# JSON parses, has the one row asked for with the fields docs/effects.md promises, every time positive; bad
-# arguments exit with status 2 and a message.
+# JSON has the one row asked for with the fields docs/effects.md promises, every time positive; bad arguments
+# exit with status 2 and a message.
 cmake_policy(VERSION 3.25)
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-set(json "${WORK_DIR}/effects.json")
-execute_process(COMMAND "${EFFECTS_BENCH}" --only drag --rounds 1 --steps 1 --json "${json}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(rc)
-  message(FATAL_ERROR "effects_bench failed (${rc}):\n${out}\n${err}")
+include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
+bench_smoke_fresh_dir()
+bench_smoke_run("${EFFECTS_BENCH}" "${WORK_DIR}/effects.json" "\\| effect \\| scene \\| used means \\|"
+  --only drag --rounds 1 --steps 1 --json "${WORK_DIR}/effects.json")
+if(NOT bench_stdout MATCHES "\\| drag \\|")
+  message(FATAL_ERROR "no drag row on stdout:\n${bench_stdout}")
 endif()
-if(NOT out MATCHES "\\| effect \\| scene \\| used means \\|" OR NOT out MATCHES "\\| drag \\|")
-  message(FATAL_ERROR "no table with a drag row on stdout:\n${out}")
-endif()
-
-file(READ "${json}" text)
-string(JSON rows ERROR_VARIABLE jerr LENGTH "${text}")
+string(JSON rows ERROR_VARIABLE jerr LENGTH "${bench_json}")
 if(jerr OR NOT rows EQUAL 1)
-  message(FATAL_ERROR "expected a JSON array of one row (${jerr}):\n${text}")
+  message(FATAL_ERROR "expected a JSON array of one row (${jerr}):\n${bench_json}")
 endif()
-string(JSON effect GET "${text}" 0 effect)
+string(JSON effect GET "${bench_json}" 0 effect)
 if(NOT effect STREQUAL "drag")
   message(FATAL_ERROR "the row is '${effect}', not drag")
 endif()
 foreach(field without_ms unused_ms used_ms unused_ratio used_ratio)
-  string(JSON type ERROR_VARIABLE jerr TYPE "${text}" 0 ${field})
-  if(jerr OR NOT type STREQUAL "NUMBER")
-    message(FATAL_ERROR "'${field}' missing or not a number (${jerr}):\n${text}")
-  endif()
-  string(JSON value GET "${text}" 0 ${field})
+  bench_smoke_number("${bench_json}" value 0 ${field})
   if(NOT value GREATER 0)
     message(FATAL_ERROR "'${field}' is ${value}, not a positive time")
   endif()
 endforeach()
-
-foreach(bad "--rounds;0" "--only;no_such_effect" "--steps;x" "--frobnicate" "--json")
-  execute_process(COMMAND "${EFFECTS_BENCH}" ${bad} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "effects_bench: ")
-    message(FATAL_ERROR "effects_bench ${bad} exited ${rc}, expected 2 with a message:\n${err}")
-  endif()
-endforeach()
+bench_smoke_usage_errors("${EFFECTS_BENCH}" "--rounds 0" "--only no_such_effect" "--steps x" "--frobnicate" "--json")
 file(REMOVE_RECURSE "${WORK_DIR}")

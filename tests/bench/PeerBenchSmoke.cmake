@@ -3,19 +3,11 @@
 # one row per engine with every field the table promises, the body count is the pyramid's N (N + 1) / 2, and
 # command-line errors exit with status 2.
 cmake_policy(VERSION 3.25)
-file(REMOVE_RECURSE "${WORK_DIR}")
-file(MAKE_DIRECTORY "${WORK_DIR}")
-set(json "${WORK_DIR}/peers.json")
-execute_process(COMMAND "${PEER_BENCH}" --scenes pyramid20 --repeats 2 --steps 110 --json "${json}"
-  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(rc)
-  message(FATAL_ERROR "peer_bench failed (${rc}):\n${out}\n${err}")
-endif()
-if(NOT out MATCHES "\\| scene \\| engine \\| threads \\| bodies \\|")
-  message(FATAL_ERROR "no table on stdout:\n${out}")
-endif()
-
-file(READ "${json}" text)
+include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
+bench_smoke_fresh_dir()
+bench_smoke_run("${PEER_BENCH}" "${WORK_DIR}/peers.json" "\\| scene \\| engine \\| threads \\| bodies \\|"
+  --scenes pyramid20 --repeats 2 --steps 110 --json "${WORK_DIR}/peers.json")
+set(text "${bench_json}")
 string(JSON rows ERROR_VARIABLE jerr LENGTH "${text}")
 if(jerr)
   message(FATAL_ERROR "the JSON does not parse: ${jerr}\n${text}")
@@ -65,10 +57,5 @@ foreach(want "physim:1" ${PEER})
   endif()
 endforeach()
 
-foreach(bad "--repeats;0" "--scenes;no_such_scene" "--steps;100" "--frobnicate")
-  execute_process(COMMAND "${PEER_BENCH}" ${bad} RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2 OR NOT err MATCHES "peer_bench: ")
-    message(FATAL_ERROR "peer_bench ${bad} exited ${rc}, expected 2 with a message:\n${err}")
-  endif()
-endforeach()
+bench_smoke_usage_errors("${PEER_BENCH}" "--repeats 0" "--scenes no_such_scene" "--steps 100" "--frobnicate")
 file(REMOVE_RECURSE "${WORK_DIR}")

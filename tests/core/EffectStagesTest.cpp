@@ -2,6 +2,7 @@
 // something uses it; user force callbacks; bodies that collide with nothing; gravity scale.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,11 +52,7 @@ TEST(EffectStages, EffectsAvailableButUnusedRunNothing) {
 
 TEST(EffectStages, WorldAsleepRunsNoEffect) {
     World world;
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(5.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    test::addGround(world, 5.0);
     BodyDef box;
     box.shape = makeBox(0.5, 0.5);
     box.position = {0.0, 0.5};
@@ -178,18 +175,11 @@ TEST(EffectStages, RotationLockedEverywhereDoesNoRotationWork) {
     WorldSettings settings;
     settings.enableSleep = false;
     World world(settings);
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(5.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    test::addGround(world, 5.0);
     std::vector<BodyId> boxes;
-    BodyDef box;
-    box.shape = makeBox(0.5, 0.5);
-    box.fixedRotation = true;
     for (int i = 0; i < 4; ++i) {
-        box.position = {0.3 * i, 0.5 + 1.0 * i};
-        boxes.push_back(world.createBody(box));
+        boxes.push_back(test::addBox(world, {0.3 * i, 0.5 + 1.0 * i}, 0.5, 0.5));
+        world.setFixedRotation(boxes.back(), true);
     }
     for (int i = 0; i < 120; ++i) {
         world.step(kDt);

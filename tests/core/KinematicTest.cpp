@@ -1,6 +1,7 @@
 // Kinematic bodies and locked rotation (issue #4), default settings at 60 Hz.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -33,11 +34,7 @@ TEST(Kinematic, MovesByItsVelocityAndPushesDynamicBodies) {
 
 TEST(FixedRotation, ContactsDoNotTurnALockedBody) {
     World world;
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(5.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    test::addGround(world, 5.0);
     BodyDef box;
     box.shape = makeBox(0.5, 0.5);
     box.position = {0.0, 2.0};

@@ -30,22 +30,31 @@ std::string shortest(double v) {  // for recorded values that std::to_string wou
     return text;
 }
 
-// The pyramid criterion's shape half at a 100-box base: no box moves sideways more than 25 cm (a quarter box)
-// over 500 steps. A pyramid of touching boxes has a static solution with no sideways force, so sideways motion
-// is the solver's error. Measured: 19 cm (docs/stability.md).
-TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShape) {
+// The pyramid criterion at a 100-box base, default settings: no box moves sideways more than 25 cm (a quarter
+// box) over 500 steps. A pyramid of touching boxes has a static solution with no sideways force, so sideways motion
+// is the solver's error. Measured: 19 cm (docs/stability.md). The top box's drift after 1 s is a known limit at
+// these settings: 5.4 cm, over the 5 cm criterion, as one relax pass per substep leaves the 100-row stack swaying
+// for its first two seconds. Guarded at the stack's whole settling (7 cm): more would mean the pyramid moves beyond
+// its contacts' give.
+TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShapeAtDefaultSettings) {
     const PyramidRun r = test::runPyramid(100, 500);
     RecordProperty("sideways_m", std::to_string(r.sideways));
+    RecordProperty("top_drift_m", std::to_string(r.topDrift));
     EXPECT_LT(r.sideways, 0.25);
+    EXPECT_LT(r.topDrift, 0.07);
 }
 
-// A known limit (docs/stability.md): after 1 s the top box of the 100-box pyramid still moves 5.4 cm, over the
-// 5 cm criterion; the stack's soft contacts settle by about 7 cm in all at 120 Hz and ring for a few seconds.
-// Guarded at that whole settling (7 cm): more would mean the pyramid moves beyond its contacts' give.
-TEST(StabilityLong, PyramidWith100BoxBaseTopMovesNoMoreThanItsContactsSettle) {
-    const PyramidRun r = test::runPyramid(100, 500);
+// The whole criterion at a 100-box base with two relax passes per substep (WorldSettings::relaxIterations), the
+// setting docs/stability.md gives for towers this tall: the top box drifts under 5 cm after 1 s and no box moves
+// sideways more than 25 cm over 500 steps. Measured: 0.37 cm and 3.2 cm.
+TEST(StabilityLong, PyramidWith100BoxBaseStandsWithTwoRelaxPasses) {
+    WorldSettings settings = test::awakeSettings();
+    settings.relaxIterations = 2;
+    const PyramidRun r = test::runPyramid(100, 500, settings);
+    RecordProperty("sideways_m", std::to_string(r.sideways));
     RecordProperty("top_drift_m", std::to_string(r.topDrift));
-    EXPECT_LT(r.topDrift, 0.07);
+    EXPECT_LT(r.topDrift, 0.05);
+    EXPECT_LT(r.sideways, 0.25);
 }
 
 struct BouncingRun {

@@ -170,14 +170,8 @@ TEST(Stability, HeavyBigBoxDroppedOnTwoSmallOnesThrowsThemLessThanHalfTheDrop) {
 // the ground with friction mu everywhere. Returns the largest distance any block moves in 10 s.
 double archMotion(int blocks, double inner, double outer, double mu) {
     World world(awakeSettings());
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(50.0, 0.5);
-    ground.position = {0.0, -0.5};
-    ground.staticFriction = ground.dynamicFriction = mu;
-    world.createBody(ground);
+    world.setMaterial(addGround(world, 50.0), 0.0, mu, mu);
     std::vector<BodyId> ids;
-    std::vector<Vec2> start;
     for (int k = 0; k < blocks; ++k) {
         const double a0 = M_PI * k / blocks, a1 = M_PI * (k + 1) / blocks;
         std::vector<Vec2> corners{{inner * std::cos(a0), inner * std::sin(a0)},
@@ -193,15 +187,8 @@ double archMotion(int blocks, double inner, double outer, double mu) {
         d.position = centroid;
         d.staticFriction = d.dynamicFriction = mu;
         ids.push_back(world.createBody(d));
-        start.push_back(centroid);
     }
-    double worst = 0.0;
-    for (int s = 0; s < 10 * 60; ++s) {
-        world.step(kDt);
-        for (std::size_t k = 0; k < ids.size(); ++k)
-            worst = std::max(worst, (world.position(ids[k]) - start[k]).norm());
-    }
-    return worst;
+    return test::farthestMove(world, ids, 10 * 60);
 }
 
 // An arch held by friction. Heyman's limit analysis: a semicircular arch stands (hinges cannot form) when its
@@ -239,12 +226,7 @@ BodyId addCard(World& world, double cx, double base, double alpha, int side, dou
 // on it; friction mu everywhere. Returns the largest distance any card moves in 10 s.
 double cardHouseMotion(double mu) {
     World world(awakeSettings());
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(50.0, 0.5);
-    ground.position = {0.0, -0.5};
-    ground.staticFriction = ground.dynamicFriction = mu;
-    world.createBody(ground);
+    world.setMaterial(addGround(world, 50.0), 0.0, mu, mu);
     const double alpha = 15.0 * M_PI / 180.0;
     const double spacing = 2.0 * (std::sin(alpha) + 0.02 * std::cos(alpha)) + 0.02;  // frames 2 cm apart at the feet
     std::vector<BodyId> cards;
@@ -258,15 +240,7 @@ double cardHouseMotion(double mu) {
     floor.staticFriction = floor.dynamicFriction = mu;
     cards.push_back(world.createBody(floor));
     for (const int side : {-1, 1}) cards.push_back(addCard(world, 0.0, top + 0.02, alpha, side, mu));
-    std::vector<Vec2> start;
-    for (const BodyId c : cards) start.push_back(world.position(c));
-    double worst = 0.0;
-    for (int s = 0; s < 10 * 60; ++s) {
-        world.step(kDt);
-        for (std::size_t k = 0; k < cards.size(); ++k)
-            worst = std::max(worst, (world.position(cards[k]) - start[k]).norm());
-    }
-    return worst;
+    return test::farthestMove(world, cards, 10 * 60);
 }
 
 // A card house held by friction: with mu = 0.6 no card moves 1 cm in 10 s. A leaning card needs at least

@@ -1,6 +1,7 @@
 // Statistics and debug drawing's resting contacts, against hand-computed answers.
 
 #include <physim/core/World.hpp>
+#include "support/Scenes.hpp"
 #include <physim/framework/DebugDraw.hpp>
 #include <physim/framework/Stats.hpp>
 
@@ -59,11 +60,7 @@ TEST(Stats, StepTimesAverageTheLastSteps) {
 // manifold the step had when the box was awake.
 TEST(DebugDraw, RestingContactsOfSleepingBodies) {
     World world;
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(5.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    test::addGround(world, 5.0);
     BodyDef box;
     box.shape = makeBox(0.5, 0.5);
     box.position = {0.0, 0.5};

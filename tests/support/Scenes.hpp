@@ -30,6 +30,19 @@ inline BodyId addGround(World& world, double halfWidth = 200.0) {
     return world.createBody(ground);
 }
 
+/// The farthest (m) any of `ids` gets from where it was before `steps` steps of 60 Hz.
+inline double farthestMove(World& world, const std::vector<BodyId>& ids, int steps) {
+    std::vector<Vec2> start;
+    for (const BodyId id : ids) start.push_back(world.position(id));
+    double farthest = 0.0;
+    for (int s = 0; s < steps; ++s) {
+        world.step(1.0 / 60.0);
+        for (std::size_t k = 0; k < ids.size(); ++k)
+            farthest = std::max(farthest, (world.position(ids[k]) - start[k]).norm());
+    }
+    return farthest;
+}
+
 inline BodyId addBox(World& world, const Vec2& position, double halfWidth, double halfHeight, double density = 1.0) {
     BodyDef def;
     def.shape = makeBox(halfWidth, halfHeight);
@@ -134,9 +147,9 @@ struct PyramidRun {
 };
 
 /// A pyramid of 1 m boxes with `base` boxes in its bottom row, touching, on the ground, stepped `steps` times at
-/// 60 Hz with sleep off.
-inline PyramidRun runPyramid(int base, int steps) {
-    World world(awakeSettings());
+/// 60 Hz with sleep off (and the default solver settings, unless given others).
+inline PyramidRun runPyramid(int base, int steps, const WorldSettings& settings = awakeSettings()) {
+    World world(settings);
     addGround(world);
     std::vector<BodyId> ids;
     std::vector<double> x0;
