@@ -66,15 +66,13 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     const BodyData& B = bodies[contact.b];
     const Manifold& m = contact.manifold;
     const RowSide sideA = rowSide(A), sideB = rowSide(B);
-    const bool movesA = sideA.moves, movesB = sideB.moves;
     c.indexA = sideA.index;
     c.indexB = sideB.index;
     c.invMassA = sideA.invMass;
     c.invIA = sideA.invI;
     c.invMassB = sideB.invMass;
     c.invIB = sideB.invI;
-    // Neither body can turn during the step: no impulse turns it (zero inverse inertia) and it is not spinning.
-    c.turns = c.invIA != 0.0 || c.invIB != 0.0 || A.w != 0.0 || B.w != 0.0;
+    c.turns = sideA.turns || sideB.turns;
     // The paper's combination rules: restitution min, friction coefficients averaged.
     c.restitution = std::min(A.restitution, B.restitution);
     c.staticFriction = 0.5 * (A.staticFriction + B.staticFriction);
@@ -84,7 +82,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     auto acceleration = [&](const BodyData& b, bool moves) -> Vec2 {
         return moves ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
     };
-    c.normalAcceleration = c.normal.dot(acceleration(B, movesB) - acceleration(A, movesA));
+    c.normalAcceleration = c.normal.dot(acceleration(B, sideB.moves) - acceleration(A, sideA.moves));
     c.tangentImpulse = 0.0;
     c.sliding = contact.sliding;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();

@@ -7,17 +7,20 @@
 
 namespace physim {
 
-/// What a row sees of one of its bodies for a step: a body asleep, static or kinematic is immovable (zero inverse
-/// mass and inertia), so the row cannot move it; a sleeping one wakes if the row's contact touches.
+/// What the solver sees of a body for a step: a body asleep, static or kinematic is immovable (zero inverse mass
+/// and inertia), so no row can move it; a sleeping one wakes if a row's contact touches. It turns during the step
+/// only if rows can turn it or it spins already: otherwise its rows and its integration skip all rotation work.
 struct RowSide {
     std::int32_t index = kNullIndex;  // awake body index, kNullIndex when not awake
     bool moves = false;
+    bool turns = false;
     double invMass = 0.0, invI = 0.0;
 };
 
 inline RowSide rowSide(const BodyData& b) {
     const bool moves = b.awake() && b.type == BodyType::Dynamic;
-    return {b.awakeIndex, moves, moves ? b.invMass : 0.0, moves ? b.invInertia : 0.0};
+    const double invI = moves ? b.invInertia : 0.0;
+    return {b.awakeIndex, moves, invI != 0.0 || b.w != 0.0, moves ? b.invMass : 0.0, invI};
 }
 
 /// A row's working copy of one body's motion.

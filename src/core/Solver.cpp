@@ -3,10 +3,12 @@
 // substeps of integrate velocities -> warm start -> solve -> integrate positions -> relax, one restitution pass,
 // and finalize (poses, boxes, sleep timers, proxies that left their boxes).
 
+#include "Impulse.hpp"
 #include "Joints.hpp"
 #include "WorldImpl.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 
@@ -66,7 +68,7 @@ void WorldImpl::solve() {
                 sim.invInertia = dynamic ? b.invInertia : 0.0;
                 sim.body = awake[i];
                 sim.dynamic = dynamic;
-                sim.turns = sim.invInertia != 0.0 || b.w != 0.0;
+                sim.turns = rowSide(b).turns;
             }
         });
     }
@@ -109,12 +111,16 @@ void WorldImpl::solve() {
         for (std::size_t k = 0; k < awakeContacts.size(); ++k)
             if (constraintColour[k] >= 0)
                 constraints[colourFill[static_cast<std::size_t>(constraintColour[k])]++].contact = awakeContacts[k];
+        std::atomic<std::size_t> turningRows{0};  // counted while each row is at hand, one add per chunk
         executor.parallelFor(rowCount, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t i = begin; i < end; ++i)
+            std::size_t turning = 0;
+            for (std::size_t i = begin; i < end; ++i) {
                 prepareContact(constraints[i], contacts[constraints[i].contact], bodies, settings.gravity);
+                turning += constraints[i].turns ? 1 : 0;
+            }
+            turningRows.fetch_add(turning, std::memory_order_relaxed);
         });
-        profile.turningRows = static_cast<std::size_t>(std::count_if(
-            constraints.begin(), constraints.end(), [](const ContactConstraint& c) { return c.turns; }));
+        profile.turningRows = turningRows.load();
         jointConstraints.clear();
         for (std::uint32_t j = 0; j < joints.size(); ++j) {
             const JointData& joint = joints[j];

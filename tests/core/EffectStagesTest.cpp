@@ -190,7 +190,9 @@ TEST(EffectStages, RotationLockedEverywhereDoesNoRotationWork) {
         EXPECT_EQ(world.angle(b), 0.0);
         EXPECT_EQ(world.angularVelocity(b), 0.0);
     }
-    EXPECT_NEAR(world.position(boxes.back()).y(), 3.5, 0.02) << "the top box rests at its stacked height";
+    // Four soft contacts under a column of four hold it about 4^2 g / (2 (2 pi 120 Hz)^2) = 0.14 mm low (measured
+    // 0.14 mm); 1 mm leaves room for rounding of that estimate and still catches a box that slid off or sank in.
+    EXPECT_NEAR(world.position(boxes.back()).y(), 3.5, 1e-3) << "the top box rests at its stacked height";
     // Free the top box: only its own contact turns (it sits on the one below, so one row), the rest stay lean.
     world.setFixedRotation(boxes.back(), false);
     world.step(kDt);
