@@ -39,7 +39,7 @@ void BroadPhase::markMoved(std::int32_t k) {
     moved_.push_back(k);
 }
 
-void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, Executor& executor) {
+void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, Executor& executor) {
     pairs.clear();
     if (moved_.empty()) return;
     perTask_.resize(static_cast<std::size_t>(executor.workerSlots()));
@@ -61,7 +61,9 @@ void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, Executor& executor) 
                     if (otherKey == k) return true;
                     const bool otherMoved = static_cast<std::size_t>(id) < flags.size() && flags[id];
                     if (otherMoved && otherKey < k) return true;
-                    out.emplace_back(std::min(body, other), std::max(body, other));
+                    const std::uint32_t first = std::min(body, other), second = std::max(body, other);
+                    // Most overlaps of a moving proxy are pairs it already has: only new ones go on to the sort.
+                    if (!known.contains(PairSet::key(first, second))) out.emplace_back(first, second);
                     return true;
                 });
             }

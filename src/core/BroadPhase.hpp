@@ -5,6 +5,7 @@
 // the only new candidate pairs. A scene at rest costs nothing here. Internal.
 
 #include "DynamicTree.hpp"
+#include "PairSet.hpp"
 
 #include "physim/core/Aabb.hpp"
 
@@ -30,9 +31,10 @@ public:
     const Aabb& fatBox(std::int32_t key) const;
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
-    /// The body pairs (first < second, sorted, each once) whose boxes overlap and at least one of which moved
-    /// since the last call; empties the move buffer. Queries run on the executor's threads.
-    void findNewPairs(std::vector<BodyPair>& pairs, Executor& executor);
+    /// The body pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
+    /// the last call, and which `known` does not hold (pairs that have a contact already); empties the move
+    /// buffer. Queries run on the executor's threads.
+    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, Executor& executor);
 
     std::size_t moveCount() const { return moved_.size(); }
     /// Bodies whose boxes overlap `box`, for users and tests (both trees).

@@ -138,7 +138,6 @@ void ContinuousStage::run(WorldImpl& w) {
             if (other != slot) found_.push_back(other);
             return true;
         });
-        std::sort(found_.begin(), found_.end());  // the trees' order depends on history; results must not
         for (const std::uint32_t other : found_) {
             const BodyData& o = w.bodies[other];
             const bool still = !o.awake();
