@@ -38,6 +38,36 @@ bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
     return kernel::closestApproach({d.x(), d.y()}, {v.x(), v.y()}) <= A.extent + B.extent + gap;
 }
 
+// The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
+// only where the pair closes on it fast enough to touch this step. Returns whether the pair touches.
+bool refreshManifold(Manifold& m, const BodyData& A, const BodyData& B, double speculative, double dt) {
+    if (!needsPoints(A, B, speculative, dt)) {
+        m.pointCount = 0;
+        return false;
+    }
+    const Manifold old = m;
+    const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, speculative + reach(A, B, dt));
+    m.normal = r.manifold.normal;
+    m.pointCount = 0;
+    bool touching = false;
+    for (int p = 0; p < r.manifold.pointCount; ++p) {
+        ContactPoint cp = r.manifold.points[p];
+        // Keep a speculative point only if the pair approaches there fast enough to close it this step.
+        const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
+        const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
+        if (cp.separation > speculative + std::max(0.0, -vn) * dt) continue;
+        touching = touching || cp.separation < speculative;
+        cp.normalImpulse = cp.tangentImpulse = 0.0;
+        for (int q = 0; q < old.pointCount; ++q)
+            if (old.points[q].id == cp.id) {
+                cp.normalImpulse = old.points[q].normalImpulse;
+                cp.tangentImpulse = old.points[q].tangentImpulse;
+            }
+        m.points[m.pointCount++] = cp;
+    }
+    return touching;
+}
+
 }  // namespace
 
 bool WorldImpl::contactExists(std::uint32_t a, std::uint32_t b) const {
@@ -126,29 +156,7 @@ void WorldImpl::updateContacts() {
                 contactFlags[i] = kParted;
                 continue;
             }
-            const Manifold old = c.manifold;
-            Manifold& m = c.manifold;
-            m.pointCount = 0;
-            bool touching = false;
-            const NarrowResult r = needsPoints(A, B, speculative, dt) ? collideGeometries(A.shape, A.xf, B.shape, B.xf,
-                                                                                      speculative + reach(A, B, dt))
-                                                                  : NarrowResult{};
-            m.normal = r.manifold.normal;
-            for (int p = 0; p < r.manifold.pointCount; ++p) {
-                ContactPoint cp = r.manifold.points[p];
-                // Keep a speculative point only if the pair approaches there fast enough to close it this step.
-                const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
-                const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
-                if (cp.separation > speculative + std::max(0.0, -vn) * dt) continue;
-                touching = touching || cp.separation < speculative;
-                cp.normalImpulse = cp.tangentImpulse = 0.0;
-                for (int q = 0; q < old.pointCount; ++q)
-                    if (old.points[q].id == cp.id) {
-                        cp.normalImpulse = old.points[q].normalImpulse;
-                        cp.tangentImpulse = old.points[q].tangentImpulse;
-                    }
-                m.points[m.pointCount++] = cp;
-            }
+            const bool touching = refreshManifold(c.manifold, A, B, speculative, dt);
             if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
             c.touching = touching;
         }

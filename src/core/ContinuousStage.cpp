@@ -150,6 +150,11 @@ void ContinuousStage::run(WorldImpl& w) {
                 // Two exact candidates: one test serves both, asked by the one in the lower slot.
                 const std::int32_t partner = candidateOf_[other];
                 if (partner >= 0 && other < slot) continue;
+                // Most pairs of a crowd pass far apart: their answer (Separated) is known without the batch.
+                const auto& radius = batch_.shapes.boundingRadius;  // per body slot (the shape table's order)
+                if (kernel::boundsStayApart(toKernel(c.sweep), radius[slot], toKernel(theirs), radius[other],
+                                            batch_.tolerance))
+                    continue;
                 batch_.addPair(inBatch(slot, c.sweep), inBatch(other, theirs));
                 pairCandidate_.push_back(k);
                 pairPartner_.push_back(other);

@@ -352,6 +352,14 @@ PHYSIM_HOST_DEVICE inline double closestApproach(Vec d0, Vec v) {
     return ::sqrt(lengthSquared(d0 + t * v));
 }
 
+/// Whether two bodies stay at least `gap` (m) apart over their motions whatever they turn, from bounding radii
+/// alone (m, about each origin): every point of a shape stays within its radius of its origin, and the origins,
+/// moving on straight lines, never come within both radii plus the gap. No distance evaluation.
+PHYSIM_HOST_DEVICE inline bool boundsStayApart(const Motion& ma, double radiusA, const Motion& mb, double radiusB,
+                                               double gap) {
+    return closestApproach(mb.p0 - ma.p0, (mb.p1 - mb.p0) - (ma.p1 - ma.p0)) > radiusA + radiusB + gap;
+}
+
 /// Time of impact by conservative advancement. First, without any distance evaluation (iterations 0): every point
 /// of a shape stays within its bounding radius of its origin, so origins that never come within the two radii
 /// plus the tolerance prove the pair Separated whatever the turning (most pairs of a crowd whose swept boxes
@@ -365,10 +373,8 @@ PHYSIM_HOST_DEVICE inline Toi timeOfImpact(const Shape& a, const Motion& ma, con
                                            double tolerance, int maxIterations) {
     Toi r{kSeparated, 0, 1.0, 0.0, {0.0, 0.0}, {0.0, 0.0}};
     const double target = 0.5 * tolerance;
+    if (boundsStayApart(ma, a.boundingRadius, mb, b.boundingRadius, tolerance)) return r;
     const PairRates rates = pairRates(a, ma, b, mb);
-    if (closestApproach(mb.p0 - ma.p0, rates.velocityB - rates.velocityA) >
-        a.boundingRadius + b.boundingRadius + tolerance)
-        return r;
     double t = 0.0;
     for (r.iterations = 1; r.iterations <= maxIterations; ++r.iterations) {
         const Xf xa = ma.at(t), xb = mb.at(t);
