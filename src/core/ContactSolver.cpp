@@ -188,8 +188,13 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // bring each point to its target speed, or leave it at x = 0 already leaving faster, as the normal rows' 2x2
 // complementarity problem does. Point by point would let the second point's blow undo the first's target and
 // gain energy (a thin spinning box struck on both corners). A bounce is a blow, not a lasting push: nothing of it
-// is warm-started into the next substep.
-void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2]) {
+// is warm-started into the next substep. What this pass gave the point to push an overlap apart (`push`) is taken
+// back first: the pair leaves at e times its meeting speed, not at the push-out speed (an overlapping pair that met
+// slowly would otherwise keep that speed: energy from nowhere); later passes push the overlap out as usual.
+void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
+                  const double (&push)[2]) {
+    for (int i = 0; i < c.pointCount; ++i)
+        if (bounce[i].active && push[i] > 0.0) pushNormal(c, A, B, c.points[i], -push[i]);
     auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]); };
     double x[2] = {0.0, 0.0}, q[2] = {0.0, 0.0};
     if (c.pointCount == 2 && bounce[0].active && bounce[1].active) {
@@ -309,6 +314,7 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
         delta[1] = std::max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, 0.0) - x2;
     }
     bool started[2] = {false, false};
+    double push[2] = {0.0, 0.0};  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
     double totalNormal = 0.0;
     for (int i = 0; i < count; ++i) {
         ContactConstraintPoint& cp = c.points[i];
@@ -321,6 +327,8 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
         }
         apply(delta[i], nx, ny, cp.rnA, cp.rnB);
         started[i] = cp.normalImpulse == 0.0 && delta[i] > 0.0;
+        if (started[i] && bias[i] < 0.0)
+            push[i] = std::clamp(-cp.normalMass * massScale[i] * bias[i], 0.0, delta[i]);
         cp.normalImpulse += delta[i];
         cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
         totalNormal += cp.normalImpulse;
@@ -331,7 +339,7 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
             if (started[i]) bounce[i] = planBounce(c, c.points[i], before[i], separation[i], pass);
         if (bounce[0].active || bounce[1].active) {
             MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
-            applyBounces(c, A, B, bounce);
+            applyBounces(c, A, B, bounce, push);
             storeSideWithPose(states, c.indexA, mA, A);
             storeSideWithPose(states, c.indexB, mB, B);
             vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
