@@ -134,7 +134,8 @@ PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, c
 
 // In a's frame. Disjoint convex polygons (some face separates them: SAT over both polygons' faces) have their
 // closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge pairs
-// (at most 2 * 8 * 8) is the exact distance. b's vertices and normals are moved into a's frame where they are used
+// (at most 2 * 8 * 8) is the exact distance. A vertex outside a convex polygon is nearest to an edge that faces
+// it (its outward normal has the vertex in front, or on the line), so edges facing away are skipped. b's vertices and normals are moved into a's frame where they are used
 // rather than stored in local arrays: the same arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such
 // arrays (docs/cuda.md).
 PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
@@ -160,6 +161,7 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
     for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
         const Vec vb = relative.apply(b.vertices[j]);
         for (int i = 0; i < a.count; ++i) {
+            if (dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
             const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
             const double sq = lengthSquared(vb - on);
             if (sq < bestSq) {
@@ -172,7 +174,9 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
     for (int j = 0; j < b.count; ++j) {  // a's vertices against b's edges
         const Vec from = relative.apply(b.vertices[j]);
         const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
+        const Vec nb = q.apply(b.normals[j]);
         for (int i = 0; i < a.count; ++i) {
+            if (dot(nb, a.vertices[i] - from) < 0.0) continue;
             const Vec on = closestOnSegment(a.vertices[i], from, to);
             const double sq = lengthSquared(a.vertices[i] - on);
             if (sq < bestSq) {
