@@ -24,6 +24,17 @@ double kinetic(const World& w, const std::vector<BodyId>& ids) {
     return e;
 }
 
+// A frictionless, perfectly elastic disc.
+BodyDef elasticDisc(double radius, const Vec2& position, const Vec2& velocity) {
+    BodyDef d;
+    d.shape = makeCircle(radius);
+    d.restitution = 1.0;
+    d.staticFriction = d.dynamicFriction = 0.0;
+    d.position = position;
+    d.velocity = velocity;
+    return d;
+}
+
 WorldSettings zeroGravity() {
     WorldSettings s;
     s.gravity = Vec2::Zero();
@@ -37,15 +48,9 @@ TEST(Energy, CradlesNeverGainEnergy) {
         for (int in = 1; in <= 4; ++in) {
             World w(zeroGravity());
             std::vector<BodyId> ids;
-            for (int i = 0; i < 5; ++i) {
-                BodyDef d;
-                d.shape = makeCircle(0.5);
-                d.restitution = 1.0;
-                d.staticFriction = d.dynamicFriction = 0.0;
-                d.position = {i * (1.0 + gap) - (i < in ? 0.5 : 0.0), 0.0};
-                if (i < in) d.velocity = {2.0, 0.0};
-                ids.push_back(w.createBody(d));
-            }
+            for (int i = 0; i < 5; ++i)
+                ids.push_back(w.createBody(elasticDisc(0.5, {i * (1.0 + gap) - (i < in ? 0.5 : 0.0), 0.0},
+                                                       i < in ? Vec2(2.0, 0.0) : Vec2::Zero())));
             const double k0 = kinetic(w, ids);
             double highest = k0;
             for (int s = 0; s < 120; ++s) {
@@ -64,15 +69,9 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
     for (const double tangential : {0.0, 15.0}) {  // head-on, and sliding past each other (the crowd's case)
         World w(zeroGravity());
         std::vector<BodyId> ids;
-        for (int i = 0; i < 2; ++i) {
-            BodyDef d;
-            d.shape = makeCircle(0.2);
-            d.restitution = 1.0;
-            d.staticFriction = d.dynamicFriction = 0.0;
-            d.position = {i * (0.4 - 0.016), 0.0};
-            d.velocity = (i == 0 ? 0.5 : -0.5) * Vec2(0.08, tangential);
-            ids.push_back(w.createBody(d));
-        }
+        for (int i = 0; i < 2; ++i)
+            ids.push_back(w.createBody(
+                elasticDisc(0.2, {i * (0.4 - 0.016), 0.0}, (i == 0 ? 0.5 : -0.5) * Vec2(0.08, tangential))));
         const double k0 = kinetic(w, ids);
         double highest = k0;
         for (int s = 0; s < 10; ++s) {
@@ -108,14 +107,9 @@ TEST(Energy, ElasticGasKeepsItsEnergy) {
         std::uniform_real_distribution<double> turn(0.0, 2.0 * M_PI);
         std::vector<BodyId> discs;
         for (int i = 0; i < 200; ++i) {
-            BodyDef d;
-            d.shape = makeCircle(0.2);
-            d.position = {-half + 0.8 * (i % 20 + 0.5), -half + 0.8 * (i / 20 + 0.5)};
             const double a = turn(rng);
-            d.velocity = 5.0 * Vec2(std::cos(a), std::sin(a));
-            d.restitution = 1.0;
-            d.staticFriction = d.dynamicFriction = 0.0;
-            discs.push_back(w.createBody(d));
+            discs.push_back(w.createBody(elasticDisc(0.2, {-half + 0.8 * (i % 20 + 0.5), -half + 0.8 * (i / 20 + 0.5)},
+                                                     5.0 * Vec2(std::cos(a), std::sin(a)))));
         }
         const double k0 = kinetic(w, discs);
         double highest = k0;
