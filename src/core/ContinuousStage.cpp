@@ -188,7 +188,7 @@ void ContinuousStage::run(WorldImpl& w) {
         b.angle = c.sweep.angleAt(c.t);
         b.center = b.xf.apply(b.localCenter);
         b.aabb = computeAabb(b.shape, b.xf);
-        if (w.proxyOutgrown(b)) w.moveProxy(b);
+        if (w.proxyOutgrown(b)) w.enlarged[c.awakeIndex] |= 4;  // moved once, after this stage
     }
 }
 

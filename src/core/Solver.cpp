@@ -255,8 +255,20 @@ void WorldImpl::solve() {
         }
     });
     fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
-    for (std::size_t i = 0; i < n; ++i)
-        if (enlarged[i] & 1) moveProxy(bodies[sims[i].body]);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(enlarged[i] & 1)) continue;
+        const BodyData& b = bodies[sims[i].body];
+        // The Continuous stage may put this body back: its proxy moves after that stage, once (bit 2).
+        if ((enlarged[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged[i] |= 4;
+        else moveProxy(b);
+    }
+}
+
+void WorldImpl::moveDeferredProxies() {
+    for (std::size_t i = 0; i < enlarged.size(); ++i) {
+        const BodyData& b = bodies[sims[i].body];
+        if ((enlarged[i] & 4) && proxyOutgrown(b)) moveProxy(b);
+    }
 }
 
 }  // namespace physim

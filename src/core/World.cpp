@@ -717,6 +717,7 @@ void World::step(double dt) {
     if (!w.awake.empty()) w.solve();
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
+    runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.constraints.size() : 0;
     ++w.stepCount;

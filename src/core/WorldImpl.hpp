@@ -83,7 +83,8 @@ struct WorldImpl {
     std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<JointConstraint> jointConstraints;
-    std::vector<std::uint8_t> enlarged;          // per awake body: proxy to move (bit 0), fast (bit 1)
+    std::vector<std::uint8_t> enlarged;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
+                                         // proxy to move after the Continuous stage (bit 2)
     bool fastBodies = false;                     // a dynamic body moved more than half its core radius
     std::vector<std::uint32_t> touched;          // bodies changed since the last step: proxies to check          // per awake body: its proxy must move
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
@@ -141,6 +142,7 @@ struct WorldImpl {
 
     // Solver.cpp
     void solve();            // the Forces, Solve and Integrate stages
+    void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
 };
 
 }  // namespace physim
