@@ -129,10 +129,24 @@ void ContinuousStage::run(WorldImpl& w) {
     for (std::uint32_t k = 0; k < candidates_.size(); ++k)
         if (w.bodies[w.awake[candidates_[k].awakeIndex]].detection == CollisionDetection::ContinuousExact)
             candidateOf_[w.awake[candidates_[k].awakeIndex]] = static_cast<std::int32_t>(k);
+    // Each body's sweep, made once per run: a body of a crowd is found by many queries.
+    sweeps_.resize(w.bodies.size());
+    motions_.resize(w.bodies.size());
+    sweepMade_.assign(w.bodies.size(), 0);
+    auto sweepFor = [&](std::uint32_t slot) -> const Sweep& {
+        if (!sweepMade_[slot]) {
+            sweeps_[slot] = sweepOf(w, slot);
+            motions_[slot] = toKernel(sweeps_[slot]);
+            sweepMade_[slot] = 1;
+        }
+        return sweeps_[slot];
+    };
+    const auto& radius = batch_.shapes.boundingRadius;  // per body slot (the shape table's order)
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
         const BodyData& b = w.bodies[slot];
+        const kernel::Motion mine = toKernel(c.sweep);
         found_.clear();
         w.broadPhase.query(sweptAabb(b.shape, c.sweep), [&](std::uint32_t other) {
             if (other != slot) found_.push_back(other);
@@ -142,8 +156,8 @@ void ContinuousStage::run(WorldImpl& w) {
             const BodyData& o = w.bodies[other];
             const bool still = !o.awake();
             if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
-            const Sweep theirs = sweepOf(w, other);
             if (b.detection == CollisionDetection::ContinuousSampled) {
+                const Sweep& theirs = sweepFor(other);
                 consider(c, sampledTimeOfImpact(b.shape, c.sweep, o.shape, theirs, b.precision), b.shape, o.shape,
                          theirs, slop);
             } else {
@@ -151,9 +165,8 @@ void ContinuousStage::run(WorldImpl& w) {
                 const std::int32_t partner = candidateOf_[other];
                 if (partner >= 0 && other < slot) continue;
                 // Most pairs of a crowd pass far apart: their answer (Separated) is known without the batch.
-                const auto& radius = batch_.shapes.boundingRadius;  // per body slot (the shape table's order)
-                if (kernel::boundsStayApart(toKernel(c.sweep), radius[slot], toKernel(theirs), radius[other],
-                                            batch_.tolerance))
+                const Sweep& theirs = sweepFor(other);
+                if (kernel::boundsStayApart(mine, radius[slot], motions_[other], radius[other], batch_.tolerance))
                     continue;
                 batch_.addPair(inBatch(slot, c.sweep), inBatch(other, theirs));
                 pairCandidate_.push_back(k);
@@ -170,7 +183,7 @@ void ContinuousStage::run(WorldImpl& w) {
             const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
             const BodyData& o = w.bodies[pairPartner_[p]];
             const ToiResult r = batchResult_.toi(p);
-            consider(c, r, mine.shape, o.shape, sweepOf(w, pairPartner_[p]), slop);
+            consider(c, r, mine.shape, o.shape, sweeps_[pairPartner_[p]], slop);
             if (pairPartnerCandidate_[p] >= 0) {
                 Candidate& d = candidates_[static_cast<std::size_t>(pairPartnerCandidate_[p])];
                 consider(d, r, o.shape, mine.shape, c.sweep, slop);

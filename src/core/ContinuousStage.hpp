@@ -60,6 +60,9 @@ private:
     std::vector<std::int32_t> pairPartnerCandidate_;  // per batch pair: the partner's candidate index, or -1
     std::vector<std::int32_t> candidateOf_;           // per body slot: its exact candidate's index, or -1
     std::vector<std::int32_t> batchBody_;      // per body slot: its index in the batch this run, or -1
+    std::vector<Sweep> sweeps_;                // per body slot: its sweep this run, where sweepMade_ says so
+    std::vector<kernel::Motion> motions_;      // the same for the kernel
+    std::vector<std::uint8_t> sweepMade_;
     std::uint64_t shapeTableRevision_ = 0;     // the World's shapeRevision the batch's shape table was built for
     std::shared_ptr<ContinuousSolver> solver_;
     std::size_t impacts_ = 0;
