@@ -86,7 +86,7 @@ struct WorldImpl {
     std::vector<std::uint8_t> enlarged;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
                                          // proxy to move after the Continuous stage (bit 2)
     bool fastBodies = false;                     // a dynamic body moved more than half its core radius
-    std::vector<std::uint32_t> touched;          // bodies changed since the last step: proxies to check          // per awake body: its proxy must move
+    std::vector<std::uint32_t> touched;          // bodies changed since the last step: proxies to check
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
     std::vector<std::uint32_t> splitStack;
     std::vector<std::uint32_t> splitMembers;

@@ -135,9 +135,9 @@ PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, c
 // In a's frame. Disjoint convex polygons (some face separates them: SAT over both polygons' faces) have their
 // closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge pairs
 // (at most 2 * 8 * 8) is the exact distance. A vertex outside a convex polygon is nearest to an edge that faces
-// it (its outward normal has the vertex in front, or on the line), so edges facing away are skipped. b's vertices and normals are moved into a's frame where they are used
-// rather than stored in local arrays: the same arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such
-// arrays (docs/cuda.md).
+// it (its outward normal has the vertex in front, or on the line), so edges facing away are skipped. b's vertices
+// and normals are moved into a's frame where they are used rather than stored in local arrays: the same
+// arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such arrays (docs/cuda.md).
 PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
     const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
