@@ -34,8 +34,12 @@ double reach(const BodyData& A, const BodyData& B, double dt) {
 // stops the continuous body at the impact. Discrete pairs keep their points: nothing else would catch them.
 bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
     if (A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete) return true;
-    const Vec2 d = B.center - A.center, v = (B.v - A.v) * dt;
-    return kernel::closestApproach({d.x(), d.y()}, {v.x(), v.y()}) <= A.extent + B.extent + gap;
+    // The centre's straight path over the step (the turn does not matter to a circle about the centre).
+    auto path = [dt](const BodyData& b) {
+        const Vec2 end = b.center + b.v * dt;
+        return kernel::Motion{{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle};
+    };
+    return !kernel::boundsStayApart(path(A), A.extent, path(B), B.extent, gap);
 }
 
 // The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point

@@ -265,10 +265,8 @@ void WorldImpl::solve() {
 }
 
 void WorldImpl::moveDeferredProxies() {
-    for (std::size_t i = 0; i < enlarged.size(); ++i) {
-        const BodyData& b = bodies[sims[i].body];
-        if ((enlarged[i] & 4) && proxyOutgrown(b)) moveProxy(b);
-    }
+    for (std::size_t i = 0; i < enlarged.size(); ++i)
+        if ((enlarged[i] & 4) && proxyOutgrown(bodies[sims[i].body])) moveProxy(bodies[sims[i].body]);
 }
 
 }  // namespace physim
