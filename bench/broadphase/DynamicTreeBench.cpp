@@ -170,7 +170,8 @@ void BM_BroadPhaseStep(benchmark::State& state) {
     }
     std::vector<BodyPair> pairs;
     const PairSet noContacts;  // every overlapping pair counts as new, as brute force reports it
-    broadPhase.findNewPairs(pairs, noContacts, executor);  // the first step: every proxy is new
+    const BroadPhase::PairWanted takeAll = [](std::uint32_t, std::uint32_t) { return true; };
+    broadPhase.findNewPairs(pairs, noContacts, takeAll, executor);  // the first step: every proxy is new
     std::vector<std::uint32_t> moved;
     std::size_t reinserted = 0;
     const auto step = [&] {
@@ -181,7 +182,7 @@ void BM_BroadPhaseStep(benchmark::State& state) {
             broadPhase.moveProxy(proxy[i], fat[i]);
             moved.push_back(i);
         });
-        broadPhase.findNewPairs(pairs, noContacts, executor);
+        broadPhase.findNewPairs(pairs, noContacts, takeAll, executor);
     };
 
     step();  // untimed, checked

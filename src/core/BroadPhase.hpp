@@ -10,6 +10,7 @@
 #include "physim/core/Aabb.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -31,10 +32,17 @@ public:
     const Aabb& fatBox(std::int32_t key) const;
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
+    /// Whether the caller wants a new overlapping pair now (called from the executor's threads). A pair it
+    /// declines is offered again by the next findNewPairs, whether or not its proxies move.
+    using PairWanted = std::function<bool(std::uint32_t, std::uint32_t)>;
+
     /// The body pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
-    /// the last call, and which `known` does not hold (pairs that have a contact already); empties the move
-    /// buffer. Queries run on the executor's threads.
-    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, Executor& executor);
+    /// the last call (or was asked again), which `known` does not hold (pairs that have a contact already) and
+    /// which `wanted` takes; empties the move buffer. Queries run on the executor's threads.
+    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const PairWanted& wanted,
+                      Executor& executor);
+    /// The next findNewPairs queries this proxy again although it did not move: its pairs are offered again.
+    void requery(std::int32_t key) { markMoved(key); }
 
     std::size_t moveCount() const { return moved_.size(); }
     /// Bodies whose boxes overlap `box`, for users and tests (both trees).
@@ -54,6 +62,7 @@ private:
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::vector<BodyPair>> perTask_;
+    std::vector<std::vector<std::int32_t>> declinedPerTask_;  // proxies whose query met a declined pair
 };
 
 }  // namespace physim

@@ -12,7 +12,7 @@
 namespace physim {
 namespace {
 
-enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4 };
+enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4, kDeferred = 8 };
 
 // At least one body must be able to respond; two immovable bodies never make a contact.
 bool shouldCollide(const BodyData& a, const BodyData& b) {
@@ -40,6 +40,16 @@ bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
         return kernel::Motion{{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle};
     };
     return !kernel::boundsStayApart(path(A), A.extent, path(B), B.extent, gap);
+}
+
+bool moving(const BodyData& b) { return b.awake() && (b.v.squaredNorm() > 0.0 || b.w != 0.0); }
+
+// A pair that needs no points while one of its bodies moves has no contact record: the broad phase offers it
+// again next step (BroadPhase::requery), so it gets one the step it may meet. In a crowd of bullets, whose
+// enlarged boxes overlap nearly all others, this keeps the contacts to the pairs that can touch. A pair at rest
+// keeps its (empty) record instead of being asked every step.
+bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
+    return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
 // The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
@@ -142,7 +152,13 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 }
 
 void WorldImpl::updatePairs() {
-    broadPhase.findNewPairs(newPairs, contactPairs, executor);
+    const double speculative = 4.0 * settings.linearSlop;
+    const BroadPhase::PairWanted wanted = [&](std::uint32_t a, std::uint32_t b) {
+        const BodyData& A = bodies[a];
+        const BodyData& B = bodies[b];
+        return !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
+    };
+    broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
     for (const auto& [a, b] : newPairs)
         if (shouldCollide(bodies[a], bodies[b])) createContact(a, b);
 }
@@ -160,6 +176,10 @@ void WorldImpl::updateContacts() {
                 contactFlags[i] = kParted;
                 continue;
             }
+            if (deferred(A, B, speculative, dt)) {
+                contactFlags[i] = kDeferred;
+                continue;
+            }
             const bool touching = refreshManifold(c.manifold, A, B, speculative, dt);
             if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
             c.touching = touching;
@@ -174,8 +194,9 @@ void WorldImpl::updateContacts() {
         ContactData& c = contacts[index];
         const ContactEvent event{c.manifold.bodyA, c.manifold.bodyB};
         const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
-        if (flag == kParted) {
+        if (flag == kParted || flag == kDeferred) {
             if (c.touching) events.end.push_back(event);
+            if (flag == kDeferred) broadPhase.requery(bodies[c.a].proxy);
             destroyContact(index, false);
         } else if (flag == kBegan) {
             events.begin.push_back(event);
