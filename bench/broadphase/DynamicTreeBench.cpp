@@ -170,7 +170,7 @@ void BM_BroadPhaseStep(benchmark::State& state) {
     }
     std::vector<BodyPair> pairs;
     const PairSet noContacts;  // every overlapping pair counts as new, as brute force reports it
-    const BroadPhase::PairWanted takeAll = [](std::uint32_t, std::uint32_t) { return true; };
+    const auto takeAll = [](std::uint32_t, std::uint32_t) { return true; };
     broadPhase.findNewPairs(pairs, noContacts, takeAll, executor);  // the first step: every proxy is new
     std::vector<std::uint32_t> moved;
     std::size_t reinserted = 0;

@@ -24,6 +24,12 @@ struct BodyData {
     double angle = 0.0;             // rad, unwrapped (xf.q caches its cosine and sine)
     Vec2 v = Vec2::Zero();          // velocity of the centre of mass, m/s
     double w = 0.0;                 // rad/s
+    // Read for every pair by the broad and narrow phases, so kept with the motion in the record's first lines.
+    double extent = 0.0;            // largest distance from the centre of mass to the shape, m
+    CollisionDetection detection = CollisionDetection::Discrete;
+    BodyType type = BodyType::Dynamic;
+    std::int32_t awakeIndex = kNullIndex;  // position in the awake list (World::awake_); kNullIndex: static, asleep
+    std::int32_t proxy = kNullIndex;       // broad-phase proxy key; its enlarged box lives in the tree
     Vec2 force = Vec2::Zero();      // N at the centre of mass, accumulated until the next step uses it
     double torque = 0.0;            // N m
 
@@ -41,12 +47,9 @@ struct BodyData {
     double staticFriction = 0.0;
     double dynamicFriction = 0.0;
     Geometry shape;
-    double extent = 0.0;            // largest distance from the centre of mass to the shape, m
     double coreRadius = 0.0;        // radius of the largest circle about the centroid inside the shape, m
-    CollisionDetection detection = CollisionDetection::Discrete;
     double precision = kDefaultPrecision;
 
-    BodyType type = BodyType::Dynamic;
     bool useGravity = true;
     double gravityScale = 1.0;
     bool attracting = false;        // in the gravitation effect: never sleeps (the others pull it all the time)
@@ -55,12 +58,7 @@ struct BodyData {
     bool alive = false;
     std::uint32_t generation = 0;
 
-    // Broad phase: the proxy's enlarged box lives in the tree; aabb is the tight box at the current pose.
-    std::int32_t proxy = kNullIndex;
-    Aabb aabb;
-
-    // Sets: position in the awake list (World::awake_), kNullIndex for static and sleeping bodies.
-    std::int32_t awakeIndex = kNullIndex;
+    Aabb aabb;                      // the tight box at the current pose
 
     // Constraint graph: intrusive lists of the body's contacts and joints (edge key = index * 2 + side).
     std::int32_t contactHead = kNullIndex;

@@ -1,7 +1,5 @@
 #include "BroadPhase.hpp"
 
-#include "Executor.hpp"
-
 #include <algorithm>
 
 namespace physim {
@@ -39,44 +37,14 @@ void BroadPhase::markMoved(std::int32_t k) {
     moved_.push_back(k);
 }
 
-void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const PairWanted& wanted,
-                              Executor& executor) {
-    pairs.clear();
-    if (moved_.empty()) return;
-    perTask_.resize(static_cast<std::size_t>(executor.workerSlots()));
+void BroadPhase::beginFind(int workerSlots) {
+    perTask_.resize(static_cast<std::size_t>(workerSlots));
     declinedPerTask_.resize(perTask_.size());
     for (auto& buffer : perTask_) buffer.clear();
     for (auto& buffer : declinedPerTask_) buffer.clear();
+}
 
-    // A moved movable proxy meets both trees; a moved static proxy meets only the movable tree (static bodies
-    // never pair). A pair of two moved proxies is reported by the query of the smaller key only.
-    executor.parallelFor(moved_.size(), 64, [&](std::size_t begin, std::size_t end, int worker) {
-        std::vector<BodyPair>& out = perTask_[static_cast<std::size_t>(worker)];
-        std::vector<std::int32_t>& declined = declinedPerTask_[static_cast<std::size_t>(worker)];
-        for (std::size_t i = begin; i < end; ++i) {
-            const std::int32_t k = moved_[i];
-            bool declinedOne = false;
-            const Aabb& box = fatBox(k);
-            const std::uint32_t body = treeOf(k).userData(k >> 1);
-            for (int t = 0; t < 2; ++t) {
-                if (t == 1 && isStatic(k)) continue;
-                const auto& flags = isMoved_[t];
-                tree_[t].query(box, [&](std::int32_t id, std::uint32_t other) {
-                    const std::int32_t otherKey = key(id, t == 1);
-                    if (otherKey == k) return true;
-                    const bool otherMoved = static_cast<std::size_t>(id) < flags.size() && flags[id];
-                    if (otherMoved && otherKey < k) return true;
-                    const std::uint32_t first = std::min(body, other), second = std::max(body, other);
-                    // Most overlaps of a moving proxy are pairs it already has: only new ones go on to the sort.
-                    if (known.contains(PairSet::key(first, second))) return true;
-                    if (wanted(first, second)) out.emplace_back(first, second);
-                    else declinedOne = true;
-                    return true;
-                });
-            }
-            if (declinedOne) declined.push_back(k);
-        }
-    });
+void BroadPhase::endFind(std::vector<BodyPair>& pairs) {
     for (auto& buffer : perTask_) pairs.insert(pairs.end(), buffer.begin(), buffer.end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());

@@ -5,18 +5,17 @@
 // the only new candidate pairs. A scene at rest costs nothing here. Internal.
 
 #include "DynamicTree.hpp"
+#include "Executor.hpp"
 #include "PairSet.hpp"
 
 #include "physim/core/Aabb.hpp"
 
+#include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <utility>
 #include <vector>
 
 namespace physim {
-
-class Executor;
 
 using BodyPair = std::pair<std::uint32_t, std::uint32_t>;  // body slots, first < second
 
@@ -32,15 +31,12 @@ public:
     const Aabb& fatBox(std::int32_t key) const;
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
-    /// Whether the caller wants a new overlapping pair now (called from the executor's threads). A pair it
-    /// declines is offered again by the next findNewPairs, whether or not its proxies move.
-    using PairWanted = std::function<bool(std::uint32_t, std::uint32_t)>;
-
     /// The body pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
     /// the last call (or was asked again), which `known` does not hold (pairs that have a contact already) and
-    /// which `wanted` takes; empties the move buffer. Queries run on the executor's threads.
-    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const PairWanted& wanted,
-                      Executor& executor);
+    /// which `wanted(first, second)` takes; empties the move buffer. Queries run on the executor's threads, and so
+    /// does `wanted`. A pair it declines is offered again by the next call, whether or not its proxies move.
+    template <class Wanted>
+    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const Wanted& wanted, Executor& executor);
     /// The next findNewPairs queries this proxy again although it did not move: its pairs are offered again.
     void requery(std::int32_t key) { markMoved(key); }
 
@@ -57,6 +53,8 @@ private:
     DynamicTree& treeOf(std::int32_t key) { return tree_[key & 1]; }
     const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }
     void markMoved(std::int32_t key);
+    void beginFind(int workerSlots);
+    void endFind(std::vector<BodyPair>& pairs);  // merges, sorts, empties the move buffer, re-queues declined
 
     DynamicTree tree_[2];                 // [0] movable bodies, [1] static bodies
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
@@ -64,5 +62,43 @@ private:
     std::vector<std::vector<BodyPair>> perTask_;
     std::vector<std::vector<std::int32_t>> declinedPerTask_;  // proxies whose query met a declined pair
 };
+
+template <class Wanted>
+void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const Wanted& wanted,
+                              Executor& executor) {
+    pairs.clear();
+    if (moved_.empty()) return;
+    beginFind(executor.workerSlots());
+    // A moved movable proxy meets both trees; a moved static proxy meets only the movable tree (static bodies
+    // never pair). A pair of two moved proxies is reported by the query of the smaller key only.
+    executor.parallelFor(moved_.size(), 64, [&](std::size_t begin, std::size_t end, int worker) {
+        std::vector<BodyPair>& out = perTask_[static_cast<std::size_t>(worker)];
+        std::vector<std::int32_t>& declined = declinedPerTask_[static_cast<std::size_t>(worker)];
+        for (std::size_t i = begin; i < end; ++i) {
+            const std::int32_t k = moved_[i];
+            bool declinedOne = false;
+            const Aabb& box = fatBox(k);
+            const std::uint32_t body = treeOf(k).userData(k >> 1);
+            for (int t = 0; t < 2; ++t) {
+                if (t == 1 && isStatic(k)) continue;
+                const auto& flags = isMoved_[t];
+                tree_[t].query(box, [&](std::int32_t id, std::uint32_t other) {
+                    const std::int32_t otherKey = key(id, t == 1);
+                    if (otherKey == k) return true;
+                    const bool otherMoved = static_cast<std::size_t>(id) < flags.size() && flags[id];
+                    if (otherMoved && otherKey < k) return true;
+                    const std::uint32_t first = std::min(body, other), second = std::max(body, other);
+                    // Most overlaps of a moving proxy are pairs it already has: only new ones go on to the sort.
+                    if (known.contains(PairSet::key(first, second))) return true;
+                    if (wanted(first, second)) out.emplace_back(first, second);
+                    else declinedOne = true;
+                    return true;
+                });
+            }
+            if (declinedOne) declined.push_back(k);
+        }
+    });
+    endFind(pairs);
+}
 
 }  // namespace physim

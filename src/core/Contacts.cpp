@@ -153,7 +153,7 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 
 void WorldImpl::updatePairs() {
     const double speculative = 4.0 * settings.linearSlop;
-    const BroadPhase::PairWanted wanted = [&](std::uint32_t a, std::uint32_t b) {
+    const auto wanted = [&](std::uint32_t a, std::uint32_t b) {
         const BodyData& A = bodies[a];
         const BodyData& B = bodies[b];
         return !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
