@@ -314,10 +314,24 @@ PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Xf& xa, const
     if (best >= remaining || (wa == 0.0 && wb == 0.0)) return best;
     const double dw = wb - wa, wa2 = wa * wa, wb2 = wb * wb, dw2 = dw * dw;
 
-    // Turning with a: each bounding point of b against a's extent along n (measured from a's origin).
+    // Each shape's extent along n from its origin now: a's on its side towards b, b's on its side towards a.
     double extentA = -INFINITY;
     for (int i = 0; i < a.count; ++i) extentA = maxOf(extentA, dot(n, xa.q.apply(a.vertices[i])));
     extentA += a.radius;
+    double extentB = INFINITY;
+    for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, xb.q.apply(b.vertices[j])));
+    extentB -= b.radius;
+
+    // The line fixed in the world again, with no spin term: however a shape turns, its extent along the line stays
+    // within its turning reach (plus radius) of its origin, and exactly as now if it does not turn. Far from
+    // contact this advances further than the first-order bound, whose spin term counts against every step.
+    const double boundA = wa == 0.0 ? extentA : m.reachA + a.radius;
+    const double boundB = wb == 0.0 ? -extentB : m.reachB + b.radius;
+    const double lineGap = dot(n, xb.p - xa.p) - boundA - boundB - target;
+    if (lineGap > 0.0) best = maxOf(best, -dot(v, n) > 0.0 ? lineGap / -dot(v, n) : INFINITY);
+    if (best >= remaining) return best;
+
+    // Turning with a: each bounding point of b against a's extent along n (measured from a's origin).
     const double kA = 2.0 * ::fabs(wa) * m.speed + wa2 * m.apart + dw2 * m.reachB;
     const double jA = ::fabs(wa) * wa2 * m.apart + 3.0 * wa2 * m.speed + ::fabs(dw) * dw2 * m.reachB;
     const double cA = dot(n, -wa2 * (xb.p - xa.p) - (2.0 * wa) * perp(v));
@@ -334,9 +348,6 @@ PHYSIM_HOST_DEVICE inline double safeAdvance(const Shape& a, const Xf& xa, const
 
     // Turning with b: each bounding point of a against b's extent along n; the gap is that extent minus the
     // point's height, so the roles swap and the signs of its derivatives flip.
-    double extentB = INFINITY;
-    for (int j = 0; j < b.count; ++j) extentB = minOf(extentB, dot(n, xb.q.apply(b.vertices[j])));
-    extentB -= b.radius;
     const double kB = 2.0 * ::fabs(wb) * m.speed + wb2 * m.apart + dw2 * m.reachA;
     const double jB = ::fabs(wb) * wb2 * m.apart + 3.0 * wb2 * m.speed + ::fabs(dw) * dw2 * m.reachA;
     const double cB = dot(n, -wb2 * (xb.p - xa.p) - (2.0 * wb) * perp(v));
