@@ -1,6 +1,7 @@
 #include "BroadPhase.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace physim {
 
@@ -24,6 +25,16 @@ void BroadPhase::destroyProxy(std::int32_t k) {
 void BroadPhase::moveProxy(std::int32_t k, const Aabb& fatBox) {
     treeOf(k).moveProxy(k >> 1, fatBox);
     markMoved(k);
+}
+
+void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes) {
+    movedIds_.clear();
+    for (const std::int32_t k : keys) {
+        if (isStatic(k)) throw std::logic_error("BroadPhase::moveProxies: a static body's proxy");
+        movedIds_.push_back(k >> 1);
+    }
+    tree_[0].moveProxies(movedIds_, fatBoxes);
+    for (const std::int32_t k : keys) markMoved(k);
 }
 
 const Aabb& BroadPhase::fatBox(std::int32_t k) const { return treeOf(k).fatAabb(k >> 1); }

@@ -28,6 +28,9 @@ public:
     void destroyProxy(std::int32_t key);
     /// A new box (the body left its old one, or was moved by the user); the proxy joins the move buffer.
     void moveProxy(std::int32_t key, const Aabb& fatBox);
+    /// New boxes for many proxies of movable bodies at once (DynamicTree::moveProxies: a large share rebuilds the
+    /// tree); each joins the move buffer.
+    void moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes);
     const Aabb& fatBox(std::int32_t key) const;
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
@@ -59,6 +62,7 @@ private:
     DynamicTree tree_[2];                 // [0] movable bodies, [1] static bodies
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
+    std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
     std::vector<std::vector<BodyPair>> perTask_;
     std::vector<std::vector<std::int32_t>> declinedPerTask_;  // proxies whose query met a declined pair
 };

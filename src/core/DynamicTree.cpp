@@ -342,9 +342,31 @@ double DynamicTree::areaRatio() const {
     return total / rootArea;
 }
 
+void DynamicTree::moveProxies(const std::vector<std::int32_t>& proxies, const std::vector<Aabb>& boxes) {
+    if (proxies.size() != boxes.size())
+        throw std::invalid_argument("DynamicTree::moveProxies: " + std::to_string(proxies.size()) + " proxies but " +
+                                    std::to_string(boxes.size()) + " boxes");
+    for (std::size_t i = 0; i < proxies.size(); ++i) {
+        checkProxy(proxies[i], "moveProxies");
+        requireBox(boxes[i], "moveProxies");
+    }
+    if (4 * proxies.size() < proxyCount_ || proxies.size() < kRebuildAtLeast) {
+        for (std::size_t i = 0; i < proxies.size(); ++i) {
+            removeLeaf(proxies[i]);
+            at(proxies[i]).box = boxes[i];
+            insertLeaf(proxies[i]);
+        }
+        return;
+    }
+    // A quarter of the tree or more: the boxes in place, then one rebuild, which costs about what a few
+    // reinsertions do and leaves a better tree than many.
+    for (std::size_t i = 0; i < proxies.size(); ++i) at(proxies[i]).box = boxes[i];
+    rebuild();
+}
+
 void DynamicTree::rebuild() {
-    std::vector<std::int32_t> leaves;
-    leaves.reserve(proxyCount_);
+    std::vector<std::int32_t>& leaves = rebuildLeaves_;
+    leaves.clear();
     for (std::size_t i = 0; i < nodes_.size(); ++i)
         if (nodes_[i].height == 0) leaves.push_back(static_cast<std::int32_t>(i));
     // Highest index freed first, so the free list hands the internal nodes out from the lowest slot up.
@@ -410,13 +432,10 @@ void DynamicTree::rebuild() {
 
     // Top-down with an explicit stack (a lopsided split must not overflow the call stack); boxes and heights
     // bottom-up afterwards, visiting the internal nodes in the reverse of their creation order.
-    struct Task {
-        std::size_t begin, end;
-        std::int32_t parent;
-    };
-    std::vector<Task> tasks{{0, leaves.size(), kNull}};
-    std::vector<std::int32_t> created;
-    created.reserve(leaves.size());
+    std::vector<RebuildTask>& tasks = rebuildTasks_;
+    tasks.assign(1, {0, leaves.size(), kNull});
+    std::vector<std::int32_t>& created = rebuildCreated_;
+    created.clear();
     const auto link = [&](std::int32_t child, std::int32_t parent) {
         at(child).parent = parent;
         if (parent == kNull) {
@@ -427,7 +446,7 @@ void DynamicTree::rebuild() {
         }
     };
     while (!tasks.empty()) {
-        const Task t = tasks.back();
+        const RebuildTask t = tasks.back();
         tasks.pop_back();
         if (t.end - t.begin == 1) {
             link(leaves[t.begin], t.parent);

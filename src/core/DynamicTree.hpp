@@ -47,6 +47,11 @@ public:
     /// Gives a proxy a new box: removes and reinserts its leaf (the id stays). Throws like createProxy and
     /// destroyProxy, before touching anything.
     void moveProxy(std::int32_t proxy, const Aabb& fatBox);
+    /// Gives proxies[i] the box boxes[i], for every i. When they are a quarter of the tree or more (and at least
+    /// kRebuildAtLeast), the boxes are set in place and the tree rebuilt; otherwise each moves as by moveProxy.
+    /// Throws like moveProxy (or for lists of different sizes) before touching anything.
+    void moveProxies(const std::vector<std::int32_t>& proxies, const std::vector<Aabb>& boxes);
+    static constexpr std::size_t kRebuildAtLeast = 16;
 
     const Aabb& fatAabb(std::int32_t proxy) const {
         assert(isProxy(proxy));
@@ -122,6 +127,14 @@ private:
     std::int32_t freeList_ = kNull;
     std::size_t proxyCount_ = 0;
     std::vector<Candidate> frontier_;  // insertion's search heap, kept to avoid allocating per insertion
+    // rebuild's work lists, kept for the same reason.
+    struct RebuildTask {
+        std::size_t begin, end;
+        std::int32_t parent;
+    };
+    std::vector<std::int32_t> rebuildLeaves_;
+    std::vector<RebuildTask> rebuildTasks_;
+    std::vector<std::int32_t> rebuildCreated_;
 };
 
 template <class Callback>

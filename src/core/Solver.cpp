@@ -265,8 +265,15 @@ void WorldImpl::solve() {
 }
 
 void WorldImpl::moveDeferredProxies() {
-    for (std::size_t i = 0; i < enlarged.size(); ++i)
-        if ((enlarged[i] & 4) && proxyOutgrown(bodies[sims[i].body])) moveProxy(bodies[sims[i].body]);
+    deferredKeys.clear();
+    deferredBoxes.clear();
+    for (std::size_t i = 0; i < enlarged.size(); ++i) {
+        const BodyData& b = bodies[sims[i].body];
+        if (!(enlarged[i] & 4) || !proxyOutgrown(b)) continue;
+        deferredKeys.push_back(b.proxy);
+        deferredBoxes.push_back(proxyBox(b, kAabbMargin));
+    }
+    broadPhase.moveProxies(deferredKeys, deferredBoxes);  // a crowd of fast bodies rebuilds the tree once
 }
 
 }  // namespace physim

@@ -83,6 +83,8 @@ struct WorldImpl {
     std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<JointConstraint> jointConstraints;
+    std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
+    std::vector<Aabb> deferredBoxes;
     std::vector<std::uint8_t> enlarged;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
                                          // proxy to move after the Continuous stage (bit 2)
     bool fastBodies = false;                     // a dynamic body moved more than half its core radius

@@ -184,6 +184,37 @@ TEST(DynamicTree, RandomOperationsKeepInvariantsAndAnswers) {
     EXPECT_GT(destroys, 1500u);
 }
 
+// Many proxies moved at once: a few are reinserted one by one, a large share set in place with one rebuild.
+// Either way the answers and invariants are those of moving each proxy alone.
+TEST(DynamicTree, MovingManyProxiesAtOnceMatchesBruteForce) {
+    std::mt19937_64 rng(13);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double side = 20.0;
+    DynamicTree tree;
+    Live live;
+    std::vector<std::int32_t> ids;
+    for (int i = 0; i < 400; ++i) ids.push_back(create(tree, live, randomBox(rng, side)));
+    // 99 of 400 are reinserted one by one, 100 and 400 rebuild the tree.
+    for (const std::size_t share : {std::size_t{5}, std::size_t{99}, std::size_t{100}, std::size_t{400}}) {
+        std::vector<std::int32_t> moving;
+        std::vector<Aabb> boxes;
+        for (std::size_t k = 0; moving.size() < share; k += ids.size() / share) {
+            moving.push_back(ids[k]);
+            boxes.push_back(randomBox(rng, side));
+            live[ids[k]].box = boxes.back();
+        }
+        tree.moveProxies(moving, boxes);
+        tree.validate();
+        ASSERT_EQ(tree.proxyCount(), live.size());
+        expectQueriesMatch(tree, live, rng, side);
+    }
+    const std::vector<std::int32_t> one{ids[0]};
+    EXPECT_THROW(tree.moveProxies(one, {}), std::invalid_argument);
+    EXPECT_THROW(tree.moveProxies(one, {box(0, 0, std::nan(""), 1)}), std::invalid_argument);
+    tree.validate();
+    EXPECT_EQ(tree.fatAabb(ids[0]).lower, live[ids[0]].box.lower);  // the refused calls left it where it was
+}
+
 TEST(DynamicTree, QueryStopsWhenTheCallbackSaysSo) {
     DynamicTree tree;
     for (int i = 0; i < 100; ++i) tree.createProxy(box(i, 0, i + 1, 1), static_cast<std::uint32_t>(i));
