@@ -133,13 +133,13 @@ Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
     // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
     // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
     // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
-    // world would pair it with everything on the way.
+    // world would pair it with everything on the way. However fast it spins, the shape stays within its extent of
+    // the centre of mass, which stays inside the box of the path: the turn never reaches further than the extent.
     Vec2 travel = b.v * dt;
-    double turn = std::abs(b.w) * dt * b.extent;
+    const double turn = std::min(std::abs(b.w) * dt * b.extent, b.extent);
     if (b.detection == CollisionDetection::Discrete) {
         const double length = travel.norm();
         if (length > b.extent) travel *= b.extent / length;
-        turn = std::min(turn, b.extent);
     }
     Aabb box = b.aabb;
     box.lower = box.lower.cwiseMin(b.aabb.lower + travel);
