@@ -1,8 +1,9 @@
 #pragma once
-// Persistent contacts: one record per pair of bodies whose enlarged boxes overlap. Internal.
+// Persistent contacts: one record per pair of bodies whose enlarged boxes overlap, except a pair with a moving
+// continuous body that cannot meet within the step (the broad phase asks about it again each step). Internal.
 //
 // The broad phase creates a record when two proxies start to overlap and the narrow phase destroys it when they
-// no longer do. In between, the record keeps its manifold (points keyed by feature id, with their impulses) from
+// no longer do (or when the pair becomes one of those). In between, the record keeps its manifold (points keyed by feature id, with their impulses) from
 // step to step, so warm starting carries over and begin / end events are exact.
 
 #include "BodyData.hpp"

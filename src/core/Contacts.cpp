@@ -1,5 +1,5 @@
 // Persistent contacts: created from the broad phase's new pairs, updated once per step by the narrow phase,
-// destroyed when their bodies' enlarged boxes part.
+// destroyed when their bodies' enlarged boxes part (or the pair is deferred: see `deferred`).
 
 #include "Manifolds.hpp"
 #include "Slots.hpp"
