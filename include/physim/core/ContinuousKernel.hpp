@@ -139,23 +139,19 @@ PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, c
 // and normals are moved into a's frame where they are used rather than stored in local arrays: the same
 // arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such arrays (docs/cuda.md).
 PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
-    // Everything in a's frame; b's vertices and normals are placed there once.
     const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
     const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
-    Vec vb[kMaxVertices], nb[kMaxVertices];
-    for (int j = 0; j < b.count; ++j) {
-        vb[j] = relative.apply(b.vertices[j]);
-        nb[j] = q.apply(b.normals[j]);
-    }
     bool separated = false;
     for (int i = 0; i < a.count && !separated; ++i) {
         double s = INFINITY;
-        for (int j = 0; j < b.count; ++j) s = minOf(s, dot(a.normals[i], vb[j] - a.vertices[i]));
+        for (int j = 0; j < b.count; ++j) s = minOf(s, dot(a.normals[i], relative.apply(b.vertices[j]) - a.vertices[i]));
         separated = s > 0.0;
     }
     for (int j = 0; j < b.count && !separated; ++j) {
+        const Vec nb = q.apply(b.normals[j]);
+        const Vec vb = relative.apply(b.vertices[j]);
         double s = INFINITY;
-        for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb[j], a.vertices[i] - vb[j]));
+        for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb, a.vertices[i] - vb));
         separated = s > 0.0;
     }
     if (!separated) return noDistance();
@@ -163,22 +159,24 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
     double bestSq = INFINITY;
     Vec pa{0.0, 0.0}, pb{0.0, 0.0};
     for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
+        const Vec vb = relative.apply(b.vertices[j]);
         for (int i = 0; i < a.count; ++i) {
-            if (dot(a.normals[i], vb[j] - a.vertices[i]) < 0.0) continue;
-            const Vec on = closestOnSegment(vb[j], a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
-            const double sq = lengthSquared(vb[j] - on);
+            if (dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
+            const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
+            const double sq = lengthSquared(vb - on);
             if (sq < bestSq) {
                 bestSq = sq;
                 pa = on;
-                pb = vb[j];
+                pb = vb;
             }
         }
     }
     for (int j = 0; j < b.count; ++j) {  // a's vertices against b's edges
-        const Vec from = vb[j];
-        const Vec to = vb[j + 1 == b.count ? 0 : j + 1];
+        const Vec from = relative.apply(b.vertices[j]);
+        const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
+        const Vec nb = q.apply(b.normals[j]);
         for (int i = 0; i < a.count; ++i) {
-            if (dot(nb[j], a.vertices[i] - from) < 0.0) continue;
+            if (dot(nb, a.vertices[i] - from) < 0.0) continue;
             const Vec on = closestOnSegment(a.vertices[i], from, to);
             const double sq = lengthSquared(a.vertices[i] - on);
             if (sq < bestSq) {
