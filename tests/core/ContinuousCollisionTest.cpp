@@ -4,6 +4,7 @@
 // and its Continuous stage puts a body that meets something back at its first impact (velocity kept), so the next
 // step's contact answers the impact with the solver's rules (docs/ccd.md).
 
+#include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/World.hpp"
 
 #include "support/RandomBatch.hpp"
@@ -13,8 +14,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace physim {
 namespace {
@@ -338,6 +341,57 @@ TEST(ContinuousPairs, APairThatCannotMeetYetGetsItsContactInTime) {
         }
         EXPECT_NEAR(x[1], x[0], 1e-9) << "speed " << speed;
         EXPECT_LT(x[0], 0.0) << "it came back";
+    }
+}
+
+// The World's batch keeps its promise to a GPU solver: its shapesRevision is never 0, and while it stays the same
+// the shape arrays are exactly those of the last batch (so they may stay on the device); creating or destroying a
+// body changes it.
+TEST(ContinuousStage, TheWorldsBatchKeepsItsShapesRevisionPromise) {
+    struct Recording : ContinuousSolver {
+        CpuContinuousSolver cpu;
+        std::vector<std::pair<std::uint64_t, ContinuousBatch::Shapes>> seen;
+        void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override {
+            seen.emplace_back(batch.shapesRevision, batch.shapes);
+            cpu.solve(batch, result);
+        }
+        std::string name() const override { return "recording"; }
+    };
+    const auto equal = [](const ContinuousBatch::Shapes& x, const ContinuousBatch::Shapes& y) {
+        return x.kind == y.kind && x.firstVertex == y.firstVertex && x.vertexCount == y.vertexCount &&
+               x.radius == y.radius && x.boundingRadius == y.boundingRadius && x.vertexX == y.vertexX &&
+               x.vertexY == y.vertexY && x.normalX == y.normalX && x.normalY == y.normalY;
+    };
+    World world(noGravity());
+    const std::vector<BodyId> bullets = testing::fillBulletBox(world, 40, 3);
+    auto recording = std::make_shared<Recording>();
+    world.setContinuousSolver(recording);
+    std::size_t before = 0;
+    std::uint64_t revision = 0;
+    for (int phase = 0; phase < 3; ++phase) {
+        for (int i = 0; i < 10; ++i) world.step(kDt);
+        ASSERT_GT(recording->seen.size(), before + 5) << "phase " << phase << ": the batch ran";
+        for (std::size_t k = before; k < recording->seen.size(); ++k) {
+            EXPECT_NE(recording->seen[k].first, 0u);
+            if (k > before) {
+                EXPECT_EQ(recording->seen[k].first, recording->seen[k - 1].first) << "nothing was created or destroyed";
+                EXPECT_TRUE(equal(recording->seen[k].second, recording->seen[k - 1].second));
+            }
+        }
+        if (phase > 0) {
+            EXPECT_NE(recording->seen[before].first, revision) << "phase " << phase;
+        }
+        revision = recording->seen.back().first;
+        before = recording->seen.size();
+        if (phase == 0) {
+            BodyDef extra;
+            extra.shape = makeBox(0.02, 0.01);
+            extra.velocity = {300.0, 10.0};
+            extra.collisionDetection = CollisionDetection::ContinuousExact;
+            world.createBody(extra);
+        } else if (phase == 1) {
+            world.destroyBody(bullets[0]);
+        }
     }
 }
 
