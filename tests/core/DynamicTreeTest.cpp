@@ -188,7 +188,6 @@ TEST(DynamicTree, RandomOperationsKeepInvariantsAndAnswers) {
 // Either way the answers and invariants are those of moving each proxy alone.
 TEST(DynamicTree, MovingManyProxiesAtOnceMatchesBruteForce) {
     std::mt19937_64 rng(13);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
     const double side = 20.0;
     DynamicTree tree;
     Live live;
