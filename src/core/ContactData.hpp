@@ -3,8 +3,9 @@
 // continuous body that cannot meet within the step (the broad phase asks about it again each step). Internal.
 //
 // The broad phase creates a record when two proxies start to overlap and the narrow phase destroys it when they
-// no longer do (or when the pair becomes one of those). In between, the record keeps its manifold (points keyed by feature id, with their impulses) from
-// step to step, so warm starting carries over and begin / end events are exact.
+// no longer do (or when the pair becomes one of those). In between, the record keeps its manifold (points keyed
+// by feature id, with their impulses) from step to step, so warm starting carries over and begin / end events are
+// exact.
 
 #include "BodyData.hpp"
 

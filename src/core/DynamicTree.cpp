@@ -116,6 +116,10 @@ void DynamicTree::destroyProxy(std::int32_t proxy) {
 void DynamicTree::moveProxy(std::int32_t proxy, const Aabb& fatBox) {
     checkProxy(proxy, "moveProxy");
     requireBox(fatBox, "moveProxy");
+    reinsert(proxy, fatBox);
+}
+
+void DynamicTree::reinsert(std::int32_t proxy, const Aabb& fatBox) {
     removeLeaf(proxy);
     at(proxy).box = fatBox;
     insertLeaf(proxy);
@@ -351,11 +355,7 @@ void DynamicTree::moveProxies(const std::vector<std::int32_t>& proxies, const st
         requireBox(boxes[i], "moveProxies");
     }
     if (4 * proxies.size() < proxyCount_ || proxies.size() < kRebuildAtLeast) {
-        for (std::size_t i = 0; i < proxies.size(); ++i) {
-            removeLeaf(proxies[i]);
-            at(proxies[i]).box = boxes[i];
-            insertLeaf(proxies[i]);
-        }
+        for (std::size_t i = 0; i < proxies.size(); ++i) reinsert(proxies[i], boxes[i]);
         return;
     }
     // A quarter of the tree or more: the boxes in place, then one rebuild, which costs about what a few

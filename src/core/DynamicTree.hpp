@@ -112,6 +112,7 @@ private:
     void freeNode(std::int32_t index);
     void replaceChild(std::int32_t parent, std::int32_t from, std::int32_t to);  // parent kNull: the root
     void insertLeaf(std::int32_t leaf);
+    void reinsert(std::int32_t proxy, const Aabb& fatBox);  // checked already: out, new box, back in
     void removeLeaf(std::int32_t leaf);
     std::int32_t findBestSibling(const Aabb& box);
     void refitNode(std::int32_t index);  // box and height from the children
