@@ -190,12 +190,15 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // gain energy (a thin spinning box struck on both corners). A bounce is a blow, not a lasting push: nothing of it
 // is warm-started into the next substep. What this pass gave the point to push an overlap apart (`push`) is taken
 // back first: the pair leaves at e times its meeting speed, not at the push-out speed (an overlapping pair that met
-// slowly would otherwise keep that speed: energy from nowhere); later passes push the overlap out as usual.
+// slowly would otherwise keep that speed: energy from nowhere); later passes push the overlap out as usual. What
+// other contacts' push-out gave the bodies in this substep (`othersPush`, along each point's normal) is left out of
+// the speeds the bounce answers, for the same reason: it stays on the bodies, and their relax pass takes it back.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
-                  const double (&push)[2]) {
+                  const double (&push)[2], const double (&othersPush)[2]) {
     for (int i = 0; i < c.pointCount; ++i)
         if (bounce[i].active && push[i] > 0.0) pushNormal(c, A, B, c.points[i], -push[i]);
-    auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]); };
+    // The speed the bounce answers leaves out what other contacts' push-out gave the bodies in this substep.
+    auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]) - othersPush[i]; };
     double x[2] = {0.0, 0.0}, q[2] = {0.0, 0.0};
     if (c.pointCount == 2 && bounce[0].active && bounce[1].active) {
         const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
@@ -235,6 +238,26 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
 }  // namespace
 
 namespace {
+
+// The body's push-out velocity of the present substep, or null (an immovable side, none yet, or none kept).
+const PushVelocity* currentPush(const ContactPass& pass, std::int32_t index) {
+    if (!pass.pushes || index == kNullIndex) return nullptr;
+    const PushVelocity& p = pass.pushes[index];
+    return p.substep == pass.substep ? &p : nullptr;
+}
+
+// Adds a point's push impulse (N s along the normal) to what its bodies have been given by push-out this substep.
+void recordPush(const ContactPass& pass, const ContactConstraint& c, const ContactConstraintPoint& cp, double impulse) {
+    const auto add = [&](std::int32_t index, double invMass, double invI, double moment, double sign) {
+        if (index == kNullIndex || invMass == 0.0) return;
+        PushVelocity& p = pass.pushes[index];
+        if (p.substep != pass.substep) p = {Vec2::Zero(), 0.0, pass.substep};
+        p.v += sign * invMass * impulse * c.normal;
+        p.w += sign * invI * impulse * moment;
+    };
+    add(c.indexA, c.invMassA, c.invIA, cp.rnA, -1.0);
+    add(c.indexB, c.invMassB, c.invIB, cp.rnB, 1.0);
+}
 
 // One row's pass. Turns is false for a row neither of whose bodies can turn (rotation locked, or immovable and not
 // spinning; prepareContact decides once per step): the same rule with its angular terms left out, so a scene whose
@@ -334,17 +357,33 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
         totalNormal += cp.normalImpulse;
     }
     if (started[0] || started[1]) {
+        // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).
+        double othersPush[2] = {0.0, 0.0};
+        const PushVelocity* pushA = pass.useBias ? currentPush(pass, c.indexA) : nullptr;
+        const PushVelocity* pushB = pass.useBias ? currentPush(pass, c.indexB) : nullptr;
+        if (pushA || pushB) {
+            const PushVelocity none;
+            const PushVelocity& pa = pushA ? *pushA : none;
+            const PushVelocity& pb = pushB ? *pushB : none;
+            for (int i = 0; i < count; ++i)
+                othersPush[i] = nx * (pb.v.x() - pa.v.x()) + ny * (pb.v.y() - pa.v.y()) +
+                                (Turns ? pb.w * c.points[i].rnB - pa.w * c.points[i].rnA : 0.0);
+        }
         Bounce bounce[2];
         for (int i = 0; i < count; ++i)
-            if (started[i]) bounce[i] = planBounce(c, c.points[i], before[i], separation[i], pass);
+            if (started[i]) bounce[i] = planBounce(c, c.points[i], before[i] - othersPush[i], separation[i], pass);
         if (bounce[0].active || bounce[1].active) {
             MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
-            applyBounces(c, A, B, bounce, push);
+            applyBounces(c, A, B, bounce, push, othersPush);
             storeSideWithPose(states, c.indexA, mA, A);
             storeSideWithPose(states, c.indexB, mB, B);
             vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
             totalNormal = c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
         }
+        // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
+        for (int i = 0; i < count; ++i)
+            if (push[i] > 0.0 && !bounce[i].active && pass.useBias && pass.pushes)
+                recordPush(pass, c, c.points[i], push[i]);
     }
     // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
     if (c.staticFriction > 0.0 || c.dynamicFriction > 0.0) {

@@ -83,6 +83,7 @@ struct ContactPass {
     double maxPushVelocity = 0.0;     // m/s
     double restitutionThreshold = 0.0;  // m/s
     double slipSpeed = 0.0;           // m/s: faces moving against each other faster than this slide
+    PushVelocity* pushes = nullptr;   // per awake body, what this substep's push-out gave it (solve passes)
 };
 void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass);
 /// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).

@@ -155,6 +155,8 @@ void WorldImpl::solve() {
     contactPass.maxPushVelocity = settings.contactPushMaxVelocity;
     contactPass.restitutionThreshold = settings.restitutionThreshold;
     contactPass.slipSpeed = 0.1 * settings.linearSlop / dt;
+    pushVelocities.assign(n, PushVelocity{});
+    contactPass.pushes = pushVelocities.data();
     auto solvePass = [&](bool useBias) {
         contactPass.useBias = useBias;
         pass([&](ContactConstraint* b, ContactConstraint* e, int) { solveContacts(b, e, st, contactPass); },

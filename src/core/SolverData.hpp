@@ -21,6 +21,15 @@ struct SolverBody {
     Rotation dq{};            // rotation since the step began
 };
 
+/// The velocity the solve pass's soft push-out has given a body in the present substep (m/s, rad/s), kept apart
+/// so that a bounce is planned without it: a bounce must answer how the bodies met, not how fast an overlap with a
+/// third body is being pushed out (the relax pass takes that back). Valid while `substep` is the present one.
+struct PushVelocity {
+    Vec2 v = Vec2::Zero();
+    double w = 0.0;
+    int substep = -1;
+};
+
 /// Read by integration and finalization only.
 struct SolverBodySim {
     Vec2 center0 = Vec2::Zero();   // centre of mass at the step's start, m

@@ -76,6 +76,7 @@ struct WorldImpl {
     std::vector<std::uint8_t> contactFlags;      // per awake contact: what the narrow phase found changed
     std::vector<std::pair<std::uint32_t, std::uint8_t>> changedContacts;
     std::vector<SolverBody> states;              // per awake body
+    std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
     std::vector<SolverBodySim> sims;
     std::vector<ContactConstraint> constraints;  // colour by colour
     std::vector<std::uint32_t> colourStart;      // constraints of colour c: [colourStart[c], colourStart[c + 1])

@@ -86,10 +86,11 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
 
 // 200 discs at 5 m/s in random directions in a closed box, all elastic (restitution 1, no friction), default
 // settings otherwise: over 60 s the kinetic energy never rises by 1e-6 and keeps 99% (every collision, however
-// slow, is elastic: the restitution threshold applies below e = 1 only). Six seeds: before the push-out fix above,
-// four of them rose by 1e-5 to 4e-5. (Of seeds 1 to 40, one still rises, by 3e-4: docs/dynamics.md.)
+// slow, is elastic: the restitution threshold applies below e = 1 only). Seeds 1 to 6: before the push-out fix
+// above, four of them rose by 1e-5 to 4e-5. Seed 23 rose by 3.1e-4 until bounces were planned without the push-out
+// other contacts had given the bodies (docs/dynamics.md). Seeds 1 to 40 now stay within 2.5e-14 (rounding).
 TEST(Energy, ElasticGasKeepsItsEnergy) {
-    for (unsigned seed = 1; seed <= 6; ++seed) {
+    for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u, 23u}) {
         World w(zeroGravity());
         const double half = 8.0, t = 1.0;
         for (const auto& [size, at] : {std::pair{Vec2(half + t, t / 2), Vec2(0.0, -half - t / 2)},
