@@ -239,24 +239,25 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
 
 namespace {
 
-// The body's push-out velocity of the present substep, or null (an immovable side, none yet, or none kept).
-const PushVelocity* currentPush(const ContactPass& pass, std::int32_t index) {
-    if (!pass.pushes || index == kNullIndex) return nullptr;
-    const PushVelocity& p = pass.pushes[index];
-    return p.substep == pass.substep ? &p : nullptr;
+// What the solve passes' push-out has given a body in the present substep, as a velocity (zero for an immovable
+// side, or none yet).
+MotionSide pushedSide(const ContactPass& pass, std::int32_t index) {
+    MotionSide side;
+    if (pass.pushes && index != kNullIndex && pass.pushes[index].substep == pass.substep) {
+        side.v = pass.pushes[index].v;
+        side.w = pass.pushes[index].w;
+    }
+    return side;
 }
 
 // Adds a point's push impulse (N s along the normal) to what its bodies have been given by push-out this substep.
+// Only sides the row can move are written (a kinematic body is read by many rows of one colour).
 void recordPush(const ContactPass& pass, const ContactConstraint& c, const ContactConstraintPoint& cp, double impulse) {
-    const auto add = [&](std::int32_t index, double invMass, double invI, double moment, double sign) {
-        if (index == kNullIndex || invMass == 0.0) return;
-        PushVelocity& p = pass.pushes[index];
-        if (p.substep != pass.substep) p = {Vec2::Zero(), 0.0, pass.substep};
-        p.v += sign * invMass * impulse * c.normal;
-        p.w += sign * invI * impulse * moment;
-    };
-    add(c.indexA, c.invMassA, c.invIA, cp.rnA, -1.0);
-    add(c.indexB, c.invMassB, c.invIB, cp.rnB, 1.0);
+    if (!pass.pushes) return;
+    MotionSide A = pushedSide(pass, c.indexA), B = pushedSide(pass, c.indexB);
+    pushNormal(c, A, B, cp, impulse);
+    if (c.indexA != kNullIndex && c.invMassA != 0.0) pass.pushes[c.indexA] = {A.v, A.w, pass.substep};
+    if (c.indexB != kNullIndex && c.invMassB != 0.0) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
 }
 
 // One row's pass. Turns is false for a row neither of whose bodies can turn (rotation locked, or immovable and not
@@ -359,15 +360,9 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
     if (started[0] || started[1]) {
         // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).
         double othersPush[2] = {0.0, 0.0};
-        const PushVelocity* pushA = pass.useBias ? currentPush(pass, c.indexA) : nullptr;
-        const PushVelocity* pushB = pass.useBias ? currentPush(pass, c.indexB) : nullptr;
-        if (pushA || pushB) {
-            const PushVelocity none;
-            const PushVelocity& pa = pushA ? *pushA : none;
-            const PushVelocity& pb = pushB ? *pushB : none;
-            for (int i = 0; i < count; ++i)
-                othersPush[i] = nx * (pb.v.x() - pa.v.x()) + ny * (pb.v.y() - pa.v.y()) +
-                                (Turns ? pb.w * c.points[i].rnB - pa.w * c.points[i].rnA : 0.0);
+        if (pass.useBias) {
+            const MotionSide pushedA = pushedSide(pass, c.indexA), pushedB = pushedSide(pass, c.indexB);
+            for (int i = 0; i < count; ++i) othersPush[i] = normalSpeed(c, pushedA, pushedB, c.points[i]);
         }
         Bounce bounce[2];
         for (int i = 0; i < count; ++i)
@@ -382,8 +377,7 @@ void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const
         }
         // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
         for (int i = 0; i < count; ++i)
-            if (push[i] > 0.0 && !bounce[i].active && pass.useBias && pass.pushes)
-                recordPush(pass, c, c.points[i], push[i]);
+            if (push[i] > 0.0 && !bounce[i].active) recordPush(pass, c, c.points[i], push[i]);
     }
     // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
     if (c.staticFriction > 0.0 || c.dynamicFriction > 0.0) {
