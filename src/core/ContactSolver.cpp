@@ -20,42 +20,19 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
 
 namespace {
 
-// The rows' impulses along their fixed directions, with the moments prepared once per step (Turns: see solveRow).
-template <bool Turns = true>
+// A normal impulse on one row (the bounce path), with the moments prepared once per step.
 void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
                 double lambda) {
     const Vec2 P = lambda * c.normal;
     A.v -= c.invMassA * P;
     B.v += c.invMassB * P;
-    if constexpr (Turns) {
-        A.w -= c.invIA * lambda * p.rnA;
-        B.w += c.invIB * lambda * p.rnB;
-    }
+    A.w -= c.invIA * lambda * p.rnA;
+    B.w += c.invIB * lambda * p.rnB;
 }
 
 inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const MotionSide& B,
                           const ContactConstraintPoint& p) {
     return c.normal.dot(B.v - A.v) + B.w * p.rnB - A.w * p.rnA;
-}
-
-template <bool Turns = true>
-void pushTangent(const ContactConstraint& c, MotionSide& A, MotionSide& B, double lambda) {
-    const Vec2 P = lambda * perp(c.normal);
-    A.v -= c.invMassA * P;
-    B.v += c.invMassB * P;
-    if constexpr (Turns) {
-        A.w -= c.invIA * lambda * c.rtA;
-        B.w += c.invIB * lambda * c.rtB;
-    }
-}
-
-template <bool Turns>
-void warmStartRow(const ContactConstraint& c, SolverBody* states) {
-    MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
-    for (int i = 0; i < c.pointCount; ++i) pushNormal<Turns>(c, A, B, c.points[i], c.points[i].normalImpulse);
-    pushTangent<Turns>(c, A, B, c.tangentImpulse);
-    storeSide(states, c.indexA, c.invMassA, A);
-    storeSide(states, c.indexB, c.invMassB, B);
 }
 
 }  // namespace
@@ -97,7 +74,6 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
         cp.ndB = c.normal.dot(cp.anchorB);
         cp.baseSeparation = mp.separation - c.normal.dot(cp.anchorB - cp.anchorA);
         cp.normalImpulse = mp.normalImpulse;
-        cp.maxNormalImpulse = 0.0;
         cp.normalMass = massAlong(c, cp.anchorA, cp.anchorB, c.normal);
         cp.relativeVelocity = 0.0;
         cp.engaged = false;
@@ -126,13 +102,6 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.tangentMass = massAlong(c, c.frictionAnchorA, c.frictionAnchorB, perp(c.normal));
     c.rtA = cross(c.frictionAnchorA, perp(c.normal));
     c.rtB = cross(c.frictionAnchorB, perp(c.normal));
-}
-
-void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states) {
-    for (ContactConstraint* c = begin; c != end; ++c) {
-        if (c->turns) warmStartRow<true>(*c, states);
-        else warmStartRow<false>(*c, states);
-    }
 }
 
 namespace {
@@ -228,7 +197,6 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
         if (!bounce[i].active) continue;
         ContactConstraintPoint& cp = c.points[i];
         pushNormal(c, A, B, cp, x[i]);
-        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse + x[i]);
         cp.normalImpulse = 0.0;
     }
     for (int i = 0; i < c.pointCount; ++i)
@@ -260,169 +228,363 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
     if (c.indexB != kNullIndex && c.invMassB != 0.0) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
 }
 
-// One row's pass. Turns is false for a row neither of whose bodies can turn (rotation locked, or immovable and not
-// spinning; prepareContact decides once per step): the same rule with its angular terms left out, so a scene whose
-// bodies all have rotation locked does no rotation work in its hottest loop.
-template <bool Turns>
-void solveRow(ContactConstraint& c, SolverBody* states, SolverBody& still, const ContactPass& pass) {
-    SolverBody& sa = c.indexA == kNullIndex ? still : states[c.indexA];
-    SolverBody& sb = c.indexB == kNullIndex ? still : states[c.indexB];
-    const double nx = c.normal.x(), ny = c.normal.y();
-    const double mA = c.invMassA, iA = c.invIA, mB = c.invMassB, iB = c.invIB;
-    double vAx = sa.v.x(), vAy = sa.v.y(), wA = Turns ? sa.w : 0.0;
-    double vBx = sb.v.x(), vBy = sb.v.y(), wB = Turns ? sb.w : 0.0;
-    // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB; an impulse d along it (B +, A -).
-    auto speed = [&](double dx, double dy, double armA, double armB) {
-        if constexpr (Turns) return dx * (vBx - vAx) + dy * (vBy - vAy) + wB * armB - wA * armA;
-        else return dx * (vBx - vAx) + dy * (vBy - vAy);
-    };
-    auto apply = [&](double d, double dx, double dy, double armA, double armB) {
-        vAx -= mA * d * dx;
-        vAy -= mA * d * dy;
-        vBx += mB * d * dx;
-        vBy += mB * d * dy;
+// kLanes bodies' motion, one per lane: what a block's pass reads of its A sides or its B sides.
+struct WideSide {
+    Wide vx, vy, w, dpx, dpy, qc, qs;
+};
+
+template <bool Turns, bool Pose>
+[[gnu::always_inline]] inline WideSide gather(const SolverBody* const (&s)[kLanes]) {
+    WideSide g{};
+    g.vx = Wide{s[0]->v.x(), s[1]->v.x(), s[2]->v.x(), s[3]->v.x()};
+    g.vy = Wide{s[0]->v.y(), s[1]->v.y(), s[2]->v.y(), s[3]->v.y()};
+    if constexpr (Turns) g.w = Wide{s[0]->w, s[1]->w, s[2]->w, s[3]->w};
+    if constexpr (Pose) {
+        g.dpx = Wide{s[0]->dp.x(), s[1]->dp.x(), s[2]->dp.x(), s[3]->dp.x()};
+        g.dpy = Wide{s[0]->dp.y(), s[1]->dp.y(), s[2]->dp.y(), s[3]->dp.y()};
         if constexpr (Turns) {
-            wA -= iA * d * armA;
-            wB += iB * d * armB;
+            g.qc = Wide{s[0]->dq.c, s[1]->dq.c, s[2]->dq.c, s[3]->dq.c};
+            g.qs = Wide{s[0]->dq.s, s[1]->dq.s, s[2]->dq.s, s[3]->dq.s};
         }
-    };
-    const double normalShift = nx * (sb.dp.x() - sa.dp.x()) + ny * (sb.dp.y() - sa.dp.y());
+    }
+    return g;
+}
+
+// Each lane's body record, or `still` for an immovable side (or an empty lane).
+[[gnu::always_inline]] inline void bodiesOf(const std::int32_t (&index)[kLanes], SolverBody* states, const SolverBody& still,
+              const SolverBody* (&out)[kLanes]) {
+    for (int k = 0; k < kLanes; ++k) out[k] = index[k] == kNullIndex ? &still : states + index[k];
+}
+
+// Writes the lanes' velocities back, only for sides the row can move (a kinematic body is read by many rows of one
+// colour; an immovable side has no record).
+template <bool Turns>
+[[gnu::always_inline]] inline void scatter(const std::int32_t (&index)[kLanes], const Wide& invMass, const WideSide& g, SolverBody* states) {
+    for (int k = 0; k < kLanes; ++k) {
+        if (invMass[k] == 0.0) continue;
+        SolverBody& s = states[index[k]];
+        s.v = {g.vx[k], g.vy[k]};
+        if constexpr (Turns) s.w = g.w[k];
+    }
+}
+
+// B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
+// the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
+template <bool Turns>
+[[gnu::always_inline]] inline Wide speedAlong(const WideSide& A, const WideSide& B, const Wide& dx, const Wide& dy, const Wide& armA,
+                const Wide& armB) {
+    if constexpr (Turns) return dx * (B.vx - A.vx) + dy * (B.vy - A.vy) + B.w * armB - A.w * armA;
+    else return dx * (B.vx - A.vx) + dy * (B.vy - A.vy);
+}
+
+template <bool Turns>
+[[gnu::always_inline]] inline void applyAlong(const ContactBlock& c, WideSide& A, WideSide& B, const Wide& d, const Wide& dx, const Wide& dy,
+                const Wide& armA, const Wide& armB) {
+    A.vx -= c.invMassA * d * dx;
+    A.vy -= c.invMassA * d * dy;
+    B.vx += c.invMassB * d * dx;
+    B.vy += c.invMassB * d * dy;
+    if constexpr (Turns) {
+        A.w -= c.invIA * d * armA;
+        B.w += c.invIB * d * armB;
+    }
+}
+
+template <bool Turns>
+[[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
+    const SolverBody still{};
+    const SolverBody *sa[kLanes], *sb[kLanes];
+    bodiesOf(c.indexA, states, still, sa);
+    bodiesOf(c.indexB, states, still, sb);
+    WideSide A = gather<Turns, false>(sa), B = gather<Turns, false>(sb);
+    for (const ContactBlock::Point& cp : c.points) applyAlong<Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
+    applyAlong<Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
+    scatter<Turns>(c.indexA, c.invMassA, A, states);
+    scatter<Turns>(c.indexB, c.invMassB, B, states);
+}
+
+// What a point that started to push in this pass brings to the bounce path: per point, whether it started, its
+// normal speed before this pass's impulse, its separation, and the part of its impulse that pushes an overlap out.
+struct Start {
+    bool started[2] = {false, false};
+    double before[2] = {0.0, 0.0}, separation[2] = {0.0, 0.0}, push[2] = {0.0, 0.0};
+};
+
+// Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
+// Returns the lane's total normal impulse after it.
+double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& wa, WideSide& wb, SolverBody* states, const Start& start,
+                 const ContactPass& pass) {
+    ContactConstraint c = row(block, cold, k);
     const int count = c.pointCount;
-    double separation[2], bias[2], massScale[2], leak[2], before[2];
+    // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).
+    double othersPush[2] = {0.0, 0.0};
+    if (pass.useBias) {
+        const MotionSide pushedA = pushedSide(pass, c.indexA), pushedB = pushedSide(pass, c.indexB);
+        for (int i = 0; i < count; ++i) othersPush[i] = normalSpeed(c, pushedA, pushedB, c.points[i]);
+    }
+    Bounce bounce[2];
+    for (int i = 0; i < count; ++i)
+        if (start.started[i])
+            bounce[i] = planBounce(c, c.points[i], start.before[i] - othersPush[i], start.separation[i], pass);
+    if (bounce[0].active || bounce[1].active) {
+        auto side = [&](std::int32_t index, const WideSide& g) {
+            MotionSide m;
+            if (index != kNullIndex) m = loadSide(states, index);
+            m.v = {g.vx[k], g.vy[k]};
+            m.w = g.w[k];
+            return m;
+        };
+        MotionSide A = side(c.indexA, wa), B = side(c.indexB, wb);
+        applyBounces(c, A, B, bounce, start.push, othersPush);
+        storeSideWithPose(states, c.indexA, c.invMassA, A);
+        storeSideWithPose(states, c.indexB, c.invMassB, B);
+        wa.vx[k] = A.v.x(), wa.vy[k] = A.v.y(), wa.w[k] = A.w;
+        wb.vx[k] = B.v.x(), wb.vy[k] = B.v.y(), wb.w[k] = B.w;
+    }
+    // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
+    for (int i = 0; i < count; ++i)
+        if (start.push[i] > 0.0 && !bounce[i].active) recordPush(pass, c, c.points[i], start.push[i]);
     for (int i = 0; i < count; ++i) {
-        const ContactConstraintPoint& cp = c.points[i];
+        block.points[i].normalImpulse[k] = c.points[i].normalImpulse;
+        cold.lanes[k].relativeVelocity[i] = c.points[i].relativeVelocity;
+        cold.lanes[k].engaged[i] = c.points[i].engaged;
+    }
+    return c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
+}
+
+// One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
+// immovable and not spinning; prepareContact decides once per step): the same rule with its angular terms left
+// out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop.
+template <bool Turns>
+[[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
+                                              const ContactPass& pass) {
+    const SolverBody still{};  // stands for an immovable body; never written (its rows' inverse masses are 0)
+    const SolverBody *sa[kLanes], *sb[kLanes];
+    bodiesOf(c.indexA, states, still, sa);
+    bodiesOf(c.indexB, states, still, sb);
+    WideSide A = gather<Turns, true>(sa), B = gather<Turns, true>(sb);
+    const Wide zero{}, one = splat(1.0);
+    const Wide nx = c.nx, ny = c.ny;
+    const Wide normalShift = nx * (B.dpx - A.dpx) + ny * (B.dpy - A.dpy);
+    Wide separation[2], bias[2], massScale[2], leak[2], before[2];
+    for (int i = 0; i < 2; ++i) {
+        const ContactBlock::Point& cp = c.points[i];
         // Separation now: the start's, moved by the bodies' displacement and turn since the step began
         // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
-        double s;
+        Wide s;
         if constexpr (Turns)
-            s = normalShift + (sb.dq.c * cp.ndB + sb.dq.s * cp.rnB) - (sa.dq.c * cp.ndA + sa.dq.s * cp.rnA) +
-                cp.baseSeparation;
+            s = normalShift + (B.qc * cp.ndB + B.qs * cp.rnB) - (A.qc * cp.ndA + A.qs * cp.rnA) + cp.baseSeparation;
         else
             s = normalShift + cp.ndB - cp.ndA + cp.baseSeparation;
         separation[i] = s;
-        if (s > 0.0) {  // speculative: close the gap in this substep, no further
-            bias[i] = s * pass.invH;
-            massScale[i] = 1.0;
-            leak[i] = 0.0;
-        } else if (pass.useBias) {
-            bias[i] = std::max(pass.softness.biasRate * s, -pass.maxPushVelocity);
-            massScale[i] = pass.softness.massScale;
-            leak[i] = pass.softness.impulseScale;
+        // Speculative (apart): close the gap in this substep, no further. Overlapping: the solve pass pushes out
+        // softly, the relax pass not at all.
+        const WideMask apart = s > 0.0;
+        if (pass.useBias) {
+            bias[i] = apart ? s * pass.invH : max(pass.softness.biasRate * s, splat(-pass.maxPushVelocity));
+            massScale[i] = apart ? one : splat(pass.softness.massScale);
+            leak[i] = apart ? zero : splat(pass.softness.impulseScale);
         } else {
-            bias[i] = 0.0;
-            massScale[i] = 1.0;
-            leak[i] = 0.0;
+            bias[i] = apart ? s * pass.invH : zero;
+            massScale[i] = one;
+            leak[i] = zero;
         }
-        before[i] = speed(nx, ny, cp.rnA, cp.rnB);
+        before[i] = speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
     }
-    double delta[2] = {0.0, 0.0};  // this pass's change of each accumulated impulse
-    const bool block = count == 2 && c.invDet > 0.0;
-    if (block) {
-        // Both points at once: the 2x2 complementarity problem on the accumulated impulses
-        // (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per point.
-        const double x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
-        const double b1 = before[0] + bias[0] - (c.k11 * x1 + c.k12 * x2);
-        const double b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
-        double y1 = -(c.k22 * b1 - c.k12 * b2) * c.invDet;
-        double y2 = -(c.k11 * b2 - c.k12 * b1) * c.invDet;
-        if (!(y1 >= 0.0 && y2 >= 0.0)) {
-            y1 = -b1 / c.k11;  // only point 1 pushes; point 2 must then separate
-            y2 = 0.0;
-            if (!(y1 >= 0.0 && c.k12 * y1 + b2 >= 0.0)) {
-                y1 = 0.0;  // only point 2 pushes
-                y2 = -b2 / c.k22;
-                if (!(y2 >= 0.0 && c.k12 * y2 + b1 >= 0.0)) y1 = y2 = 0.0;  // neither
-            }
-        }
-        delta[0] = std::max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, 0.0) - x1;
-        delta[1] = std::max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, 0.0) - x2;
+    // Two-point rows with a regular mass matrix solve both points at once: the 2x2 complementarity problem on the
+    // accumulated impulses (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per
+    // point. The others go one point at a time (Gauss-Seidel): the second sees the first's impulse.
+    const WideMask block = c.invDet > 0.0;
+    const Wide x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
+    Wide blockDelta[2];
+    {
+        const Wide b1 = before[0] + bias[0] - (c.k11 * x1 + c.k12 * x2);
+        const Wide b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
+        const Wide both1 = -(c.k22 * b1 - c.k12 * b2) * c.invDet;
+        const Wide both2 = -(c.k11 * b2 - c.k12 * b1) * c.invDet;
+        const Wide k11 = block ? c.k11 : one, k22 = block ? c.k22 : one;  // no division by zero off the block lanes
+        const Wide first = -b1 / k11;   // only point 1 pushes; point 2 must then separate
+        const Wide second = -b2 / k22;  // only point 2 pushes
+        const WideMask bothPush = (both1 >= 0.0) & (both2 >= 0.0);
+        const WideMask firstOnly = (first >= 0.0) & (c.k12 * first + b2 >= 0.0);
+        const WideMask secondOnly = (second >= 0.0) & (c.k12 * second + b1 >= 0.0);
+        const Wide y1 = bothPush ? both1 : (firstOnly ? first : zero);
+        const Wide y2 = bothPush ? both2 : (firstOnly ? zero : (secondOnly ? second : zero));
+        blockDelta[0] = max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, zero) - x1;
+        blockDelta[1] = max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, zero) - x2;
     }
-    bool started[2] = {false, false};
-    double push[2] = {0.0, 0.0};  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
-    double totalNormal = 0.0;
-    for (int i = 0; i < count; ++i) {
-        ContactConstraintPoint& cp = c.points[i];
-        if (!block) {
-            // One point at a time (Gauss-Seidel): the second sees the first's impulse.
-            const double vn = i == 0 ? before[0] : speed(nx, ny, cp.rnA, cp.rnB);
-            before[i] = vn;
-            const double x = cp.normalImpulse;
-            delta[i] = std::max(x - cp.normalMass * massScale[i] * (vn + bias[i]) - leak[i] * x, 0.0) - x;
-        }
-        apply(delta[i], nx, ny, cp.rnA, cp.rnB);
-        started[i] = cp.normalImpulse == 0.0 && delta[i] > 0.0;
-        if (started[i] && bias[i] < 0.0)
-            push[i] = std::clamp(-cp.normalMass * massScale[i] * bias[i], 0.0, delta[i]);
-        cp.normalImpulse += delta[i];
-        cp.maxNormalImpulse = std::max(cp.maxNormalImpulse, cp.normalImpulse);
+    WideMask started[2];
+    Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
+    Wide totalNormal = zero;
+    for (int i = 0; i < 2; ++i) {
+        ContactBlock::Point& cp = c.points[i];
+        const Wide x = cp.normalImpulse;
+        if (i == 1) before[1] = block ? before[1] : speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        const Wide single = max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
+        const Wide delta = block ? blockDelta[i] : single;
+        applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
+        started[i] = (x == 0.0) & (delta > 0.0);
+        push[i] = started[i] & (bias[i] < 0.0) ? clamp(-cp.normalMass * massScale[i] * bias[i], zero, delta) : zero;
+        cp.normalImpulse = x + delta;
         totalNormal += cp.normalImpulse;
     }
-    if (started[0] || started[1]) {
-        // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).
-        double othersPush[2] = {0.0, 0.0};
-        if (pass.useBias) {
-            const MotionSide pushedA = pushedSide(pass, c.indexA), pushedB = pushedSide(pass, c.indexB);
-            for (int i = 0; i < count; ++i) othersPush[i] = normalSpeed(c, pushedA, pushedB, c.points[i]);
+    if (any(started[0] | started[1])) {
+        for (int k = 0; k < kLanes; ++k) {
+            if (!started[0][k] && !started[1][k]) continue;
+            Start start;
+            for (int i = 0; i < 2; ++i) {
+                start.started[i] = started[i][k] != 0;
+                start.before[i] = before[i][k];
+                start.separation[i] = separation[i][k];
+                start.push[i] = push[i][k];
+            }
+            totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);
         }
-        Bounce bounce[2];
-        for (int i = 0; i < count; ++i)
-            if (started[i]) bounce[i] = planBounce(c, c.points[i], before[i] - othersPush[i], separation[i], pass);
-        if (bounce[0].active || bounce[1].active) {
-            MotionSide A{{vAx, vAy}, wA, sa.dp, sa.dq, sa.dAngle}, B{{vBx, vBy}, wB, sb.dp, sb.dq, sb.dAngle};
-            applyBounces(c, A, B, bounce, push, othersPush);
-            storeSideWithPose(states, c.indexA, mA, A);
-            storeSideWithPose(states, c.indexB, mB, B);
-            vAx = A.v.x(), vAy = A.v.y(), wA = A.w, vBx = B.v.x(), vBy = B.v.y(), wB = B.w;
-            totalNormal = c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
-        }
-        // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
-        for (int i = 0; i < count; ++i)
-            if (push[i] > 0.0 && !bounce[i].active) recordPush(pass, c, c.points[i], push[i]);
     }
-    // Friction after the normal rows, so its bound sees this pass's load; none at all for a frictionless pair.
-    if (c.staticFriction > 0.0 || c.dynamicFriction > 0.0) {
-        const double tx = -ny, ty = nx;
-        const double vt = speed(tx, ty, c.rtA, c.rtB);
-        // A sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the
-        // substep's last word, decides which it is for the next substep: sliding when even the bound leaves the
-        // faces moving against each other faster than slipSpeed (a transient of one pass does not break a
-        // face loose).
-        const double bound = (c.sliding ? c.dynamicFriction : c.staticFriction) * totalNormal;
-        const double tangent = std::clamp(c.tangentImpulse - c.tangentMass * vt, -bound, bound);
-        if (!pass.useBias)
-            c.sliding = c.tangentMass > 0.0 &&
-                        std::abs(vt + (tangent - c.tangentImpulse) / c.tangentMass) > pass.slipSpeed;
-        apply(tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
+    // Friction after the normal rows, so its bound sees this pass's load. A sticking face holds up to mu_s times its
+    // load, a sliding one mu_d times. The relax pass, the substep's last word, decides which it is for the next
+    // substep: sliding when even the bound leaves the faces moving against each other faster than slipSpeed (a
+    // transient of one pass does not break a face loose). A frictionless lane has a zero bound: no impulse.
+    if (c.friction) {
+        const Wide tx = -ny, ty = nx;
+        const Wide vt = speedAlong<Turns>(A, B, tx, ty, c.rtA, c.rtB);
+        const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+        const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, -bound, bound);
+        if (!pass.useBias) {
+            const WideMask hasMass = c.tangentMass > 0.0;
+            const Wide mass = hasMass ? c.tangentMass : one;
+            const WideMask slides = hasMass & (abs(vt + (tangent - c.tangentImpulse) / mass) > pass.slipSpeed);
+            const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
+            c.sliding = rubs ? (slides ? one : zero) : c.sliding;
+        }
+        applyAlong<Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
         c.tangentImpulse = tangent;
     }
-    // Only bodies a row can move are written back: a kinematic body is read by many rows of one colour.
-    if (mA != 0.0) {
-        sa.v = {vAx, vAy};
-        if constexpr (Turns) sa.w = wA;
-    }
-    if (mB != 0.0) {
-        sb.v = {vBx, vBy};
-        if constexpr (Turns) sb.w = wB;
-    }
+    scatter<Turns>(c.indexA, c.invMassA, A, states);
+    scatter<Turns>(c.indexB, c.invMassB, B, states);
 }
 
 }  // namespace
 
-void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass) {
-    // The hot loop of the step, in plain scalars: each row reads its two bodies once and writes them back once.
-    SolverBody still{};  // stands for an immovable body; never written (its rows' inverse masses are 0)
-    for (ContactConstraint* c = begin; c != end; ++c) {
-        if (c->turns) solveRow<true>(*c, states, still, pass);
-        else solveRow<false>(*c, states, still, pass);
+PHYSIM_WIDE_LOOP void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+    for (ContactBlock* c = begin; c != end; ++c) {
+        if (c->turns) warmStartBlock<true>(*c, states);
+        else warmStartBlock<false>(*c, states);
     }
 }
 
-void storeImpulses(const ContactConstraint& c, ContactData& contact) {
-    contact.sliding = c.sliding;
+PHYSIM_WIDE_LOOP void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                                    const ContactPass& pass) {
+    for (ContactBlock* c = begin; c != end; ++c, ++cold) {
+        if (c->turns) solveBlock<true>(*c, *cold, states, pass);
+        else solveBlock<false>(*c, *cold, states, pass);
+    }
+}
+
+void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
+    ContactConstraint empty;
+    empty.turns = false;
+    for (int k = lanes; k < kLanes; ++k) setRow(block, cold, k, empty);
+    block.turns = block.friction = false;
+}
+
+void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstraint& c) {
+    ContactBlockCold::Lane& lane = cold.lanes[k];
+    b.indexA[k] = c.indexA;
+    b.indexB[k] = c.indexB;
+    b.nx[k] = c.normal.x();
+    b.ny[k] = c.normal.y();
+    b.invMassA[k] = c.invMassA;
+    b.invIA[k] = c.invIA;
+    b.invMassB[k] = c.invMassB;
+    b.invIB[k] = c.invIB;
+    for (int i = 0; i < 2; ++i) {
+        const ContactConstraintPoint& p = c.points[i];
+        ContactBlock::Point& q = b.points[i];
+        const bool used = i < c.pointCount;  // an unused point has zero mass and no impulse
+        q.rnA[k] = used ? p.rnA : 0.0;
+        q.rnB[k] = used ? p.rnB : 0.0;
+        q.ndA[k] = used ? p.ndA : 0.0;
+        q.ndB[k] = used ? p.ndB : 0.0;
+        q.baseSeparation[k] = used ? p.baseSeparation : 0.0;
+        q.normalImpulse[k] = used ? p.normalImpulse : 0.0;
+        q.normalMass[k] = used ? p.normalMass : 0.0;
+        lane.anchorA[i] = p.anchorA;
+        lane.anchorB[i] = p.anchorB;
+        lane.relativeVelocity[i] = p.relativeVelocity;
+        lane.engaged[i] = p.engaged;
+    }
+    b.k11[k] = c.k11;
+    b.k12[k] = c.k12;
+    b.k22[k] = c.k22;
+    b.invDet[k] = c.invDet;
+    b.rtA[k] = c.rtA;
+    b.rtB[k] = c.rtB;
+    b.tangentMass[k] = c.tangentMass;
+    const bool rubs = c.staticFriction > 0.0 || c.dynamicFriction > 0.0;
+    b.tangentImpulse[k] = rubs ? c.tangentImpulse : 0.0;  // a frictionless row holds no tangent impulse
+    b.staticFriction[k] = c.staticFriction;
+    b.dynamicFriction[k] = c.dynamicFriction;
+    b.sliding[k] = c.sliding ? 1.0 : 0.0;
+    b.turns = b.turns || c.turns;
+    b.friction = b.friction || rubs;
+    lane.restitution = c.restitution;
+    lane.normalAcceleration = c.normalAcceleration;
+    lane.contact = c.contact;
+    lane.pointCount = c.pointCount;
+}
+
+ContactConstraint row(const ContactBlock& b, const ContactBlockCold& cold, int k) {
+    const ContactBlockCold::Lane& lane = cold.lanes[k];
+    ContactConstraint c;
+    c.contact = lane.contact;
+    c.indexA = b.indexA[k];
+    c.indexB = b.indexB[k];
+    c.normal = {b.nx[k], b.ny[k]};
+    c.invMassA = b.invMassA[k];
+    c.invIA = b.invIA[k];
+    c.invMassB = b.invMassB[k];
+    c.invIB = b.invIB[k];
+    c.staticFriction = b.staticFriction[k];
+    c.dynamicFriction = b.dynamicFriction[k];
+    c.restitution = lane.restitution;
+    c.normalAcceleration = lane.normalAcceleration;
+    c.rtA = b.rtA[k];
+    c.rtB = b.rtB[k];
+    c.tangentMass = b.tangentMass[k];
+    c.tangentImpulse = b.tangentImpulse[k];
+    c.sliding = b.sliding[k] != 0.0;
+    c.turns = b.turns;
+    c.pointCount = lane.pointCount;
+    for (int i = 0; i < 2; ++i) {
+        const ContactBlock::Point& q = b.points[i];
+        ContactConstraintPoint& p = c.points[i];
+        p.anchorA = lane.anchorA[i];
+        p.anchorB = lane.anchorB[i];
+        p.rnA = q.rnA[k];
+        p.rnB = q.rnB[k];
+        p.ndA = q.ndA[k];
+        p.ndB = q.ndB[k];
+        p.baseSeparation = q.baseSeparation[k];
+        p.normalImpulse = q.normalImpulse[k];
+        p.normalMass = q.normalMass[k];
+        p.relativeVelocity = lane.relativeVelocity[i];
+        p.engaged = lane.engaged[i];
+    }
+    c.k11 = b.k11[k];
+    c.k12 = b.k12[k];
+    c.k22 = b.k22[k];
+    c.invDet = b.invDet[k];
+    return c;
+}
+
+void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact) {
+    contact.sliding = block.sliding[lane] != 0.0;
     Manifold& m = contact.manifold;
-    const double share = c.pointCount > 0 ? c.tangentImpulse / c.pointCount : 0.0;
-    for (int i = 0; i < c.pointCount; ++i) {
-        m.points[i].normalImpulse = c.points[i].normalImpulse;
+    const int count = cold.lanes[lane].pointCount;
+    const double share = count > 0 ? block.tangentImpulse[lane] / count : 0.0;
+    for (int i = 0; i < count; ++i) {
+        m.points[i].normalImpulse = block.points[i].normalImpulse[lane];
         m.points[i].tangentImpulse = share;
     }
 }

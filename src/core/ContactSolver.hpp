@@ -19,6 +19,7 @@
 // substep's last word, and on a speed, keeps one pass's transient from breaking a face loose.
 
 #include "SolverData.hpp"
+#include "Wide.hpp"
 
 #include "physim/core/Contact.hpp"
 #include "physim/core/WorldSettings.hpp"
@@ -46,12 +47,13 @@ struct ContactConstraintPoint {
     double ndA = 0.0, ndB = 0.0;  // n . anchorA, n . anchorB, m (with rnA, rnB: the turned anchors' reach along n)
     double baseSeparation = 0.0;  // separation - n . (anchorB - anchorA), m: the rest comes from displacements
     double normalImpulse = 0.0;   // N s, this substep's (warm started)
-    double maxNormalImpulse = 0.0;
     double normalMass = 0.0;      // kg
     double relativeVelocity = 0.0;  // m/s along the normal at its fastest meeting in this step (events)
     bool engaged = false;
 };
 
+/// One contact row, scalar: what prepareContact fills and the bounce path works on. The passes run on
+/// ContactBlock, which holds kLanes of these field by field.
 struct ContactConstraint {
     std::uint32_t contact = 0;
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: immovable
@@ -70,10 +72,53 @@ struct ContactConstraint {
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
 };
 
+/// kLanes rows of one colour (no two share a dynamic body), field by field, so a pass solves them at once: what
+/// every pass reads. A lane not in use is an empty row (no bodies, no points, zero masses): every pass leaves it as
+/// it is. A one-point row has a second point with zero mass, which never takes an impulse.
+struct alignas(sizeof(Wide)) ContactBlock {
+    struct Point {
+        Wide rnA, rnB, ndA, ndB, baseSeparation, normalImpulse, normalMass;
+    };
+    Wide nx, ny;
+    Wide invMassA, invIA, invMassB, invIB;
+    Point points[2];
+    Wide k11, k12, k22, invDet;
+    Wide rtA, rtB, tangentMass, tangentImpulse;
+    Wide staticFriction, dynamicFriction, sliding;  // sliding: 1 or 0
+    std::int32_t indexA[kLanes], indexB[kLanes];
+    bool turns = false;     // some lane's body can turn (else the angular terms are skipped for all)
+    bool friction = false;  // some lane has friction
+};
+
+/// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
+/// stream less memory).
+struct ContactBlockCold {
+    struct Lane {
+        std::uint32_t contact = 0;
+        int pointCount = 0;
+        double restitution = 0.0, normalAcceleration = 0.0;
+        Vec2 anchorA[2], anchorB[2];
+        double relativeVelocity[2];
+        bool engaged[2];
+    } lanes[kLanes];
+};
+
+/// Which rows a block holds: [first, first + count) of the rows in colour order.
+struct BlockRows {
+    std::uint32_t first = 0, count = 0;
+};
+
+/// Puts row c into the block's lane (c.turns and friction also mark the block); row() reads a lane back.
+void setRow(ContactBlock& block, ContactBlockCold& cold, int lane, const ContactConstraint& c);
+ContactConstraint row(const ContactBlock& block, const ContactBlockCold& cold, int lane);
+/// Readies a block for `lanes` rows: its marks cleared, the lanes from `lanes` on empty rows; setRow fills the rest.
+void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes);
+
 /// Fills c from its contact's manifold and the bodies' records (lever arms at the centres of mass).
 void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
                     const Vec2& gravity);
-void warmStartContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states);
+/// Over blocks [begin, end); cold[i] belongs to begin[i].
+void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states);
 /// What one pass over the rows needs.
 struct ContactPass {
     double h = 0.0, invH = 0.0;       // the substep, s, and its inverse
@@ -85,8 +130,9 @@ struct ContactPass {
     double slipSpeed = 0.0;           // m/s: faces moving against each other faster than this slide
     PushVelocity* pushes = nullptr;   // per awake body, what this substep's push-out gave it (solve passes)
 };
-void solveContacts(ContactConstraint* begin, ContactConstraint* end, SolverBody* states, const ContactPass& pass);
-/// Writes the impulses back into the manifold (warm start for the next step, and what contacts() reports).
-void storeImpulses(const ContactConstraint& c, ContactData& contact);
+void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                   const ContactPass& pass);
+/// Writes a lane's impulses back into its manifold (warm start for the next step, and what contacts() reports).
+void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact);
 
 }  // namespace physim

@@ -18,7 +18,7 @@ namespace {
 // Colours tried per row before it goes to the overflow (solved serially after the coloured rows).
 constexpr int kColours = 24;
 constexpr std::size_t kBodyGrain = 256;
-constexpr std::size_t kRowGrain = 64;
+constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
 
 class StageTimer {
 public:
@@ -75,9 +75,11 @@ void WorldImpl::solve() {
 
     // Colour the rows: greedy, in the awake list's order (deterministic), a bit per dynamic body per colour.
     std::size_t rowCount = 0;
-    constraints.clear();
+    rowContacts.clear();
+    blockRows.clear();
     jointConstraints.clear();
     colourStart.assign(kColours + 2, 0);
+    blockStart.assign(kColours + 2, 0);
     if (!awakeContacts.empty() || rowJointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         const std::size_t words = (n + 63) / 64;
@@ -106,17 +108,34 @@ void WorldImpl::solve() {
             ++rowCount;
         }
         for (int col = 0; col <= kColours; ++col) colourStart[col + 1] += colourStart[col];
-        constraints.resize(rowCount);
+        rowContacts.resize(rowCount);
         colourFill.assign(colourStart.begin(), colourStart.end() - 1);
         for (std::size_t k = 0; k < awakeContacts.size(); ++k)
             if (constraintColour[k] >= 0)
-                constraints[colourFill[static_cast<std::size_t>(constraintColour[k])]++].contact = awakeContacts[k];
+                rowContacts[colourFill[static_cast<std::size_t>(constraintColour[k])]++] = awakeContacts[k];
+        // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).
+        for (int col = 0; col <= kColours; ++col) {
+            const std::uint32_t first = colourStart[col], end = colourStart[col + 1];
+            const std::uint32_t lanes = col < kColours ? kLanes : 1;
+            for (std::uint32_t r = first; r < end; r += lanes) blockRows.push_back({r, std::min(lanes, end - r)});
+            blockStart[col + 1] = static_cast<std::uint32_t>(blockRows.size());
+        }
+        contactBlocks.resize(blockRows.size());  // every lane is written below: no need to clear them
+        contactCold.resize(blockRows.size());
         std::atomic<std::size_t> turningRows{0};  // counted while each row is at hand, one add per chunk
-        executor.parallelFor(rowCount, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
+        executor.parallelFor(contactBlocks.size(), kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
             std::size_t turning = 0;
-            for (std::size_t i = begin; i < end; ++i) {
-                prepareContact(constraints[i], contacts[constraints[i].contact], bodies, settings.gravity);
-                turning += constraints[i].turns ? 1 : 0;
+            for (std::size_t b = begin; b < end; ++b) {
+                ContactBlock& block = contactBlocks[b];
+                const int lanes = static_cast<int>(blockRows[b].count);
+                startBlock(block, contactCold[b], lanes);
+                for (int lane = 0; lane < lanes; ++lane) {
+                    ContactConstraint row;
+                    row.contact = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
+                    prepareContact(row, contacts[row.contact], bodies, settings.gravity);
+                    setRow(block, contactCold[b], lane, row);
+                    turning += row.turns ? 1 : 0;
+                }
             }
             turningRows.fetch_add(turning, std::memory_order_relaxed);
         });
@@ -135,18 +154,19 @@ void WorldImpl::solve() {
     }
 
     SolverBody* const st = states.data();
-    ContactConstraint* const rows = constraints.data();
+    ContactBlock* const blocks = contactBlocks.data();
+    ContactBlockCold* const cold = contactCold.data();
     // One pass over all rows: joints, then colour by colour (in parallel within a colour), then the overflow.
-    // rowsWork(begin, end, worker) over rows; jointWork(row, joint) for each joint.
+    // rowsWork(begin, end, worker) over blocks; jointWork(row, joint) for each joint.
     auto pass = [&](auto&& rowsWork, auto&& jointWork) {
         for (const JointConstraint& row : jointConstraints) jointWork(row, joints[row.joint]);
         for (int col = 0; col < kColours; ++col) {
-            const std::size_t first = colourStart[col], count = colourStart[col + 1] - first;
-            executor.parallelFor(count, kRowGrain, [&](std::size_t begin, std::size_t end, int worker) {
-                rowsWork(rows + first + begin, rows + first + end, worker);
+            const std::size_t first = blockStart[col], count = blockStart[col + 1] - first;
+            executor.parallelFor(count, kBlockGrain, [&](std::size_t begin, std::size_t end, int worker) {
+                rowsWork(blocks + first + begin, blocks + first + end, worker);
             });
         }
-        rowsWork(rows + colourStart[kColours], rows + colourStart[kColours + 1], 0);
+        rowsWork(blocks + blockStart[kColours], blocks + blockStart[kColours + 1], 0);
     };
     ContactPass contactPass;
     contactPass.h = h;
@@ -159,7 +179,7 @@ void WorldImpl::solve() {
     contactPass.pushes = pushVelocities.data();
     auto solvePass = [&](bool useBias) {
         contactPass.useBias = useBias;
-        pass([&](ContactConstraint* b, ContactConstraint* e, int) { solveContacts(b, e, st, contactPass); },
+        pass([&](ContactBlock* b, ContactBlock* e, int) { solveContacts(b, e, cold + (b - blocks), st, contactPass); },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
     const bool anyRows = rowCount > 0 || !jointConstraints.empty();
@@ -180,7 +200,7 @@ void WorldImpl::solve() {
         }
         if (anyRows) {
             StageTimer timer(profile, Stage::Solve);
-            pass([&](ContactConstraint* b, ContactConstraint* e, int) { warmStartContacts(b, e, st); },
+            pass([&](ContactBlock* b, ContactBlock* e, int) { warmStartContacts(b, e, st); },
                  [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
             for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true);
         }
@@ -206,22 +226,25 @@ void WorldImpl::solve() {
 
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        executor.parallelFor(rowCount, kRowGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t i = begin; i < end; ++i) storeImpulses(rows[i], contacts[rows[i].contact]);
+        executor.parallelFor(contactBlocks.size(), kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t b = begin; b < end; ++b)
+                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane)
+                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[cold[b].lanes[lane].contact]);
         });
         // Impacts, in row order (deterministic): the fastest meeting point of each contact above the threshold.
-        for (std::size_t i = 0; i < rowCount; ++i) {
-            const ContactConstraint& c = rows[i];
-            int fastest = -1;
-            for (int p = 0; p < c.pointCount; ++p)
-                if (c.points[p].engaged && -c.points[p].relativeVelocity > settings.impactSpeedThreshold &&
-                    (fastest < 0 || c.points[p].relativeVelocity < c.points[fastest].relativeVelocity))
-                    fastest = p;
-            if (fastest < 0) continue;
-            const Manifold& m = contacts[c.contact].manifold;
-            events.impacts.push_back({m.bodyA, m.bodyB, m.points[fastest].point, m.normal,
-                                      -c.points[fastest].relativeVelocity});
-        }
+        for (std::size_t b = 0; b < contactBlocks.size(); ++b)
+            for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
+                const ContactBlockCold::Lane& c = cold[b].lanes[lane];
+                int fastest = -1;
+                for (int p = 0; p < c.pointCount; ++p)
+                    if (c.engaged[p] && -c.relativeVelocity[p] > settings.impactSpeedThreshold &&
+                        (fastest < 0 || c.relativeVelocity[p] < c.relativeVelocity[fastest]))
+                        fastest = p;
+                if (fastest < 0) continue;
+                const Manifold& m = contacts[c.contact].manifold;
+                events.impacts.push_back({m.bodyA, m.bodyB, m.points[fastest].point, m.normal,
+                                          -c.relativeVelocity[fastest]});
+            }
     }
 
     StageTimer timer(profile, Stage::Integrate);

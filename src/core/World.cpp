@@ -719,7 +719,7 @@ void World::step(double dt) {
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
-    w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.constraints.size() : 0;
+    w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.rowContacts.size() : 0;
     ++w.stepCount;
 }
 

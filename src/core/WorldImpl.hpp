@@ -78,8 +78,12 @@ struct WorldImpl {
     std::vector<SolverBody> states;              // per awake body
     std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
     std::vector<SolverBodySim> sims;
-    std::vector<ContactConstraint> constraints;  // colour by colour
-    std::vector<std::uint32_t> colourStart;      // constraints of colour c: [colourStart[c], colourStart[c + 1])
+    std::vector<std::uint32_t> rowContacts;      // the contact of each row, colour by colour
+    std::vector<std::uint32_t> colourStart;      // rows of colour c: [colourStart[c], colourStart[c + 1])
+    std::vector<ContactBlock> contactBlocks;     // the rows, kLanes to a block (an overflow row alone)
+    std::vector<ContactBlockCold> contactCold;   // the rest of each block's rows
+    std::vector<std::uint32_t> blockStart;       // blocks of colour c: [blockStart[c], blockStart[c + 1])
+    std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
     std::vector<std::uint32_t> colourFill;
     std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none

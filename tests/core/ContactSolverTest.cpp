@@ -1,7 +1,8 @@
-// The contact rows' rotation-free form against the full rows: a row whose bodies cannot turn (zero inverse inertia,
-// not spinning, so unturned since the step began) skips its angular terms. Those terms are products with zero there,
-// so both forms must give the same impulses and velocities exactly, through solve and relax passes, speculative
-// points, bounces and friction, on random rows. Exact comparison: the skipped terms add only zeros.
+// The contact rows are solved kLanes at a time (ContactBlock). Each lane must be exactly the scalar rule on its own
+// row: what shares its block, and which lane it sits in, must not change a single bit. And a block whose bodies
+// cannot turn skips the angular terms; those terms are products with zero there, so the lean form must match the
+// full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
+// a time, points that start to push (the bounce path, with and without restitution), sticking and sliding friction.
 
 #include "ContactSolver.hpp"
 
@@ -14,24 +15,30 @@
 namespace physim {
 namespace {
 
-// A row between two rotation-locked bodies (B may be immovable), with random geometry, warm-start impulses and
-// material; the normal mass matrix as prepareContact builds it for zero inverse inertia.
-ContactConstraint randomLockedRow(std::mt19937& rng, bool immovableB) {
+// A row between bodies `a` and `b` (b may be immovable: kNullIndex), with random geometry, warm-start impulses and
+// material, and the masses prepareContact would give it. `turning`: the bodies have inertia (else rotation locked).
+ContactConstraint randomRow(std::mt19937& rng, std::int32_t a, std::int32_t b, bool turning) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     ContactConstraint c;
-    c.indexA = 0;
-    c.indexB = immovableB ? kNullIndex : 1;
+    c.indexA = a;
+    c.indexB = b;
     const double angle = 3.14159265358979 * u(rng);
     c.normal = {std::cos(angle), std::sin(angle)};
     c.invMassA = 1.0 + 0.5 * u(rng);
-    c.invMassB = immovableB ? 0.0 : 1.0 + 0.9 * u(rng);
-    c.invIA = c.invIB = 0.0;
+    c.invMassB = b == kNullIndex ? 0.0 : 1.0 + 0.9 * u(rng);
+    c.invIA = turning ? 2.0 + u(rng) : 0.0;
+    c.invIB = turning && b != kNullIndex ? 2.0 + u(rng) : 0.0;
+    c.turns = turning;
     c.staticFriction = u(rng) > 0.0 ? 0.6 : 0.0;
     c.dynamicFriction = 0.5 * c.staticFriction;
     c.restitution = u(rng) > 0.0 ? 0.5 + 0.5 * u(rng) : 0.0;
     c.normalAcceleration = 10.0 * u(rng);
     c.sliding = u(rng) > 0.0;
     c.pointCount = u(rng) > -0.5 ? 2 : 1;
+    auto mass = [&](const Vec2& rA, const Vec2& rB, const Vec2& dir) {
+        const double ra = cross(rA, dir), rb = cross(rB, dir);
+        return 1.0 / (c.invMassA + c.invMassB + c.invIA * ra * ra + c.invIB * rb * rb);
+    };
     for (int i = 0; i < c.pointCount; ++i) {
         ContactConstraintPoint& p = c.points[i];
         p.anchorA = {u(rng), u(rng)};
@@ -42,75 +49,164 @@ ContactConstraint randomLockedRow(std::mt19937& rng, bool immovableB) {
         p.ndB = c.normal.dot(p.anchorB);
         p.baseSeparation = 0.01 * u(rng) - (p.ndB - p.ndA);
         p.normalImpulse = u(rng) > 0.0 ? std::abs(u(rng)) : 0.0;  // some start at zero: they may bounce
-        p.normalMass = 1.0 / (c.invMassA + c.invMassB);
+        p.normalMass = mass(p.anchorA, p.anchorB, c.normal);
     }
     c.tangentImpulse = 0.1 * u(rng);
-    c.tangentMass = 1.0 / (c.invMassA + c.invMassB);
     c.frictionAnchorA = c.points[0].anchorA;
     c.frictionAnchorB = c.points[0].anchorB;
+    c.tangentMass = mass(c.frictionAnchorA, c.frictionAnchorB, perp(c.normal));
     c.rtA = cross(c.frictionAnchorA, perp(c.normal));
     c.rtB = cross(c.frictionAnchorB, perp(c.normal));
-    const double lin = c.invMassA + c.invMassB;
-    c.k11 = c.k22 = c.k12 = lin;  // no angular part: K is singular, so two points go one at a time...
-    c.invDet = 0.0;
-    if (c.pointCount == 2 && u(rng) > 0.0) {
-        c.k12 = 0.5 * lin;  // ...or, to reach the block path too, a regular K (any K is the same in both forms)
-        c.invDet = 1.0 / (c.k11 * c.k22 - c.k12 * c.k12);
+    if (c.pointCount == 2) {
+        const double lin = c.invMassA + c.invMassB;
+        const ContactConstraintPoint &p1 = c.points[0], &p2 = c.points[1];
+        c.k11 = lin + c.invIA * p1.rnA * p1.rnA + c.invIB * p1.rnB * p1.rnB;
+        c.k22 = lin + c.invIA * p2.rnA * p2.rnA + c.invIB * p2.rnB * p2.rnB;
+        c.k12 = lin + c.invIA * p1.rnA * p2.rnA + c.invIB * p1.rnB * p2.rnB;
+        const double det = c.k11 * c.k22 - c.k12 * c.k12;
+        if (turning && c.k11 * c.k11 < 1000.0 * det) c.invDet = 1.0 / det;
+        if (!turning && u(rng) > 0.0) {
+            c.k12 = 0.5 * lin;  // locked bodies make K singular; a regular K reaches the block path too
+            c.invDet = 1.0 / (c.k11 * c.k22 - c.k12 * c.k12);
+        }
     }
     return c;
 }
 
-TEST(ContactSolver, RowsWithoutTurningBodiesMatchTheFullRowsExactly) {
-    std::mt19937 rng(7);
+ContactPass substepPass() {
+    ContactPass pass;
+    pass.h = 1.0 / 480.0;
+    pass.invH = 480.0;
+    pass.softness = makeSoftness(120.0, 10.0, pass.h);
+    pass.maxPushVelocity = 3.0;
+    pass.restitutionThreshold = 1.0;
+    pass.slipSpeed = 0.03;
+    return pass;
+}
+
+std::vector<SolverBody> randomStates(std::mt19937& rng, int count, bool turning) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    int met = 0, slid = 0;
-    for (int trial = 0; trial < 2000; ++trial) {
-        const bool immovableB = trial % 4 == 0;
-        ContactConstraint lean = randomLockedRow(rng, immovableB);
-        ContactConstraint full = lean;
-        lean.turns = false;
-        full.turns = true;
-        std::vector<SolverBody> leanStates(2), fullStates(2);
-        for (int b = 0; b < 2; ++b) {
-            leanStates[b].v = {3.0 * u(rng), 3.0 * u(rng)};
-            leanStates[b].dp = {0.01 * u(rng), 0.01 * u(rng)};
+    std::vector<SolverBody> states(static_cast<std::size_t>(count));
+    for (SolverBody& s : states) {
+        s.v = {3.0 * u(rng), 3.0 * u(rng)};
+        s.dp = {0.01 * u(rng), 0.01 * u(rng)};
+        if (turning) {
+            s.w = 3.0 * u(rng);
+            s.dAngle = 0.05 * u(rng);
+            s.dq = Rotation::fromAngle(s.dAngle);
         }
-        fullStates = leanStates;
-        ContactPass pass;
-        pass.h = 1.0 / 480.0;
-        pass.invH = 480.0;
-        pass.softness = makeSoftness(120.0, 10.0, pass.h);
-        pass.maxPushVelocity = 3.0;
-        pass.restitutionThreshold = 1.0;
-        pass.slipSpeed = 0.03;
-        for (int sub = 0; sub < 4; ++sub) {
-            pass.substep = sub;
-            warmStartContacts(&lean, &lean + 1, leanStates.data());
-            warmStartContacts(&full, &full + 1, fullStates.data());
-            for (const bool bias : {true, false}) {
-                pass.useBias = bias;
-                solveContacts(&lean, &lean + 1, leanStates.data(), pass);
-                solveContacts(&full, &full + 1, fullStates.data(), pass);
-            }
+    }
+    return states;
+}
+
+// Four substeps of warm start, solve and relax over the given blocks.
+void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold, std::vector<SolverBody>& states,
+         std::vector<PushVelocity>& pushes) {
+    ContactPass pass = substepPass();
+    pass.pushes = pushes.data();
+    for (int sub = 0; sub < 4; ++sub) {
+        pass.substep = sub;
+        warmStartContacts(blocks.data(), blocks.data() + blocks.size(), states.data());
+        for (const bool bias : {true, false}) {
+            pass.useBias = bias;
+            solveContacts(blocks.data(), blocks.data() + blocks.size(), cold.data(), states.data(), pass);
         }
-        for (int b = 0; b < 2; ++b) {
-            EXPECT_EQ(leanStates[b].v.x(), fullStates[b].v.x()) << "trial " << trial << " body " << b;
-            EXPECT_EQ(leanStates[b].v.y(), fullStates[b].v.y()) << "trial " << trial << " body " << b;
-            EXPECT_EQ(fullStates[b].w, 0.0) << "a locked body turned, trial " << trial;
-            EXPECT_EQ(leanStates[b].dp, fullStates[b].dp) << "trial " << trial;
+    }
+}
+
+void expectSameRow(const ContactConstraint& x, const ContactConstraint& y, int trial) {
+    for (int i = 0; i < x.pointCount; ++i) {
+        EXPECT_EQ(x.points[i].normalImpulse, y.points[i].normalImpulse) << "trial " << trial;
+        EXPECT_EQ(x.points[i].engaged, y.points[i].engaged) << "trial " << trial;
+        EXPECT_EQ(x.points[i].relativeVelocity, y.points[i].relativeVelocity) << "trial " << trial;
+    }
+    EXPECT_EQ(x.tangentImpulse, y.tangentImpulse) << "trial " << trial;
+    EXPECT_EQ(x.sliding, y.sliding) << "trial " << trial;
+}
+
+void expectSameBody(const SolverBody& x, const SolverBody& y, int trial) {
+    EXPECT_EQ(x.v, y.v) << "trial " << trial;
+    EXPECT_EQ(x.w, y.w) << "trial " << trial;
+    EXPECT_EQ(x.dp, y.dp) << "trial " << trial;
+    EXPECT_EQ(x.dAngle, y.dAngle) << "trial " << trial;
+}
+
+TEST(ContactSolver, EachLaneIsItsOwnRowBitForBit) {
+    std::mt19937 rng(11);
+    int met = 0, slid = 0, blocked = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        // Four rows on bodies 0-1, 2-3, 4-5, 6-7 (some against an immovable side), solved together in one block...
+        // A locked row's bodies do not turn (what prepareContact's `turns` promises).
+        ContactConstraint rows[kLanes];
+        std::vector<SolverBody> start;
+        for (int k = 0; k < kLanes; ++k) {
+            const bool turning = (trial + k) % 4 != 0;
+            rows[k] = randomRow(rng, 2 * k, (trial + k) % 3 == 0 ? kNullIndex : 2 * k + 1, turning);
+            for (const SolverBody& s : randomStates(rng, 2, turning)) start.push_back(s);
         }
-        for (int i = 0; i < lean.pointCount; ++i) {
-            EXPECT_EQ(lean.points[i].normalImpulse, full.points[i].normalImpulse) << "trial " << trial;
-            EXPECT_EQ(lean.points[i].maxNormalImpulse, full.points[i].maxNormalImpulse) << "trial " << trial;
-            met += lean.points[i].engaged && lean.restitution > 0.0 ? 1 : 0;
+        std::vector<ContactBlock> together(1);
+        std::vector<ContactBlockCold> togetherCold(1);
+        startBlock(together[0], togetherCold[0], kLanes);
+        for (int k = 0; k < kLanes; ++k) setRow(together[0], togetherCold[0], k, rows[k]);
+        std::vector<SolverBody> togetherStates = start;
+        std::vector<PushVelocity> togetherPushes(start.size());
+        run(together, togetherCold, togetherStates, togetherPushes);
+        // ...and each alone, in the last lane of a block whose other lanes are empty.
+        for (int k = 0; k < kLanes; ++k) {
+            std::vector<ContactBlock> alone(1);
+            std::vector<ContactBlockCold> aloneCold(1);
+            startBlock(alone[0], aloneCold[0], 0);
+            setRow(alone[0], aloneCold[0], kLanes - 1, rows[k]);
+            std::vector<SolverBody> aloneStates = start;
+            std::vector<PushVelocity> alonePushes(start.size());
+            run(alone, aloneCold, aloneStates, alonePushes);
+            const ContactConstraint x = row(together[0], togetherCold[0], k);
+            expectSameRow(x, row(alone[0], aloneCold[0], kLanes - 1), trial);
+            for (const std::int32_t body : {rows[k].indexA, rows[k].indexB})
+                if (body != kNullIndex) expectSameBody(togetherStates[body], aloneStates[body], trial);
+            for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
+            slid += x.sliding ? 1 : 0;
+            blocked += x.invDet > 0.0 ? 1 : 0;
         }
-        EXPECT_EQ(lean.tangentImpulse, full.tangentImpulse) << "trial " << trial;
-        EXPECT_EQ(lean.sliding, full.sliding) << "trial " << trial;
-        slid += lean.sliding ? 1 : 0;
         if (::testing::Test::HasFailure()) break;
     }
-    // The random rows reached the paths that matter: points meeting with restitution (the bounce path) and sliding
-    // faces.
+    // The random rows reached the paths that matter.
+    EXPECT_GT(met, 100);
+    EXPECT_GT(slid, 100);
+    EXPECT_GT(blocked, 100);
+}
+
+TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
+    std::mt19937 rng(7);
+    int met = 0, slid = 0;
+    for (int trial = 0; trial < 500; ++trial) {
+        std::vector<ContactBlock> lean(1), full(1);
+        std::vector<ContactBlockCold> leanCold(1), fullCold(1);
+        startBlock(lean[0], leanCold[0], kLanes);
+        startBlock(full[0], fullCold[0], kLanes);
+        for (int k = 0; k < kLanes; ++k) {
+            const ContactConstraint c = randomRow(rng, 2 * k, (trial + k) % 4 == 0 ? kNullIndex : 2 * k + 1, false);
+            setRow(lean[0], leanCold[0], k, c);
+            setRow(full[0], fullCold[0], k, c);
+        }
+        ASSERT_FALSE(lean[0].turns);
+        full[0].turns = true;
+        std::vector<SolverBody> leanStates = randomStates(rng, 2 * kLanes, false), fullStates = leanStates;
+        std::vector<PushVelocity> leanPushes(leanStates.size()), fullPushes(fullStates.size());
+        run(lean, leanCold, leanStates, leanPushes);
+        run(full, fullCold, fullStates, fullPushes);
+        for (std::size_t b = 0; b < leanStates.size(); ++b) {
+            expectSameBody(leanStates[b], fullStates[b], trial);
+            EXPECT_EQ(fullStates[b].w, 0.0) << "a locked body turned, trial " << trial;
+        }
+        for (int k = 0; k < kLanes; ++k) {
+            const ContactConstraint x = row(lean[0], leanCold[0], k);
+            expectSameRow(x, row(full[0], fullCold[0], k), trial);
+            for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
+            slid += x.sliding ? 1 : 0;
+        }
+        if (::testing::Test::HasFailure()) break;
+    }
     EXPECT_GT(met, 100);
     EXPECT_GT(slid, 100);
 }

@@ -1,0 +1,36 @@
+#pragma once
+// Four lanes of doubles, for solving four contact rows of one colour at once (they share no dynamic body, so the
+// lanes are independent). GCC vector extensions: each operation is the scalar one, lane by lane, rounded the same
+// way (the build turns floating-point contraction off), so a lane gives bit for bit what the scalar formula gives.
+// The compiler maps them onto whatever SIMD the target has; the loops that use them are built twice
+// (PHYSIM_WIDE_LOOP: an AVX2 version, chosen at load time where the processor has it, and a baseline one), since
+// baseline x86-64 (SSE2) has neither four-double registers nor 64-bit lane compares. Both give the same bits:
+// contraction stays off, and AVX2 alone adds no fused multiply-add. Internal.
+
+#include <cstdint>
+
+namespace physim {
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+#define PHYSIM_WIDE_LOOP __attribute__((target_clones("avx2", "default")))
+#else
+#define PHYSIM_WIDE_LOOP
+#endif
+
+constexpr int kLanes = 4;
+
+using Wide = double __attribute__((vector_size(kLanes * sizeof(double))));
+/// A lane-wise comparison's result: all ones (true) or zero per lane; `mask ? a : b` selects lane by lane.
+using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
+
+[[gnu::always_inline]] inline Wide splat(double x) { return Wide{x, x, x, x}; }
+
+/// std::max, std::min and std::clamp lane by lane, with their exact rules (which operand wins a tie or a NaN).
+[[gnu::always_inline]] inline Wide max(Wide a, Wide b) { return a < b ? b : a; }
+[[gnu::always_inline]] inline Wide min(Wide a, Wide b) { return b < a ? b : a; }
+[[gnu::always_inline]] inline Wide clamp(Wide v, Wide lo, Wide hi) { return v < lo ? lo : (hi < v ? hi : v); }
+[[gnu::always_inline]] inline Wide abs(Wide v) { return v < 0.0 ? -v : v; }
+
+[[gnu::always_inline]] inline bool any(WideMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+
+}  // namespace physim
