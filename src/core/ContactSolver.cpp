@@ -230,42 +230,58 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
 
 // kLanes bodies' motion, one per lane: what a block's pass reads of its A sides or its B sides.
 struct WideSide {
-    Wide vx, vy, w, dpx, dpy, qc, qs;
+    Wide vx, vy, w, dAngle, dpx, dpy, qc, qs;
 };
 
-template <bool Turns, bool Pose>
-[[gnu::always_inline]] inline WideSide gather(const SolverBody* const (&s)[kLanes]) {
+// A 4x4 transpose: four lanes' rows of four values into four values' lanes (its own inverse).
+[[gnu::always_inline]] inline void transpose(Wide& a, Wide& b, Wide& c, Wide& d) {
+    const WideMask low{0, 4, 2, 6}, high{1, 5, 3, 7}, front{0, 1, 4, 5}, back{2, 3, 6, 7};
+    const Wide t0 = __builtin_shuffle(a, b, low), t1 = __builtin_shuffle(a, b, high);
+    const Wide t2 = __builtin_shuffle(c, d, low), t3 = __builtin_shuffle(c, d, high);
+    a = __builtin_shuffle(t0, t2, front);
+    b = __builtin_shuffle(t1, t3, front);
+    c = __builtin_shuffle(t0, t2, back);
+    d = __builtin_shuffle(t1, t3, back);
+}
+
+// The lanes' bodies: each record's halves (v, w, dAngle and dp, dq: 32 bytes each) loaded whole and transposed.
+// index kNullIndex reads states[-1], a still body.
+template <bool Pose>
+[[gnu::always_inline]] inline WideSide gather(const std::int32_t (&index)[kLanes], const SolverBody* states) {
+    const SolverBody &s0 = states[index[0]], &s1 = states[index[1]], &s2 = states[index[2]], &s3 = states[index[3]];
     WideSide g{};
-    g.vx = Wide{s[0]->v.x(), s[1]->v.x(), s[2]->v.x(), s[3]->v.x()};
-    g.vy = Wide{s[0]->v.y(), s[1]->v.y(), s[2]->v.y(), s[3]->v.y()};
-    if constexpr (Turns) g.w = Wide{s[0]->w, s[1]->w, s[2]->w, s[3]->w};
+    g.vx = Wide{s0.v.x(), s0.v.y(), s0.w, s0.dAngle};
+    g.vy = Wide{s1.v.x(), s1.v.y(), s1.w, s1.dAngle};
+    g.w = Wide{s2.v.x(), s2.v.y(), s2.w, s2.dAngle};
+    g.dAngle = Wide{s3.v.x(), s3.v.y(), s3.w, s3.dAngle};
+    transpose(g.vx, g.vy, g.w, g.dAngle);
     if constexpr (Pose) {
-        g.dpx = Wide{s[0]->dp.x(), s[1]->dp.x(), s[2]->dp.x(), s[3]->dp.x()};
-        g.dpy = Wide{s[0]->dp.y(), s[1]->dp.y(), s[2]->dp.y(), s[3]->dp.y()};
-        if constexpr (Turns) {
-            g.qc = Wide{s[0]->dq.c, s[1]->dq.c, s[2]->dq.c, s[3]->dq.c};
-            g.qs = Wide{s[0]->dq.s, s[1]->dq.s, s[2]->dq.s, s[3]->dq.s};
-        }
+        g.dpx = Wide{s0.dp.x(), s0.dp.y(), s0.dq.c, s0.dq.s};
+        g.dpy = Wide{s1.dp.x(), s1.dp.y(), s1.dq.c, s1.dq.s};
+        g.qc = Wide{s2.dp.x(), s2.dp.y(), s2.dq.c, s2.dq.s};
+        g.qs = Wide{s3.dp.x(), s3.dp.y(), s3.dq.c, s3.dq.s};
+        transpose(g.dpx, g.dpy, g.qc, g.qs);
     }
     return g;
 }
 
-// Each lane's body record, or `still` for an immovable side (or an empty lane).
-[[gnu::always_inline]] inline void bodiesOf(const std::int32_t (&index)[kLanes], SolverBody* states, const SolverBody& still,
-              const SolverBody* (&out)[kLanes]) {
-    for (int k = 0; k < kLanes; ++k) out[k] = index[k] == kNullIndex ? &still : states + index[k];
-}
-
-// Writes the lanes' velocities back, only for sides the row can move (a kinematic body is read by many rows of one
-// colour; an immovable side has no record).
-template <bool Turns>
-[[gnu::always_inline]] inline void scatter(const std::int32_t (&index)[kLanes], const Wide& invMass, const WideSide& g, SolverBody* states) {
-    for (int k = 0; k < kLanes; ++k) {
-        if (invMass[k] == 0.0) continue;
+// Writes the lanes' velocities back (and turns, which only a bounce changes), only for sides the row can move
+// (`writes`, a bit per lane): a kinematic body is read by many rows of one colour, the still body by all.
+[[gnu::always_inline]] inline void scatter(const std::int32_t (&index)[kLanes], unsigned writes, WideSide g,
+                                           SolverBody* states) {
+    transpose(g.vx, g.vy, g.w, g.dAngle);
+    auto store = [&](int k, const Wide& row) {
+        if (!(writes >> k & 1u)) return;
         SolverBody& s = states[index[k]];
-        s.v = {g.vx[k], g.vy[k]};
-        if constexpr (Turns) s.w = g.w[k];
-    }
+        s.v.x() = row[0];
+        s.v.y() = row[1];
+        s.w = row[2];
+        s.dAngle = row[3];
+    };
+    store(0, g.vx);
+    store(1, g.vy);
+    store(2, g.w);
+    store(3, g.dAngle);
 }
 
 // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
@@ -292,15 +308,11 @@ template <bool Turns>
 
 template <bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
-    const SolverBody still{};
-    const SolverBody *sa[kLanes], *sb[kLanes];
-    bodiesOf(c.indexA, states, still, sa);
-    bodiesOf(c.indexB, states, still, sb);
-    WideSide A = gather<Turns, false>(sa), B = gather<Turns, false>(sb);
+    WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
     for (const ContactBlock::Point& cp : c.points) applyAlong<Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
     applyAlong<Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
-    scatter<Turns>(c.indexA, c.invMassA, A, states);
-    scatter<Turns>(c.indexB, c.invMassB, B, states);
+    scatter(c.indexA, c.writes, A, states);
+    scatter(c.indexB, c.writes >> kLanes, B, states);
 }
 
 // What a point that started to push in this pass brings to the bounce path: per point, whether it started, its
@@ -338,8 +350,8 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
         applyBounces(c, A, B, bounce, start.push, othersPush);
         storeSideWithPose(states, c.indexA, c.invMassA, A);
         storeSideWithPose(states, c.indexB, c.invMassB, B);
-        wa.vx[k] = A.v.x(), wa.vy[k] = A.v.y(), wa.w[k] = A.w;
-        wb.vx[k] = B.v.x(), wb.vy[k] = B.v.y(), wb.w[k] = B.w;
+        wa.vx[k] = A.v.x(), wa.vy[k] = A.v.y(), wa.w[k] = A.w, wa.dAngle[k] = A.dAngle;
+        wb.vx[k] = B.v.x(), wb.vy[k] = B.v.y(), wb.w[k] = B.w, wb.dAngle[k] = B.dAngle;
     }
     // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
     for (int i = 0; i < count; ++i)
@@ -358,11 +370,7 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
 template <bool Turns>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
                                               const ContactPass& pass) {
-    const SolverBody still{};  // stands for an immovable body; never written (its rows' inverse masses are 0)
-    const SolverBody *sa[kLanes], *sb[kLanes];
-    bodiesOf(c.indexA, states, still, sa);
-    bodiesOf(c.indexB, states, still, sb);
-    WideSide A = gather<Turns, true>(sa), B = gather<Turns, true>(sb);
+    WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
     const Wide zero{}, one = splat(1.0);
     const Wide nx = c.nx, ny = c.ny;
     const Wide normalShift = nx * (B.dpx - A.dpx) + ny * (B.dpy - A.dpy);
@@ -396,8 +404,8 @@ template <bool Turns>
     // point. The others go one point at a time (Gauss-Seidel): the second sees the first's impulse.
     const WideMask block = c.invDet > 0.0;
     const Wide x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
-    Wide blockDelta[2];
-    {
+    Wide blockDelta[2] = {zero, zero};
+    if (c.pairs) {
         const Wide b1 = before[0] + bias[0] - (c.k11 * x1 + c.k12 * x2);
         const Wide b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
         const Wide both1 = -(c.k22 * b1 - c.k12 * b2) * c.invDet;
@@ -419,9 +427,13 @@ template <bool Turns>
     for (int i = 0; i < 2; ++i) {
         ContactBlock::Point& cp = c.points[i];
         const Wide x = cp.normalImpulse;
-        if (i == 1) before[1] = block ? before[1] : speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
-        const Wide single = max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
-        const Wide delta = block ? blockDelta[i] : single;
+        Wide delta = blockDelta[i];  // an empty lane's is zero either way
+        if (c.singles) {
+            if (i == 1) before[1] = block ? before[1] : speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+            const Wide single =
+                max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
+            delta = block ? blockDelta[i] : single;
+        }
         applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
         push[i] = started[i] & (bias[i] < 0.0) ? clamp(-cp.normalMass * massScale[i] * bias[i], zero, delta) : zero;
@@ -460,8 +472,8 @@ template <bool Turns>
         applyAlong<Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
         c.tangentImpulse = tangent;
     }
-    scatter<Turns>(c.indexA, c.invMassA, A, states);
-    scatter<Turns>(c.indexB, c.invMassB, B, states);
+    scatter(c.indexA, c.writes, A, states);
+    scatter(c.indexB, c.writes >> kLanes, B, states);
 }
 
 }  // namespace
@@ -485,7 +497,7 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
     ContactConstraint empty;
     empty.turns = false;
     for (int k = lanes; k < kLanes; ++k) setRow(block, cold, k, empty);
-    block.turns = block.friction = false;
+    block.turns = block.friction = block.pairs = block.singles = false;
 }
 
 void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstraint& c) {
@@ -528,6 +540,10 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     b.sliding[k] = c.sliding ? 1.0 : 0.0;
     b.turns = b.turns || c.turns;
     b.friction = b.friction || rubs;
+    b.pairs = b.pairs || (c.pointCount > 0 && c.invDet > 0.0);
+    b.singles = b.singles || (c.pointCount > 0 && !(c.invDet > 0.0));
+    const unsigned bitA = 1u << k, bitB = 1u << (k + kLanes);
+    b.writes = (b.writes & ~(bitA | bitB)) | (c.invMassA != 0.0 ? bitA : 0u) | (c.invMassB != 0.0 ? bitB : 0u);
     lane.restitution = c.restitution;
     lane.normalAcceleration = c.normalAcceleration;
     lane.contact = c.contact;

@@ -86,8 +86,11 @@ struct alignas(sizeof(Wide)) ContactBlock {
     Wide rtA, rtB, tangentMass, tangentImpulse;
     Wide staticFriction, dynamicFriction, sliding;  // sliding: 1 or 0
     std::int32_t indexA[kLanes], indexB[kLanes];
-    bool turns = false;     // some lane's body can turn (else the angular terms are skipped for all)
-    bool friction = false;  // some lane has friction
+    std::uint8_t writes = 0;  // the sides the rows can move: bit k lane k's A, bit kLanes + k its B
+    bool turns = false;       // some lane's body can turn (else the angular terms are skipped for all)
+    bool friction = false;    // some lane has friction
+    bool pairs = false;       // some lane solves its two points together (invDet > 0)
+    bool singles = false;     // some lane in use solves its points one at a time
 };
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
@@ -117,7 +120,9 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes);
 /// Fills c from its contact's manifold and the bodies' records (lever arms at the centres of mass).
 void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
                     const Vec2& gravity);
-/// Over blocks [begin, end); cold[i] belongs to begin[i].
+/// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
+/// (kNullIndex) a still body that the rows read for an immovable side and never write.
+static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states);
 /// What one pass over the rows needs.
 struct ContactPass {

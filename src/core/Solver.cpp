@@ -46,7 +46,8 @@ void WorldImpl::solve() {
 
     {
         StageTimer timer(profile, Stage::Forces);
-        states.resize(n);
+        solverBodies.assign(n + 1, SolverBody{});  // [0]: the still body that kNullIndex reads (ContactSolver.hpp)
+        states = solverBodies.data() + 1;
         sims.resize(n);
         const Vec2 gravity = settings.gravity;
         executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
@@ -153,7 +154,7 @@ void WorldImpl::solve() {
         }
     }
 
-    SolverBody* const st = states.data();
+    SolverBody* const st = states;
     ContactBlock* const blocks = contactBlocks.data();
     ContactBlockCold* const cold = contactCold.data();
     // One pass over all rows: joints, then colour by colour (in parallel within a colour), then the overflow.

@@ -75,7 +75,8 @@ struct WorldImpl {
     std::vector<BodyPair> newPairs;
     std::vector<std::uint8_t> contactFlags;      // per awake contact: what the narrow phase found changed
     std::vector<std::pair<std::uint32_t, std::uint8_t>> changedContacts;
-    std::vector<SolverBody> states;              // per awake body
+    std::vector<SolverBody> solverBodies;        // a still body, then one per awake body
+    SolverBody* states = nullptr;                // &solverBodies[1]: states[i] is awake body i, states[-1] still
     std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
     std::vector<SolverBodySim> sims;
     std::vector<std::uint32_t> rowContacts;      // the contact of each row, colour by colour
