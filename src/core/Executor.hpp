@@ -31,7 +31,9 @@ public:
     int workerSlots() const { return threads_; }
 
     /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n), each of at least `grain` items (except
-    /// the last); on one thread, or when n is below two grains, a single call fn(0, n, 0).
+    /// the last); on one thread, or when n is below two grains, a single call fn(0, n, 0). The range is split
+    /// evenly between the threads up front (static partitioner): the step's loops are short and even, and one task
+    /// per thread cost less than stealing finer tasks (measured: base-40 pyramid, 2 threads, 7% faster).
     template <class Fn>
     void parallelFor(std::size_t n, std::size_t grain, Fn&& fn) {
         if (n == 0) return;
@@ -39,20 +41,41 @@ public:
             fn(std::size_t{0}, n, 0);
             return;
         }
-        arena_->execute([&] {
+        auto loop = [&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, n, grain),
                 [&](const tbb::blocked_range<std::size_t>& r) {
                     const int worker = tbb::this_task_arena::current_thread_index();
                     fn(r.begin(), r.end(), worker < 0 ? 0 : worker);
                 },
-                tbb::simple_partitioner());
+                tbb::static_partitioner());
+        };
+        if (inside_) loop();
+        else arena_->execute(loop);
+    }
+
+    /// Runs fn() in the arena, so that the many short loops it starts (the solver's passes, a few per colour per
+    /// substep) do not each pay for entering it.
+    template <class Fn>
+    void run(Fn&& fn) {
+        if (!arena_ || inside_) {
+            fn();
+            return;
+        }
+        arena_->execute([&] {
+            struct Inside {
+                bool& flag;
+                explicit Inside(bool& f) : flag(f) { flag = true; }
+                ~Inside() { flag = false; }
+            } inside(inside_);
+            fn();
         });
     }
 
 private:
     int threads_ = 0;
     std::unique_ptr<tbb::task_arena> arena_;
+    bool inside_ = false;  // the calling thread is running run()'s fn, inside the arena
 };
 
 }  // namespace physim

@@ -714,7 +714,7 @@ void World::step(double dt) {
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
     runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
-    if (!w.awake.empty()) w.solve();
+    if (!w.awake.empty()) w.executor.run([&] { w.solve(); });
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
