@@ -106,7 +106,6 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
 
 namespace {
 
-
 // A point that starts to push (it had no impulse): remember how it met; if it meets fast enough, it bounces now.
 // It leaves at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
 // gained or lost):
@@ -287,15 +286,15 @@ template <bool Pose>
 // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
 // the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
 template <bool Turns>
-[[gnu::always_inline]] inline Wide speedAlong(const WideSide& A, const WideSide& B, const Wide& dx, const Wide& dy, const Wide& armA,
-                const Wide& armB) {
+[[gnu::always_inline]] inline Wide speedAlong(const WideSide& A, const WideSide& B, const Wide& dx, const Wide& dy,
+                                              const Wide& armA, const Wide& armB) {
     if constexpr (Turns) return dx * (B.vx - A.vx) + dy * (B.vy - A.vy) + B.w * armB - A.w * armA;
     else return dx * (B.vx - A.vx) + dy * (B.vy - A.vy);
 }
 
 template <bool Turns>
-[[gnu::always_inline]] inline void applyAlong(const ContactBlock& c, WideSide& A, WideSide& B, const Wide& d, const Wide& dx, const Wide& dy,
-                const Wide& armA, const Wide& armB) {
+[[gnu::always_inline]] inline void applyAlong(const ContactBlock& c, WideSide& A, WideSide& B, const Wide& d,
+                                              const Wide& dx, const Wide& dy, const Wide& armA, const Wide& armB) {
     A.vx -= c.invMassA * d * dx;
     A.vy -= c.invMassA * d * dy;
     B.vx += c.invMassB * d * dx;
@@ -309,7 +308,8 @@ template <bool Turns>
 template <bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
     WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
-    for (const ContactBlock::Point& cp : c.points) applyAlong<Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
+    for (const ContactBlock::Point& cp : c.points)
+        applyAlong<Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
     applyAlong<Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
@@ -324,8 +324,8 @@ struct Start {
 
 // Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
 // Returns the lane's total normal impulse after it.
-double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& wa, WideSide& wb, SolverBody* states, const Start& start,
-                 const ContactPass& pass) {
+double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& wa, WideSide& wb, SolverBody* states,
+                 const Start& start, const ContactPass& pass) {
     ContactConstraint c = row(block, cold, k);
     const int count = c.pointCount;
     // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).

@@ -17,6 +17,10 @@
 // sticks (bound mu_s times the load) until a relax pass leaves it slipping faster than a tenth of the linear slop
 // per step; then it slides (bound mu_d) until a relax pass slows it below that. Deciding on the relax pass, the
 // substep's last word, and on a speed, keeps one pass's transient from breaking a face loose.
+//
+// The passes run on blocks of kLanes rows of one colour (ContactBlock), every operation on the four lanes at once;
+// each lane gives bit for bit what the scalar formula gives for its row (docs/architecture.md, "Rows four at a
+// time").
 
 #include "SolverData.hpp"
 #include "Wide.hpp"
