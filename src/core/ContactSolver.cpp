@@ -478,19 +478,60 @@ template <bool Turns>
 
 }  // namespace
 
-PHYSIM_WIDE_LOOP void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+namespace {
+
+[[gnu::always_inline]] inline void warmStartLoop(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     for (ContactBlock* c = begin; c != end; ++c) {
         if (c->turns) warmStartBlock<true>(*c, states);
         else warmStartBlock<false>(*c, states);
     }
 }
 
-PHYSIM_WIDE_LOOP void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                                    const ContactPass& pass) {
+[[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                             SolverBody* states, const ContactPass& pass) {
     for (ContactBlock* c = begin; c != end; ++c, ++cold) {
         if (c->turns) solveBlock<true>(*c, *cold, states, pass);
         else solveBlock<false>(*c, *cold, states, pass);
     }
+}
+
+// The same loops built for baseline x86-64 and for AVX2 (Wide.hpp).
+void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                   const ContactPass& pass) {
+    solveLoop(begin, end, cold, states, pass);
+}
+#if PHYSIM_HAS_AVX2_CODE
+PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                                const ContactPass& pass) {
+    solveLoop(begin, end, cold, states, pass);
+}
+#endif
+
+bool useAvx2(WideCode code) {
+    return PHYSIM_HAS_AVX2_CODE && (code == WideCode::Avx2 || (code == WideCode::Best && avx2CodeRuns()));
+}
+
+}  // namespace
+
+void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
+#if PHYSIM_HAS_AVX2_CODE
+    if (useAvx2(code)) return warmStartAvx2(begin, end, states);
+#endif
+    warmStartBaseline(begin, end, states);
+}
+
+void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                   const ContactPass& pass, WideCode code) {
+#if PHYSIM_HAS_AVX2_CODE
+    if (useAvx2(code)) return solveAvx2(begin, end, cold, states, pass);
+#endif
+    solveBaseline(begin, end, cold, states, pass);
 }
 
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {

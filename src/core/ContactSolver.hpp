@@ -127,7 +127,8 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");
-void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states);
+/// `code` picks the loops' build; WideCode::Avx2 only where avx2CodeRuns().
+void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code = WideCode::Best);
 /// What one pass over the rows needs.
 struct ContactPass {
     double h = 0.0, invH = 0.0;       // the substep, s, and its inverse
@@ -140,7 +141,7 @@ struct ContactPass {
     PushVelocity* pushes = nullptr;   // per awake body, what this substep's push-out gave it (solve passes)
 };
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass);
+                   const ContactPass& pass, WideCode code = WideCode::Best);
 /// Writes a lane's impulses back into its manifold (warm start for the next step, and what contacts() reports).
 void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact);
 

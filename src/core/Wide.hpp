@@ -2,20 +2,37 @@
 // Four lanes of doubles, for solving four contact rows of one colour at once (they share no dynamic body, so the
 // lanes are independent). GCC vector extensions: each operation is the scalar one, lane by lane, rounded the same
 // way (the build turns floating-point contraction off), so a lane gives bit for bit what the scalar formula gives.
-// The compiler maps them onto whatever SIMD the target has; the loops that use them are built twice
-// (PHYSIM_WIDE_LOOP: an AVX2 version, chosen at load time where the processor has it, and a baseline one), since
-// baseline x86-64 (SSE2) has neither four-double registers nor 64-bit lane compares. Both give the same bits:
-// contraction stays off, and AVX2 alone adds no fused multiply-add. Internal.
+// The loops that use them are built twice, for baseline x86-64 (SSE2, which has neither four-double registers nor
+// 64-bit lane compares: the compiler splits each operation) and for AVX2, and the processor picks (WideCode). Both
+// give the same bits: contraction stays off, and AVX2 alone adds no fused multiply-add. Internal.
 
 #include <cstdint>
 
 namespace physim {
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define PHYSIM_WIDE_LOOP __attribute__((target_clones("avx2", "default")))
+/// Which build of the four-lane loops runs: the best this processor has, or one named (tests compare them).
+enum class WideCode { Best, Baseline, Avx2 };
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define PHYSIM_HAS_AVX2_CODE 1
+#define PHYSIM_AVX2_CODE __attribute__((target("avx2")))
 #else
-#define PHYSIM_WIDE_LOOP
+#define PHYSIM_HAS_AVX2_CODE 0
+#define PHYSIM_AVX2_CODE
 #endif
+
+/// Whether the AVX2 build exists and this processor runs it.
+inline bool avx2CodeRuns() {
+#if PHYSIM_HAS_AVX2_CODE
+    static const bool runs = [] {
+        __builtin_cpu_init();
+        return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return runs;
+#else
+    return false;
+#endif
+}
 
 constexpr int kLanes = 4;
 

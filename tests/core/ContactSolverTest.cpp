@@ -1,5 +1,6 @@
 // The contact rows are solved kLanes at a time (ContactBlock). Each lane must be exactly the scalar rule on its own
-// row: what shares its block, and which lane it sits in, must not change a single bit. And a block whose bodies
+// row: what shares its block, and which lane it sits in, must not change a single bit; nor may the build of the loops
+// that runs (baseline x86-64 or AVX2), so a scene gives the same bits on any processor. And a block whose bodies
 // cannot turn skips the angular terms; those terms are products with zero there, so the lean form must match the
 // full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
 // a time, points that start to push (the bounce path, with and without restitution), sticking and sliding friction.
@@ -103,7 +104,7 @@ std::vector<SolverBody> randomStates(std::mt19937& rng, int count, bool turning)
 // Four substeps of warm start, solve and relax over the given blocks. The passes read an immovable side at
 // states[-1]: the records go after a still one.
 void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold, std::vector<SolverBody>& states,
-         std::vector<PushVelocity>& pushes) {
+         std::vector<PushVelocity>& pushes, WideCode code = WideCode::Best) {
     std::vector<SolverBody> records(1);
     records.insert(records.end(), states.begin(), states.end());
     SolverBody* const bodies = records.data() + 1;
@@ -111,10 +112,10 @@ void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold,
     pass.pushes = pushes.data();
     for (int sub = 0; sub < 4; ++sub) {
         pass.substep = sub;
-        warmStartContacts(blocks.data(), blocks.data() + blocks.size(), bodies);
+        warmStartContacts(blocks.data(), blocks.data() + blocks.size(), bodies, code);
         for (const bool bias : {true, false}) {
             pass.useBias = bias;
-            solveContacts(blocks.data(), blocks.data() + blocks.size(), cold.data(), bodies, pass);
+            solveContacts(blocks.data(), blocks.data() + blocks.size(), cold.data(), bodies, pass, code);
         }
     }
     EXPECT_EQ(records[0].v, Vec2::Zero()) << "the still body was written";
@@ -213,6 +214,43 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
             for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
             slid += x.sliding ? 1 : 0;
         }
+        if (::testing::Test::HasFailure()) break;
+    }
+    EXPECT_GT(met, 100);
+    EXPECT_GT(slid, 100);
+}
+
+TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
+    if (!avx2CodeRuns()) GTEST_SKIP() << "no AVX2 build of the loops, or this processor lacks AVX2";
+    std::mt19937 rng(5);
+    int met = 0, slid = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        std::vector<ContactBlock> baseline(2);
+        std::vector<ContactBlockCold> baselineCold(2);
+        std::vector<SolverBody> start;
+        for (int b = 0; b < 2; ++b) {
+            startBlock(baseline[b], baselineCold[b], kLanes);
+            for (int k = 0; k < kLanes; ++k) {
+                const bool turning = (trial + k + b) % 3 != 0;
+                const std::int32_t a = static_cast<std::int32_t>(start.size());
+                setRow(baseline[b], baselineCold[b], k, randomRow(rng, a, k == 1 ? kNullIndex : a + 1, turning));
+                for (const SolverBody& s : randomStates(rng, 2, turning)) start.push_back(s);
+            }
+        }
+        std::vector<ContactBlock> avx2 = baseline;
+        std::vector<ContactBlockCold> avx2Cold = baselineCold;
+        std::vector<SolverBody> baselineStates = start, avx2States = start;
+        std::vector<PushVelocity> baselinePushes(start.size()), avx2Pushes(start.size());
+        run(baseline, baselineCold, baselineStates, baselinePushes, WideCode::Baseline);
+        run(avx2, avx2Cold, avx2States, avx2Pushes, WideCode::Avx2);
+        for (std::size_t i = 0; i < start.size(); ++i) expectSameBody(baselineStates[i], avx2States[i], trial);
+        for (int b = 0; b < 2; ++b)
+            for (int k = 0; k < kLanes; ++k) {
+                const ContactConstraint x = row(baseline[b], baselineCold[b], k);
+                expectSameRow(x, row(avx2[b], avx2Cold[b], k), trial);
+                for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
+                slid += x.sliding ? 1 : 0;
+            }
         if (::testing::Test::HasFailure()) break;
     }
     EXPECT_GT(met, 100);
