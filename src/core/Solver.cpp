@@ -74,7 +74,7 @@ void WorldImpl::solve() {
         });
     }
 
-    // Colour the rows: greedy, in the awake list's order (deterministic), a bit per dynamic body per colour.
+    // Colour the rows: greedy, in the awake list's order (deterministic), each dynamic body's colours as bits.
     std::size_t rowCount = 0;
     rowContacts.clear();
     blockRows.clear();
@@ -83,26 +83,27 @@ void WorldImpl::solve() {
     blockStart.assign(kColours + 2, 0);
     if (!awakeContacts.empty() || rowJointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        const std::size_t words = (n + 63) / 64;
-        colourBits.assign(static_cast<std::size_t>(kColours) * words, 0);
+        bodyColours.assign(n, 0);
+        constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColours) - 1;
         constraintColour.assign(awakeContacts.size(), -1);
         for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
             const ContactData& c = contacts[awakeContacts[k]];
             if (c.manifold.pointCount == 0) continue;
             const BodyData& A = bodies[c.a];
             const BodyData& B = bodies[c.b];
-            const std::int32_t ia = A.type == BodyType::Dynamic ? A.awakeIndex : kNullIndex;
-            const std::int32_t ib = B.type == BodyType::Dynamic ? B.awakeIndex : kNullIndex;
-            int colour = kColours;  // overflow
-            for (int col = 0; col < kColours; ++col) {
-                std::uint64_t* bits = &colourBits[static_cast<std::size_t>(col) * words];
-                const bool freeA = ia == kNullIndex || !(bits[ia >> 6] >> (ia & 63) & 1u);
-                const bool freeB = ib == kNullIndex || !(bits[ib >> 6] >> (ib & 63) & 1u);
-                if (!freeA || !freeB) continue;
-                if (ia != kNullIndex) bits[ia >> 6] |= std::uint64_t{1} << (ia & 63);
-                if (ib != kNullIndex) bits[ib >> 6] |= std::uint64_t{1} << (ib & 63);
-                colour = col;
-                break;
+            // The lowest colour neither dynamic body has yet; the overflow if both have them all.
+            auto used = [&](const BodyData& b) -> std::uint32_t* {
+                const bool moves = b.type == BodyType::Dynamic && b.awakeIndex != kNullIndex;
+                return moves ? &bodyColours[static_cast<std::size_t>(b.awakeIndex)] : nullptr;
+            };
+            std::uint32_t* const usedA = used(A);
+            std::uint32_t* const usedB = used(B);
+            const std::uint32_t free = ~((usedA ? *usedA : 0u) | (usedB ? *usedB : 0u)) & kAllColours;
+            int colour = kColours;
+            if (free != 0) {
+                colour = __builtin_ctz(free);
+                if (usedA) *usedA |= std::uint32_t{1} << colour;
+                if (usedB) *usedB |= std::uint32_t{1} << colour;
             }
             constraintColour[k] = colour;
             ++colourStart[static_cast<std::size_t>(colour) + 1];

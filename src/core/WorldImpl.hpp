@@ -86,7 +86,7 @@ struct WorldImpl {
     std::vector<std::uint32_t> blockStart;       // blocks of colour c: [blockStart[c], blockStart[c + 1])
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
     std::vector<std::uint32_t> colourFill;
-    std::vector<std::uint64_t> colourBits;       // per colour, one bit per awake body
+    std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<JointConstraint> jointConstraints;
     std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
