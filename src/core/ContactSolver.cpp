@@ -234,13 +234,12 @@ struct WideSide {
 
 // A 4x4 transpose: four lanes' rows of four values into four values' lanes (its own inverse).
 [[gnu::always_inline]] inline void transpose(Wide& a, Wide& b, Wide& c, Wide& d) {
-    const WideMask low{0, 4, 2, 6}, high{1, 5, 3, 7}, front{0, 1, 4, 5}, back{2, 3, 6, 7};
-    const Wide t0 = __builtin_shuffle(a, b, low), t1 = __builtin_shuffle(a, b, high);
-    const Wide t2 = __builtin_shuffle(c, d, low), t3 = __builtin_shuffle(c, d, high);
-    a = __builtin_shuffle(t0, t2, front);
-    b = __builtin_shuffle(t1, t3, front);
-    c = __builtin_shuffle(t0, t2, back);
-    d = __builtin_shuffle(t1, t3, back);
+    const Wide t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6), t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    const Wide t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6), t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
+    a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    b = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    c = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
 // The lanes' bodies: each record's halves (v, w, dAngle and dp, dq: 32 bytes each) loaded whole and transposed.
@@ -436,7 +435,7 @@ template <bool Turns>
         }
         applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
-        push[i] = started[i] & (bias[i] < 0.0) ? clamp(-cp.normalMass * massScale[i] * bias[i], zero, delta) : zero;
+        push[i] = (started[i] & (bias[i] < 0.0)) ? clamp(-cp.normalMass * massScale[i] * bias[i], zero, delta) : zero;
         cp.normalImpulse = x + delta;
         totalNormal += cp.normalImpulse;
     }
@@ -519,7 +518,7 @@ bool useAvx2(WideCode code) {
 
 }  // namespace
 
-void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
+void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, [[maybe_unused]] WideCode code) {
 #if PHYSIM_HAS_AVX2_CODE
     if (useAvx2(code)) return warmStartAvx2(begin, end, states);
 #endif
@@ -527,7 +526,7 @@ void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* state
 }
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, WideCode code) {
+                   const ContactPass& pass, [[maybe_unused]] WideCode code) {
 #if PHYSIM_HAS_AVX2_CODE
     if (useAvx2(code)) return solveAvx2(begin, end, cold, states, pass);
 #endif

@@ -1,10 +1,11 @@
 #pragma once
 // Four lanes of doubles, for solving four contact rows of one colour at once (they share no dynamic body, so the
-// lanes are independent). GCC vector extensions: each operation is the scalar one, lane by lane, rounded the same
-// way (the build turns floating-point contraction off), so a lane gives bit for bit what the scalar formula gives.
-// The loops that use them are built twice, for baseline x86-64 (SSE2, which has neither four-double registers nor
-// 64-bit lane compares: the compiler splits each operation) and for AVX2, and the processor picks (WideCode). Both
-// give the same bits: contraction stays off, and AVX2 alone adds no fused multiply-add. Internal.
+// lanes are independent). GCC vector extensions, which Clang has too: each operation is the scalar one, lane by
+// lane, rounded the same way (the build turns floating-point contraction off), so a lane gives bit for bit what the
+// scalar formula gives. The loops that use them are built twice, for baseline x86-64 (SSE2, which has neither
+// four-double registers nor 64-bit lane compares: the compiler splits each operation) and for AVX2, and the
+// processor picks (WideCode). Both give the same bits: contraction stays off, and AVX2 alone adds no fused
+// multiply-add. Internal.
 
 #include <cstdint>
 
@@ -13,7 +14,7 @@ namespace physim {
 /// Which build of the four-lane loops runs: the best this processor has, or one named (tests compare them).
 enum class WideCode { Best, Baseline, Avx2 };
 
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#if defined(__GNUC__) && defined(__x86_64__)  // GCC and Clang
 #define PHYSIM_HAS_AVX2_CODE 1
 #define PHYSIM_AVX2_CODE __attribute__((target("avx2")))
 #else
