@@ -20,7 +20,7 @@ Softness makeSoftness(double hertz, double dampingRatio, double h) {
 
 namespace {
 
-// A normal impulse on one row (the bounce path), with the moments prepared once per step.
+// A normal impulse on one row (the bounce path and push records), with the moments prepared once per step.
 void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
                 double lambda) {
     const Vec2 P = lambda * c.normal;
@@ -247,7 +247,7 @@ struct WideSide {
 template <bool Pose>
 [[gnu::always_inline]] inline WideSide gather(const std::int32_t (&index)[kLanes], const SolverBody* states) {
     const SolverBody &s0 = states[index[0]], &s1 = states[index[1]], &s2 = states[index[2]], &s3 = states[index[3]];
-    WideSide g{};
+    WideSide g{};  // first lane k's half-record in the k-th vector, then transposed into one field per vector
     g.vx = Wide{s0.v.x(), s0.v.y(), s0.w, s0.dAngle};
     g.vy = Wide{s1.v.x(), s1.v.y(), s1.w, s1.dAngle};
     g.w = Wide{s2.v.x(), s2.v.y(), s2.w, s2.dAngle};
@@ -474,10 +474,6 @@ template <bool Turns>
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
 }
-
-}  // namespace
-
-namespace {
 
 [[gnu::always_inline]] inline void warmStartLoop(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     for (ContactBlock* c = begin; c != end; ++c) {

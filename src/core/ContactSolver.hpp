@@ -115,7 +115,8 @@ struct BlockRows {
     std::uint32_t first = 0, count = 0;
 };
 
-/// Puts row c into the block's lane (c.turns and friction also mark the block); row() reads a lane back.
+/// Puts row c into the block's lane and marks the block (turns, friction, solve kinds, write bits); row() reads a
+/// lane back (its `turns` is the block's).
 void setRow(ContactBlock& block, ContactBlockCold& cold, int lane, const ContactConstraint& c);
 ContactConstraint row(const ContactBlock& block, const ContactBlockCold& cold, int lane);
 /// Readies a block for `lanes` rows: its marks cleared, the lanes from `lanes` on empty rows; setRow fills the rest.

@@ -43,9 +43,8 @@ using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double)
 
 [[gnu::always_inline]] inline Wide splat(double x) { return Wide{x, x, x, x}; }
 
-/// std::max, std::min and std::clamp lane by lane, with their exact rules (which operand wins a tie or a NaN).
+/// std::max and std::clamp lane by lane, with their exact rules (which operand wins a tie or a NaN).
 [[gnu::always_inline]] inline Wide max(Wide a, Wide b) { return a < b ? b : a; }
-[[gnu::always_inline]] inline Wide min(Wide a, Wide b) { return b < a ? b : a; }
 [[gnu::always_inline]] inline Wide clamp(Wide v, Wide lo, Wide hi) { return v < lo ? lo : (hi < v ? hi : v); }
 [[gnu::always_inline]] inline Wide abs(Wide v) { return v < 0.0 ? -v : v; }
 
