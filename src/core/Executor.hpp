@@ -4,10 +4,13 @@
 // Every parallel loop in the step writes only to its own items or to per-worker buffers that are merged in a
 // fixed order afterwards, so results are bit-identical for any thread count.
 
+#include "Team.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <cstddef>
 #include <memory>
@@ -30,10 +33,11 @@ public:
     /// Upper bound of the worker index passed to loop bodies (for per-worker buffers).
     int workerSlots() const { return threads_; }
 
-    /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n), each of at least `grain` items (except
-    /// the last); on one thread, or when n is below two grains, a single call fn(0, n, 0). The range is split
-    /// evenly between the threads up front (static partitioner): the step's loops are short and even, and one task
-    /// per thread costs less than stealing finer tasks (docs/performance.md).
+    /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n), each of `grain` items (the last may be
+    /// shorter); on one thread, or when n is below two grains, a single call fn(0, n, 0). Inside run() the
+    /// ranges go to run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
+    /// (static partitioner: the loops are short and even, and one task per thread costs less than stealing finer
+    /// tasks; docs/performance.md).
     template <class Fn>
     void parallelFor(std::size_t n, std::size_t grain, Fn&& fn) {
         if (n == 0) return;
@@ -41,7 +45,11 @@ public:
             fn(std::size_t{0}, n, 0);
             return;
         }
-        auto loop = [&] {
+        if (team_) {
+            team_->forEach(n, grain, fn);
+            return;
+        }
+        arena_->execute([&] {
             tbb::parallel_for(
                 tbb::blocked_range<std::size_t>(0, n, grain),
                 [&](const tbb::blocked_range<std::size_t>& r) {
@@ -49,25 +57,35 @@ public:
                     fn(r.begin(), r.end(), worker < 0 ? 0 : worker);
                 },
                 tbb::static_partitioner());
-        };
-        if (inside_) loop();
-        else arena_->execute(loop);
+        });
     }
 
-    /// Runs fn() in the arena, so that the many short loops it starts (the solver's passes, a few per colour per
-    /// substep) do not each pay for entering it.
+    /// Runs fn() on the calling thread with the arena's other threads standing by as a Team for the loops fn
+    /// starts with parallelFor: the solver's many short loops (a few per colour per substep) then cost a
+    /// handful of atomic operations each instead of a task launch and a join.
     template <class Fn>
     void run(Fn&& fn) {
-        if (!arena_ || inside_) {
+        if (!arena_ || team_) {
             fn();
             return;
         }
         arena_->execute([&] {
-            struct Inside {
-                bool& flag;
-                explicit Inside(bool& f) : flag(f) { flag = true; }
-                ~Inside() { flag = false; }
-            } inside(inside_);
+            Team team(threads_);
+            tbb::task_group helpers;
+            for (int member = 1; member < threads_; ++member) helpers.run([&team, member] { team.help(member); });
+            team_ = &team;
+            // The helpers leave (and are waited for) however fn ends; a helper not yet started by then finds the
+            // team finished and returns at once, so nothing waits on a thread the pool never gave.
+            struct Leave {
+                Team& team;
+                tbb::task_group& helpers;
+                Team*& active;
+                ~Leave() {
+                    active = nullptr;
+                    team.finish();
+                    helpers.wait();
+                }
+            } leave{team, helpers, team_};
             fn();
         });
     }
@@ -75,7 +93,7 @@ public:
 private:
     int threads_ = 0;
     std::unique_ptr<tbb::task_arena> arena_;
-    bool inside_ = false;  // the calling thread is running run()'s fn, inside the arena
+    Team* team_ = nullptr;  // run()'s team while fn runs (not owned: it lives on run()'s stack)
 };
 
 }  // namespace physim
