@@ -713,8 +713,11 @@ void World::step(double dt) {
     runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2 && !w.awake.empty(),
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
-    runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
-    if (!w.awake.empty()) w.executor.run([&] { w.solve(); });
+    // One team for both (Executor::run): the pool's threads are woken once per step.
+    w.executor.run([&] {
+        runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
+        if (!w.awake.empty()) w.solve();
+    });
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
