@@ -33,11 +33,11 @@ public:
     /// Upper bound of the worker index passed to loop bodies (for per-worker buffers).
     int workerSlots() const { return threads_; }
 
-    /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n), each of `grain` items (the last may be
-    /// shorter); on one thread, or when n is below two grains, a single call fn(0, n, 0). Inside run() the
-    /// ranges go to run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
-    /// (static partitioner: the loops are short and even, and one task per thread costs less than stealing finer
-    /// tasks; docs/performance.md).
+    /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n); on one thread, or when n is below two
+    /// grains, a single call fn(0, n, 0). Inside run() the ranges are chunks of `grain` items (the last may be
+    /// shorter) shared by run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
+    /// into ranges of at least half a grain (static partitioner: the loops are short and even, and one task per
+    /// thread costs less than stealing finer tasks; docs/performance.md).
     template <class Fn>
     void parallelFor(std::size_t n, std::size_t grain, Fn&& fn) {
         if (n == 0) return;

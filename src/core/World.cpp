@@ -713,11 +713,13 @@ void World::step(double dt) {
     runStage(w.profile, Stage::BroadPhase, w.broadPhase.moveCount() > 0 && w.liveCount >= 2 && !w.awake.empty(),
              [&] { w.updatePairs(); });
     w.profile.candidatePairs = w.awakeContacts.size();
-    // One team for both (Executor::run): the pool's threads are woken once per step.
-    w.executor.run([&] {
-        runStage(w.profile, Stage::NarrowPhase, !w.awakeContacts.empty(), [&] { w.updateContacts(); });
-        if (!w.awake.empty()) w.solve();
-    });
+    // One team for both (Executor::run): the pool's threads are woken once per step, and not at all when all sleep.
+    const bool narrowPhase = !w.awakeContacts.empty(), solve = !w.awake.empty();
+    if (narrowPhase || solve)
+        w.executor.run([&] {
+            runStage(w.profile, Stage::NarrowPhase, narrowPhase, [&] { w.updateContacts(); });
+            if (solve) w.solve();
+        });
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
