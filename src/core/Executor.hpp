@@ -72,10 +72,9 @@ public:
         arena_->execute([&] {
             Team team(threads_);
             tbb::task_group helpers;
-            for (int member = 1; member < threads_; ++member) helpers.run([&team, member] { team.help(member); });
-            team_ = &team;
-            // The helpers leave (and are waited for) however fn ends; a helper not yet started by then finds the
-            // team finished and returns at once, so nothing waits on a thread the pool never gave.
+            // The helpers leave (and are waited for) however this ends, even if starting one fails; a helper not
+            // yet started by then finds the team finished and returns at once, so nothing waits on a thread the
+            // pool never gave.
             struct Leave {
                 Team& team;
                 tbb::task_group& helpers;
@@ -86,6 +85,8 @@ public:
                     helpers.wait();
                 }
             } leave{team, helpers, team_};
+            for (int member = 1; member < threads_; ++member) helpers.run([&team, member] { team.help(member); });
+            team_ = &team;
             fn();
         });
     }

@@ -47,6 +47,7 @@ public:
     template <class Fn>
     void forEach(std::size_t n, std::size_t grain, Fn& fn) {
         if (n == 0) return;
+        grain = std::max<std::size_t>(grain, 1);
         const std::size_t chunks = (n + grain - 1) / grain;
         if (chunks < 2 || members() < 2 || inStage_ || std::this_thread::get_id() != driver_) {
             fn(std::size_t{0}, n, 0);
