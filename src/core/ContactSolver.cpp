@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 namespace physim {
 
@@ -242,22 +243,37 @@ struct WideSide {
     d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
-// The lanes' bodies: each record's halves (v, w, dAngle and dp, dq: 32 bytes each) loaded whole and transposed.
-// index kNullIndex reads states[-1], a still body.
+// A body record's two 32-byte halves, (v, w, dAngle) and (dp, dq), each moved whole as four lanes. The access type
+// may alias doubles (GCC and Clang define it, as their own intrinsics do) and needs only a double's alignment.
+using RecordHalf = double __attribute__((vector_size(sizeof(Wide)), may_alias, aligned(alignof(double))));
+static_assert(sizeof(SolverBody) == 2 * sizeof(Wide) && offsetof(SolverBody, w) == 2 * sizeof(double) &&
+                  offsetof(SolverBody, dAngle) == 3 * sizeof(double) && offsetof(SolverBody, dp) == sizeof(Wide) &&
+                  offsetof(SolverBody, dq) == sizeof(Wide) + 2 * sizeof(double),
+              "a SolverBody is (v, w, dAngle) then (dp, dq), four doubles each");
+
+[[gnu::always_inline]] inline Wide loadHalf(const SolverBody& s, int half) {
+    return reinterpret_cast<const RecordHalf*>(&s)[half];
+}
+[[gnu::always_inline]] inline void storeVelocityHalf(SolverBody& s, const Wide& values) {
+    *reinterpret_cast<RecordHalf*>(&s) = values;
+}
+
+// The lanes' bodies: each record's halves loaded whole and transposed. index kNullIndex reads states[-1], a still
+// body.
 template <bool Pose>
 [[gnu::always_inline]] inline WideSide gather(const std::int32_t (&index)[kLanes], const SolverBody* states) {
     const SolverBody &s0 = states[index[0]], &s1 = states[index[1]], &s2 = states[index[2]], &s3 = states[index[3]];
     WideSide g{};  // first lane k's half-record in the k-th vector, then transposed into one field per vector
-    g.vx = Wide{s0.v.x(), s0.v.y(), s0.w, s0.dAngle};
-    g.vy = Wide{s1.v.x(), s1.v.y(), s1.w, s1.dAngle};
-    g.w = Wide{s2.v.x(), s2.v.y(), s2.w, s2.dAngle};
-    g.dAngle = Wide{s3.v.x(), s3.v.y(), s3.w, s3.dAngle};
+    g.vx = loadHalf(s0, 0);
+    g.vy = loadHalf(s1, 0);
+    g.w = loadHalf(s2, 0);
+    g.dAngle = loadHalf(s3, 0);
     transpose(g.vx, g.vy, g.w, g.dAngle);
     if constexpr (Pose) {
-        g.dpx = Wide{s0.dp.x(), s0.dp.y(), s0.dq.c, s0.dq.s};
-        g.dpy = Wide{s1.dp.x(), s1.dp.y(), s1.dq.c, s1.dq.s};
-        g.qc = Wide{s2.dp.x(), s2.dp.y(), s2.dq.c, s2.dq.s};
-        g.qs = Wide{s3.dp.x(), s3.dp.y(), s3.dq.c, s3.dq.s};
+        g.dpx = loadHalf(s0, 1);
+        g.dpy = loadHalf(s1, 1);
+        g.qc = loadHalf(s2, 1);
+        g.qs = loadHalf(s3, 1);
         transpose(g.dpx, g.dpy, g.qc, g.qs);
     }
     return g;
@@ -268,18 +284,10 @@ template <bool Pose>
 [[gnu::always_inline]] inline void scatter(const std::int32_t (&index)[kLanes], unsigned writes, WideSide g,
                                            SolverBody* states) {
     transpose(g.vx, g.vy, g.w, g.dAngle);
-    auto store = [&](int k, const Wide& row) {
-        if (!(writes >> k & 1u)) return;
-        SolverBody& s = states[index[k]];
-        s.v.x() = row[0];
-        s.v.y() = row[1];
-        s.w = row[2];
-        s.dAngle = row[3];
-    };
-    store(0, g.vx);
-    store(1, g.vy);
-    store(2, g.w);
-    store(3, g.dAngle);
+    if (writes & 1u) storeVelocityHalf(states[index[0]], g.vx);
+    if (writes & 2u) storeVelocityHalf(states[index[1]], g.vy);
+    if (writes & 4u) storeVelocityHalf(states[index[2]], g.w);
+    if (writes & 8u) storeVelocityHalf(states[index[3]], g.dAngle);
 }
 
 // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
@@ -421,7 +429,7 @@ template <bool Turns>
         blockDelta[1] = max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, zero) - x2;
     }
     WideMask started[2];
-    Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
+    Wide deltas[2];
     Wide totalNormal = zero;
     for (int i = 0; i < 2; ++i) {
         ContactBlock::Point& cp = c.points[i];
@@ -435,11 +443,16 @@ template <bool Turns>
         }
         applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
-        push[i] = (started[i] & (bias[i] < 0.0)) ? clamp(-cp.normalMass * massScale[i] * bias[i], zero, delta) : zero;
+        deltas[i] = delta;
         cp.normalImpulse = x + delta;
         totalNormal += cp.normalImpulse;
     }
     if (any(started[0] | started[1])) {
+        Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
+        for (int i = 0; i < 2; ++i)
+            push[i] = (started[i] & (bias[i] < 0.0))
+                          ? clamp(-c.points[i].normalMass * massScale[i] * bias[i], zero, deltas[i])
+                          : zero;
         for (int k = 0; k < kLanes; ++k) {
             if (!started[0][k] && !started[1][k]) continue;
             Start start;
