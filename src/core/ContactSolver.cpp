@@ -429,7 +429,7 @@ template <bool Turns>
         blockDelta[1] = max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, zero) - x2;
     }
     WideMask started[2];
-    Wide deltas[2];
+    Wide deltas[2];  // each point's impulse change in this pass
     Wide totalNormal = zero;
     for (int i = 0; i < 2; ++i) {
         ContactBlock::Point& cp = c.points[i];

@@ -222,7 +222,7 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
 
 #if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in both builds
 TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
-    if (!avx2CodeRuns()) GTEST_SKIP() << "this processor lacks AVX2: only the baseline build of the loops can run";
+    if (!avx2CodeRuns()) GTEST_SKIP() << "this machine's processor has no AVX2";
     std::mt19937 rng(5);
     int met = 0, slid = 0;
     for (int trial = 0; trial < 300; ++trial) {
