@@ -27,7 +27,11 @@ public:
         if (n == threads_ && (arena_ || n == 1)) return;
         threads_ = n;
         arena_.reset();
-        if (n > 1) arena_ = std::make_unique<tbb::task_arena>(n);
+        team_.reset();
+        if (n > 1) {
+            arena_ = std::make_unique<tbb::task_arena>(n);
+            team_ = std::make_unique<Team>(n);  // made once: a step allocates nothing for its team
+        }
     }
     int threads() const { return threads_; }
     /// Upper bound of the worker index passed to loop bodies (for per-worker buffers).
@@ -45,7 +49,7 @@ public:
             fn(std::size_t{0}, n, 0);
             return;
         }
-        if (team_) {
+        if (inRun_) {
             team_->forEach(n, grain, fn);
             return;
         }
@@ -65,12 +69,13 @@ public:
     /// handful of atomic operations each instead of a task launch and a join.
     template <class Fn>
     void run(Fn&& fn) {
-        if (!arena_ || team_) {
+        if (!arena_ || inRun_) {
             fn();
             return;
         }
         arena_->execute([&] {
-            Team team(threads_);
+            Team& team = *team_;
+            team.start();
             tbb::task_group helpers;
             // The helpers leave (and are waited for) however this ends, even if starting one fails; a helper not
             // yet started by then finds the team finished and returns at once, so nothing waits on a thread the
@@ -78,15 +83,15 @@ public:
             struct Leave {
                 Team& team;
                 tbb::task_group& helpers;
-                Team*& active;
+                bool& inRun;
                 ~Leave() {
-                    active = nullptr;
+                    inRun = false;
                     team.finish();
                     helpers.wait();
                 }
-            } leave{team, helpers, team_};
+            } leave{team, helpers, inRun_};
             for (int member = 1; member < threads_; ++member) helpers.run([&team, member] { team.help(member); });
-            team_ = &team;
+            inRun_ = true;
             fn();
         });
     }
@@ -94,7 +99,8 @@ public:
 private:
     int threads_ = 0;
     std::unique_ptr<tbb::task_arena> arena_;
-    Team* team_ = nullptr;  // run()'s team while fn runs (not owned: it lives on run()'s stack)
+    std::unique_ptr<Team> team_;  // the arena's threads as a team, while run()'s fn runs
+    bool inRun_ = false;
 };
 
 }  // namespace physim

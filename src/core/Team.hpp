@@ -34,8 +34,7 @@ namespace physim {
 
 class Team {
 public:
-    explicit Team(int members)
-        : counters_(static_cast<std::size_t>(std::max(members, 1))), driver_(std::this_thread::get_id()) {}
+    explicit Team(int members) : counters_(static_cast<std::size_t>(std::max(members, 1))) {}
     Team(const Team&) = delete;
     Team& operator=(const Team&) = delete;
 
@@ -89,7 +88,15 @@ public:
         }
     }
 
-    /// Driver: no more stages; the helpers return.
+    /// The calling thread becomes the driver of a new run. Only between runs: no helper of the last run may
+    /// still be inside help(). Allocates nothing, so a team made once serves every step.
+    void start() {
+        driver_ = std::this_thread::get_id();
+        stage_.store(0);
+        finished_.store(false);
+    }
+
+    /// Driver: no more stages in this run; the helpers return.
     void finish() { finished_.store(true); }
 
 private:
@@ -146,7 +153,7 @@ private:
         std::atomic<std::uint64_t> next{0};  // stage << 32 | the next chunk of this member's run
     };
     std::vector<Counter> counters_;
-    const std::thread::id driver_;
+    std::thread::id driver_;  // set by start(); no thread drives before it
     bool inStage_ = false;  // the driver is inside forEach (a nested call runs inline)
     // The stage's description (written by the driver before it publishes the stage number).
     std::atomic<void*> context_{nullptr};

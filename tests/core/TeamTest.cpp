@@ -44,6 +44,8 @@ TEST(Team, ChainedLoopsMatchOneThreadExactly) {
     for (const int threads : {2, 3, 8}) {
         Executor many(threads);
         EXPECT_EQ(chainedLoops(many, 1000, 40), expected) << threads << " threads";
+        // The same team again: a run starts from a clean stage count and a team not yet finished.
+        EXPECT_EQ(chainedLoops(many, 1000, 40), expected) << threads << " threads, second run";
     }
 }
 
@@ -51,6 +53,7 @@ TEST(Team, EveryItemOnceWithAHelperThatJoinsLate) {
     // Driver and helper threads made by hand: the helper starts only after the driver has begun, and the
     // driver must not depend on it.
     Team team(2);
+    team.start();
     std::vector<std::atomic<int>> hits(5000);
     std::thread helper;
     int loops = 0;
@@ -72,6 +75,7 @@ TEST(Team, EveryItemOnceWithAHelperThatJoinsLate) {
 TEST(Team, DriverAloneFinishesEveryLoop) {
     // No helper ever comes: the driver takes every chunk itself and returns.
     Team team(4);
+    team.start();
     std::vector<int> hits(300, 0);
     auto body = [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t i = begin; i < end; ++i) ++hits[i];
