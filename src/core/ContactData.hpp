@@ -11,13 +11,32 @@
 
 #include "physim/core/Contact.hpp"
 
+#include <array>
 #include <cstdint>
 
 namespace physim {
 
+/// The shapes' last full collision, kept in the bodies' own frames (about their centres of mass): while the pair
+/// has moved less than a tolerance relative to itself, the manifold is rebuilt from it (a few products) instead of
+/// colliding the shapes again (Contacts.cpp).
+struct ManifoldCache {
+    double margin = -1.0;           // speculative distance the shapes were collided with, m; < 0: nothing kept
+    Vec2 offset = Vec2::Zero();     // b's centre of mass in a's frame, m
+    double angle = 0.0;             // b's angle minus a's, rad
+    Vec2 normal = Vec2::Zero();     // in a's frame
+    struct Point {
+        Vec2 onA = Vec2::Zero();    // the point on a's surface, in a's frame about its centre of mass, m
+        Vec2 onB = Vec2::Zero();    // the point on b's surface, in b's frame
+        std::uint32_t id = 0;
+    };
+    std::array<Point, 2> points{};
+    int pointCount = 0;
+};
+
 struct ContactData {
     std::uint32_t a = 0, b = 0;     // body slots, a < b; the manifold's normal points from a to b
     Manifold manifold;
+    ManifoldCache cache;
     // Intrusive lists through each body's contacts: side 0 is in a's list, side 1 in b's.
     std::int32_t prev[2] = {kNullIndex, kNullIndex};
     std::int32_t next[2] = {kNullIndex, kNullIndex};

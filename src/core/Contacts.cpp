@@ -52,20 +52,75 @@ bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
     return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
+// How far (m) any point of B can have moved in A's frame since the cache was made: the shift of B's centre plus
+// the turn times B's extent.
+double motionSinceCache(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
+    const Vec2 offset = A.xf.q.applyInverse(B.center - A.center);
+    return (offset - k.offset).norm() + std::abs(B.angle - A.angle - k.angle) * B.extent;
+}
+
+void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData& B, double margin) {
+    k.margin = margin;
+    k.offset = A.xf.q.applyInverse(B.center - A.center);
+    k.angle = B.angle - A.angle;
+    k.normal = A.xf.q.applyInverse(m.normal);
+    k.pointCount = m.pointCount;
+    for (int p = 0; p < m.pointCount; ++p) {
+        const ContactPoint& cp = m.points[p];
+        const Vec2 half = 0.5 * cp.separation * m.normal;  // the point is midway between the two surfaces
+        k.points[p] = {A.xf.q.applyInverse(cp.point - half - A.center), B.xf.q.applyInverse(cp.point + half - B.center),
+                       cp.id};
+    }
+}
+
+// The manifold at the present poses from the cache: each surface point moves with its body, the separation is
+// their distance along the normal, which turns with A.
+Manifold rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
+    Manifold m;
+    m.normal = A.xf.q.apply(k.normal);
+    m.pointCount = k.pointCount;
+    for (int p = 0; p < k.pointCount; ++p) {
+        const Vec2 onA = A.center + A.xf.q.apply(k.points[p].onA);
+        const Vec2 onB = B.center + B.xf.q.apply(k.points[p].onB);
+        ContactPoint& cp = m.points[p];
+        cp.point = 0.5 * (onA + onB);
+        cp.separation = m.normal.dot(onB - onA);
+        cp.id = k.points[p].id;
+    }
+    return m;
+}
+
+// The pair's manifold with every point up to `margin` (m) apart. The shapes are collided again only when B has
+// moved more than `tolerance` (m) in A's frame since the last collision, or when the margin grew past what that
+// collision covered; they are collided with 2 tolerances to spare, so a pair at rest keeps its cache though its
+// closing speed, and so its margin, jitters.
+Manifold collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance) {
+    if (k.margin >= 0.0) {
+        const double motion = motionSinceCache(k, A, B);
+        if (motion <= tolerance && margin + motion <= k.margin) return rebuild(k, A, B);
+    }
+    const double wider = margin + 2.0 * tolerance;
+    const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, wider);
+    keep(k, r.manifold, A, B, wider);
+    return r.manifold;
+}
+
 // The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
 // only where the pair closes on it fast enough to touch this step. Returns whether the pair touches.
-bool refreshManifold(Manifold& m, const BodyData& A, const BodyData& B, double speculative, double dt) {
+bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B, double speculative, double tolerance,
+                     double dt) {
+    Manifold& m = c.manifold;
     if (!needsPoints(A, B, speculative, dt)) {
         m.pointCount = 0;
         return false;
     }
     const Manifold old = m;
-    const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, speculative + reach(A, B, dt));
-    m.normal = r.manifold.normal;
+    const Manifold found = collideOrReuse(c.cache, A, B, speculative + reach(A, B, dt), tolerance);
+    m.normal = found.normal;
     m.pointCount = 0;
     bool touching = false;
-    for (int p = 0; p < r.manifold.pointCount; ++p) {
-        ContactPoint cp = r.manifold.points[p];
+    for (int p = 0; p < found.pointCount; ++p) {
+        ContactPoint cp = found.points[p];
         // Keep a speculative point only if the pair approaches there fast enough to close it this step.
         const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
         const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
@@ -165,6 +220,9 @@ void WorldImpl::updatePairs() {
 
 void WorldImpl::updateContacts() {
     const double speculative = 4.0 * settings.linearSlop;
+    // A manifold kept while the pair moves less than this in its own frame is off by at most this (m) along the
+    // surfaces; the separations, which the solver needs exactly, are measured at the present poses anyway.
+    const double reuseTolerance = 0.1 * settings.linearSlop;
     const std::size_t n = awakeContacts.size();
     contactFlags.assign(n, kNone);
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) {
@@ -180,7 +238,7 @@ void WorldImpl::updateContacts() {
                 contactFlags[i] = kDeferred;
                 continue;
             }
-            const bool touching = refreshManifold(c.manifold, A, B, speculative, dt);
+            const bool touching = refreshManifold(c, A, B, speculative, reuseTolerance, dt);
             if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
             c.touching = touching;
         }
