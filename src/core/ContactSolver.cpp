@@ -153,31 +153,40 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
     B.dAngle += turnB;
 }
 
-// Applies the bounces. Both points of a face bounce together (a box landing flat stays level): the impulses x >= 0
-// bring each point to its target speed, or leave it at x = 0 already leaving faster, as the normal rows' 2x2
-// complementarity problem does. Point by point would let the second point's blow undo the first's target and
-// gain energy (a thin spinning box struck on both corners). A bounce is a blow, not a lasting push: nothing of it
-// is warm-started into the next substep. What this pass gave the point to push an overlap apart (`push`) is taken
-// back first: the pair leaves at e times its meeting speed, not at the push-out speed (an overlapping pair that met
-// slowly would otherwise keep that speed: energy from nowhere); later passes push the overlap out as usual. What
-// other contacts' push-out gave the bodies in this substep (`othersPush`, along each point's normal) is left out of
-// the speeds the bounce answers, for the same reason: it stays on the bodies, and their relax pass takes it back.
+// Applies the bounces of a row one of whose points bounces, as one blow on the whole row. First everything this
+// pass gave the row's points is taken back (`delta`, N s per point), so the bodies move as they met (`vn`: each
+// point's normal speed then, m/s, less what other contacts' push-out gave it). Then impulses x >= 0, one per point,
+// bring each point to at least its target speed, exactly where x > 0, as the normal rows' 2x2 complementarity
+// problem does: a bouncing point's target is its bounce's; any other point may not approach faster than it
+// separated (target -vn), and one that approached is stopped (target 0). The kinetic energy changes by
+// sum x (vn + v') / 2, so each point's share is zero (a bounce with e = 1, a separating point held at the mirror
+// of its speed) or a loss, whatever the coupling between the points. Both points of a face bounce together (a
+// box landing flat stays level); point by point, or keeping the pass's impulse at a point the blow then leaves
+// alone, gained energy (a thin box spinning into a wall at 300 m/s gained up to half its energy in a step).
+// A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep. Taking back the
+// pass's impulse includes what it gave a point to push an overlap apart: the pair leaves at e times its meeting
+// speed, not at the push-out speed (an overlapping pair that met slowly would otherwise keep that speed); later
+// passes push the overlap out as usual. What other contacts' push-out gave the bodies in this substep
+// (`othersPush`, along each point's normal) is left out of the speeds the blow answers, for the same reason: it
+// stays on the bodies, and their relax pass takes it back.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
-                  const double (&push)[2], const double (&othersPush)[2]) {
-    for (int i = 0; i < c.pointCount; ++i)
-        if (bounce[i].active && push[i] > 0.0) pushNormal(c, A, B, c.points[i], -push[i]);
-    // The speed the bounce answers leaves out what other contacts' push-out gave the bodies in this substep.
+                  const double (&vn)[2], const double (&delta)[2], const double (&othersPush)[2]) {
+    for (int i = 0; i < c.pointCount; ++i) {
+        if (delta[i] != 0.0) pushNormal(c, A, B, c.points[i], -delta[i]);
+        c.points[i].normalImpulse -= delta[i];
+    }
     auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]) - othersPush[i]; };
+    auto target = [&](int i) { return bounce[i].active ? bounce[i].target : std::min(-vn[i], 0.0); };
     double x[2] = {0.0, 0.0}, q[2] = {0.0, 0.0};
-    if (c.pointCount == 2 && bounce[0].active && bounce[1].active) {
-        const double d1 = bounce[0].target - speedAt(0), d2 = bounce[1].target - speedAt(1);
-        const double g1 = bounce[0].gap, g2 = bounce[1].gap;
+    if (c.pointCount == 2) {
+        const double d1 = target(0) - speedAt(0), d2 = target(1) - speedAt(1);
+        const double g1 = bounce[0].gap, g2 = bounce[1].gap;  // zero for a point that does not bounce
         const double y1 = (c.k22 * d1 - c.k12 * d2) * c.invDet, y2 = (c.k11 * d2 - c.k12 * d1) * c.invDet;
         if (c.invDet > 0.0 && y1 >= 0.0 && y2 >= 0.0) {
             x[0] = y1, x[1] = y2;
             q[0] = (c.k22 * g1 - c.k12 * g2) * c.invDet, q[1] = (c.k11 * g2 - c.k12 * g1) * c.invDet;
         } else if (d1 > 0.0 && d2 - c.k12 * d1 / c.k11 <= 0.0) {
-            x[0] = d1 / c.k11, q[0] = g1 / c.k11;  // the first bounces; the second then leaves fast enough
+            x[0] = d1 / c.k11, q[0] = g1 / c.k11;  // the first gets the blow; the second then leaves fast enough
         } else if (d2 > 0.0 && d1 - c.k12 * d2 / c.k22 <= 0.0) {
             x[1] = d2 / c.k22, q[1] = g2 / c.k22;
         } else if (d1 > 0.0 || d2 > 0.0) {
@@ -186,21 +195,14 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
             x[i] = (i == 0 ? d1 : d2) / (i == 0 ? c.k11 : c.k22);
             q[i] = (i == 0 ? g1 : g2) / (i == 0 ? c.k11 : c.k22);
         }
-    } else {
-        for (int i = 0; i < c.pointCount; ++i) {
-            if (!bounce[i].active) continue;
-            x[i] = std::max(c.points[i].normalMass * (bounce[i].target - speedAt(i)), 0.0);
-            q[i] = bounce[i].gap * c.points[i].normalMass;
-        }
+    } else if (c.pointCount == 1) {
+        x[0] = std::max(c.points[0].normalMass * (target(0) - speedAt(0)), 0.0);
+        q[0] = bounce[0].gap * c.points[0].normalMass;
     }
     for (int i = 0; i < c.pointCount; ++i) {
-        if (!bounce[i].active) continue;
-        ContactConstraintPoint& cp = c.points[i];
-        pushNormal(c, A, B, cp, x[i]);
-        cp.normalImpulse = 0.0;
+        if (x[i] != 0.0) pushNormal(c, A, B, c.points[i], x[i]);
+        if (q[i] != 0.0) shift(c, c.points[i], A, B, q[i]);
     }
-    for (int i = 0; i < c.pointCount; ++i)
-        if (bounce[i].active && q[i] != 0.0) shift(c, c.points[i], A, B, q[i]);
 }
 
 }  // namespace
@@ -323,10 +325,11 @@ template <bool Turns>
 }
 
 // What a point that started to push in this pass brings to the bounce path: per point, whether it started, its
-// normal speed before this pass's impulse, its separation, and the part of its impulse that pushes an overlap out.
+// normal speed before this pass's impulse, its separation, this pass's impulse, and the part of it that pushes an
+// overlap out.
 struct Start {
     bool started[2] = {false, false};
-    double before[2] = {0.0, 0.0}, separation[2] = {0.0, 0.0}, push[2] = {0.0, 0.0};
+    double before[2] = {0.0, 0.0}, separation[2] = {0.0, 0.0}, delta[2] = {0.0, 0.0}, push[2] = {0.0, 0.0};
 };
 
 // Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
@@ -345,7 +348,11 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
     for (int i = 0; i < count; ++i)
         if (start.started[i])
             bounce[i] = planBounce(c, c.points[i], start.before[i] - othersPush[i], start.separation[i], pass);
-    if (bounce[0].active || bounce[1].active) {
+    if (!bounce[0].active && !bounce[1].active) {
+        // A push that stays is remembered on both bodies for their other contacts.
+        for (int i = 0; i < count; ++i)
+            if (start.push[i] > 0.0) recordPush(pass, c, c.points[i], start.push[i]);
+    } else {
         auto side = [&](std::int32_t index, const WideSide& g) {
             MotionSide m;
             if (index != kNullIndex) m = loadSide(states, index);
@@ -354,15 +361,13 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
             return m;
         };
         MotionSide A = side(c.indexA, wa), B = side(c.indexB, wb);
-        applyBounces(c, A, B, bounce, start.push, othersPush);
+        const double met[2] = {start.before[0] - othersPush[0], start.before[1] - othersPush[1]};
+        applyBounces(c, A, B, bounce, met, start.delta, othersPush);
         storeSideWithPose(states, c.indexA, c.invMassA, A);
         storeSideWithPose(states, c.indexB, c.invMassB, B);
         wa.vx[k] = A.v.x(), wa.vy[k] = A.v.y(), wa.w[k] = A.w, wa.dAngle[k] = A.dAngle;
         wb.vx[k] = B.v.x(), wb.vy[k] = B.v.y(), wb.w[k] = B.w, wb.dAngle[k] = B.dAngle;
     }
-    // A push that stays (its point did not bounce) is remembered on both bodies for their other contacts.
-    for (int i = 0; i < count; ++i)
-        if (start.push[i] > 0.0 && !bounce[i].active) recordPush(pass, c, c.points[i], start.push[i]);
     for (int i = 0; i < count; ++i) {
         block.points[i].normalImpulse[k] = c.points[i].normalImpulse;
         cold.lanes[k].relativeVelocity[i] = c.points[i].relativeVelocity;
@@ -460,6 +465,7 @@ template <bool Turns>
                 start.started[i] = started[i][k] != 0;
                 start.before[i] = before[i][k];
                 start.separation[i] = separation[i][k];
+                start.delta[i] = deltas[i][k];
                 start.push[i] = push[i][k];
             }
             totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);

@@ -1,9 +1,10 @@
 // No energy from nowhere: with restitution at most 1 and no external work, kinetic energy never rises by more than
 // 1e-6 relative (rounding, and the solver's push-out of overlaps, stay far below that). Cradles of touching and
-// gapped balls with 1 to 4 balls swung in, a gas of 200 elastic discs, and a pile dropped under gravity (where the
-// total of kinetic and potential energy is the conserved quantity).
+// gapped balls with 1 to 4 balls swung in, a gas of 200 elastic discs, spinning bullets off elastic walls, and a
+// pile dropped under gravity (where the total of kinetic and potential energy is the conserved quantity).
 
 #include "physim/core/World.hpp"
+#include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -160,6 +161,27 @@ TEST(Energy, ADroppedPileOnlyLosesEnergy) {
     }
     EXPECT_LE(highest, e0 + 1e-6 * e0);
     EXPECT_LT(total(), e0) << "it came to rest lower";
+}
+
+// One or two exact-continuous bullets (a thin box spinning up to thousands of rad/s, and a small disc) at 150 to
+// 600 m/s in a closed box of elastic walls, 100 random starts each, 60 steps: no step ends with more kinetic energy
+// than it began with, beyond 1e-6 relative (friction only takes). A box turning several radians per substep
+// meets a wall on both corners of a face at once, one approaching and one leaving; the blow that answered only the
+// approaching corner, keeping what the pass had given the other, gained up to 57% in a step.
+TEST(Energy, SpinningBulletsOffElasticWallsNeverGainEnergy) {
+    WorldSettings s;
+    s.gravity = Vec2::Zero();
+    for (const int bullets : {1, 2})
+        for (unsigned seed = 1; seed <= 100; ++seed) {
+            World w(s);
+            const std::vector<BodyId> ids = testing::fillBulletBox(w, bullets, seed);
+            for (int step = 0; step < 60; ++step) {
+                const double before = kinetic(w, ids);
+                w.step(kDt);
+                ASSERT_LE(kinetic(w, ids), before * (1.0 + 1e-6))
+                    << bullets << " bullets, seed " << seed << ", step " << step;
+            }
+        }
 }
 
 }  // namespace
