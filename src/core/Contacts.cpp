@@ -75,8 +75,7 @@ void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData
 
 // The manifold at the present poses from the cache: each surface point moves with its body, the separation is
 // their distance along the normal, which turns with A.
-Manifold rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
-    Manifold m;
+void rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B, Manifold& m) {
     m.normal = A.xf.q.apply(k.normal);
     m.pointCount = k.pointCount;
     for (int p = 0; p < k.pointCount; ++p) {
@@ -87,22 +86,28 @@ Manifold rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
         cp.separation = m.normal.dot(onB - onA);
         cp.id = k.points[p].id;
     }
-    return m;
 }
 
-// The pair's manifold with every point up to `margin` (m) apart. The shapes are collided again only when B has
-// moved more than `tolerance` (m) in A's frame since the last collision, or when the margin grew past what that
-// collision covered; they are collided with 2 tolerances to spare, so a pair at rest keeps its cache though its
-// closing speed, and so its margin, jitters.
-Manifold collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance) {
+// The pair's manifold with every point up to `margin` (m) apart, into `m` (its impulses untouched). The shapes are
+// collided again only when B has moved more than `tolerance` (m) in A's frame since the last collision, or when
+// the margin grew past what that collision covered; they are collided with 2 tolerances to spare, so a pair at
+// rest keeps its cache though its closing speed, and so its margin, jitters.
+void collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance,
+                    Manifold& m) {
     if (k.margin >= 0.0) {
         const double motion = motionSinceCache(k, A, B);
-        if (motion <= tolerance && margin + motion <= k.margin) return rebuild(k, A, B);
+        if (motion <= tolerance && margin + motion <= k.margin) return rebuild(k, A, B, m);
     }
     const double wider = margin + 2.0 * tolerance;
     const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, wider);
     keep(k, r.manifold, A, B, wider);
-    return r.manifold;
+    m.normal = r.manifold.normal;
+    m.pointCount = r.manifold.pointCount;
+    for (int p = 0; p < m.pointCount; ++p) {
+        m.points[p].point = r.manifold.points[p].point;
+        m.points[p].separation = r.manifold.points[p].separation;
+        m.points[p].id = r.manifold.points[p].id;
+    }
 }
 
 // The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
@@ -114,25 +119,31 @@ bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B, doubl
         m.pointCount = 0;
         return false;
     }
-    const Manifold old = m;
-    const Manifold found = collideOrReuse(c.cache, A, B, speculative + reach(A, B, dt), tolerance);
-    m.normal = found.normal;
+    struct Impulses {
+        std::uint32_t id;
+        double normal, tangent;
+    } kept[2];
+    const int keptCount = m.pointCount;
+    for (int q = 0; q < keptCount; ++q) kept[q] = {m.points[q].id, m.points[q].normalImpulse, m.points[q].tangentImpulse};
+    collideOrReuse(c.cache, A, B, speculative + reach(A, B, dt), tolerance, m);
+    const int found = m.pointCount;
     m.pointCount = 0;
     bool touching = false;
-    for (int p = 0; p < found.pointCount; ++p) {
-        ContactPoint cp = found.points[p];
+    for (int p = 0; p < found; ++p) {
+        ContactPoint& cp = m.points[m.pointCount];
+        cp = m.points[p];
         // Keep a speculative point only if the pair approaches there fast enough to close it this step.
         const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
         const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
         if (cp.separation > speculative + std::max(0.0, -vn) * dt) continue;
         touching = touching || cp.separation < speculative;
         cp.normalImpulse = cp.tangentImpulse = 0.0;
-        for (int q = 0; q < old.pointCount; ++q)
-            if (old.points[q].id == cp.id) {
-                cp.normalImpulse = old.points[q].normalImpulse;
-                cp.tangentImpulse = old.points[q].tangentImpulse;
+        for (int q = 0; q < keptCount; ++q)
+            if (kept[q].id == cp.id) {
+                cp.normalImpulse = kept[q].normal;
+                cp.tangentImpulse = kept[q].tangent;
             }
-        m.points[m.pointCount++] = cp;
+        ++m.pointCount;
     }
     return touching;
 }
