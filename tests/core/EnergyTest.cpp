@@ -18,13 +18,6 @@ namespace {
 
 constexpr double kDt = 1.0 / 60.0;
 
-double kinetic(const World& w, const std::vector<BodyId>& ids) {
-    double e = 0.0;
-    for (const BodyId id : ids)
-        e += 0.5 * w.mass(id) * w.velocity(id).squaredNorm() + 0.5 * w.inertia(id) * std::pow(w.angularVelocity(id), 2);
-    return e;
-}
-
 // A frictionless, perfectly elastic disc.
 BodyDef elasticDisc(double radius, const Vec2& position, const Vec2& velocity) {
     BodyDef d;
@@ -52,11 +45,11 @@ TEST(Energy, CradlesNeverGainEnergy) {
             for (int i = 0; i < 5; ++i)
                 ids.push_back(w.createBody(elasticDisc(0.5, {i * (1.0 + gap) - (i < in ? 0.5 : 0.0), 0.0},
                                                        i < in ? Vec2(2.0, 0.0) : Vec2::Zero())));
-            const double k0 = kinetic(w, ids);
+            const double k0 = testing::kineticEnergy(w, ids);
             double highest = k0;
             for (int s = 0; s < 120; ++s) {
                 w.step(kDt);
-                highest = std::max(highest, kinetic(w, ids));
+                highest = std::max(highest, testing::kineticEnergy(w, ids));
             }
             EXPECT_LE(highest, k0 * (1.0 + 1e-6)) << in << " in, gap " << gap;
             for (int i = 5 - in; i < 5; ++i) EXPECT_NEAR(w.velocity(ids[i]).x(), 2.0, 1e-3) << in << " in, ball " << i;
@@ -73,11 +66,11 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
         for (int i = 0; i < 2; ++i)
             ids.push_back(w.createBody(
                 elasticDisc(0.2, {i * (0.4 - 0.016), 0.0}, (i == 0 ? 0.5 : -0.5) * Vec2(0.08, tangential))));
-        const double k0 = kinetic(w, ids);
+        const double k0 = testing::kineticEnergy(w, ids);
         double highest = k0;
         for (int s = 0; s < 10; ++s) {
             w.step(kDt);
-            highest = std::max(highest, kinetic(w, ids));
+            highest = std::max(highest, testing::kineticEnergy(w, ids));
         }
         EXPECT_LE(highest, k0 * (1.0 + 1e-12)) << "tangential " << tangential;  // rounding only
         // e = 1 returns the meeting speed exactly, up to rounding (1e-16 m/s here); the old solver gave 0.54 m/s.
@@ -114,14 +107,14 @@ TEST(Energy, ElasticGasKeepsItsEnergy) {
             discs.push_back(w.createBody(elasticDisc(0.2, {-half + 0.8 * (i % 20 + 0.5), -half + 0.8 * (i / 20 + 0.5)},
                                                      5.0 * Vec2(std::cos(a), std::sin(a)))));
         }
-        const double k0 = kinetic(w, discs);
+        const double k0 = testing::kineticEnergy(w, discs);
         double highest = k0;
         for (int s = 0; s < 60 * 60; ++s) {
             w.step(kDt);
-            highest = std::max(highest, kinetic(w, discs));
+            highest = std::max(highest, testing::kineticEnergy(w, discs));
         }
         EXPECT_LE(highest, k0 * (1.0 + 1e-6)) << "seed " << seed;
-        EXPECT_GT(kinetic(w, discs), 0.99 * k0) << "seed " << seed;
+        EXPECT_GT(testing::kineticEnergy(w, discs), 0.99 * k0) << "seed " << seed;
     }
 }
 
@@ -149,7 +142,7 @@ TEST(Energy, ADroppedPileOnlyLosesEnergy) {
         ids.push_back(w.createBody(d));
     }
     auto total = [&] {
-        double e = kinetic(w, ids);
+        double e = testing::kineticEnergy(w, ids);
         for (const BodyId id : ids) e += w.mass(id) * 9.81 * w.centerOfMass(id).y();
         return e;
     };
@@ -176,9 +169,9 @@ TEST(Energy, SpinningBulletsOffElasticWallsNeverGainEnergy) {
             World w(s);
             const std::vector<BodyId> ids = testing::fillBulletBox(w, bullets, seed);
             for (int step = 0; step < 60; ++step) {
-                const double before = kinetic(w, ids);
+                const double before = testing::kineticEnergy(w, ids);
                 w.step(kDt);
-                ASSERT_LE(kinetic(w, ids), before * (1.0 + 1e-6))
+                ASSERT_LE(testing::kineticEnergy(w, ids), before * (1.0 + 1e-6))
                     << bullets << " bullets, seed " << seed << ", step " << step;
             }
         }

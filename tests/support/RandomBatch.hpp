@@ -9,6 +9,7 @@
 #include "physim/core/Collide.hpp"
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <array>
 #include <cmath>
@@ -241,13 +242,7 @@ inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned see
     return ids;
 }
 
-/// Kinetic energy of the bodies, translational and rotational (J).
-inline double kineticEnergy(const World& world, const std::vector<BodyId>& bodies) {
-    double e = 0.0;
-    for (const BodyId b : bodies)
-        e += 0.5 * world.mass(b) * world.velocity(b).squaredNorm() +
-             0.5 * world.inertia(b) * world.angularVelocity(b) * world.angularVelocity(b);
-    return e;
-}
+/// Kinetic energy of the bodies, translational and rotational (J): the one in Scenes.hpp.
+using test::kineticEnergy;
 
 }  // namespace physim::testing
