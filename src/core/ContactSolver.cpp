@@ -108,8 +108,8 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
 namespace {
 
 // A point that starts to push (it had no impulse): remember how it met; if it meets fast enough, it bounces now.
-// It leaves at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly (no energy
-// gained or lost):
+// It leaves at e times the meeting speed, placed so that for e = 1 semi-implicit Euler retraces the fall exactly
+// (no energy gained or lost):
 //   met in the solve pass (positions not yet moved this substep): the separation at the substep's end becomes e
 //   times the gap it had at the substep's start, as if it had reflected off the surface on time;
 //   met in the relax pass (positions already moved): the reflection of the next substep's fall leaves at the
@@ -162,7 +162,7 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // sum x (vn + v') / 2, so each point's share is zero (a bounce with e = 1, a separating point held at the mirror
 // of its speed) or a loss, whatever the coupling between the points. Both points of a face bounce together (a
 // box landing flat stays level); point by point, or keeping the pass's impulse at a point the blow then leaves
-// alone, gained energy (a thin box spinning into a wall at 300 m/s gained up to half its energy in a step).
+// alone, gained energy (a thin box spinning into a wall, one corner approaching and one leaving: docs/dynamics.md).
 // A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep. Taking back the
 // pass's impulse includes what it gave a point to push an overlap apart: the pair leaves at e times its meeting
 // speed, not at the push-out speed (an overlapping pair that met slowly would otherwise keep that speed); later

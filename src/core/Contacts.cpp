@@ -68,8 +68,9 @@ void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData
     for (int p = 0; p < m.pointCount; ++p) {
         const ContactPoint& cp = m.points[p];
         const Vec2 half = 0.5 * cp.separation * m.normal;  // the point is midway between the two surfaces
-        k.points[p] = {A.xf.q.applyInverse(cp.point - half - A.center), B.xf.q.applyInverse(cp.point + half - B.center),
-                       cp.id};
+        k.points[p].onA = A.xf.q.applyInverse(cp.point - half - A.center);
+        k.points[p].onB = B.xf.q.applyInverse(cp.point + half - B.center);
+        k.points[p].id = cp.id;
     }
 }
 
@@ -124,7 +125,8 @@ bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B, doubl
         double normal, tangent;
     } kept[2];
     const int keptCount = m.pointCount;
-    for (int q = 0; q < keptCount; ++q) kept[q] = {m.points[q].id, m.points[q].normalImpulse, m.points[q].tangentImpulse};
+    for (int q = 0; q < keptCount; ++q)
+        kept[q] = {m.points[q].id, m.points[q].normalImpulse, m.points[q].tangentImpulse};
     collideOrReuse(c.cache, A, B, speculative + reach(A, B, dt), tolerance, m);
     const int found = m.pointCount;
     m.pointCount = 0;

@@ -99,8 +99,8 @@ public:
 private:
     int threads_ = 0;
     std::unique_ptr<tbb::task_arena> arena_;
-    std::unique_ptr<Team> team_;  // the arena's threads as a team, while run()'s fn runs
-    bool inRun_ = false;
+    std::unique_ptr<Team> team_;  // the arena's threads as run()'s team (made with the arena, kept for every run)
+    bool inRun_ = false;          // run()'s fn is running: parallelFor hands its loops to the team
 };
 
 }  // namespace physim

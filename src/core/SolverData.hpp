@@ -44,15 +44,17 @@ struct SolverBodySim {
 };
 
 /// Small-angle rotation by theta (rad): a Taylor series accurate to rounding for |theta| <= 0.2 (the first term
-/// left out, theta^12 / 12!, is below 1e-17 there), and the library functions beyond. Substeps turn bodies by far less than that, so the step
-/// pays for a few multiplications instead of a sine and a cosine per body per substep. The series' factors are
-/// reciprocals folded at compile time: a division per term would cost more than the rest of the body's update.
+/// left out, theta^12 / 12!, is below 1e-17 there), and the library functions beyond. Substeps turn bodies by far
+/// less than that, so the step pays for a few multiplications instead of a sine and a cosine per body per substep.
+/// The series' factors are reciprocals folded at compile time: a division per term would cost more than the rest
+/// of the body's update.
 inline Rotation rotationBy(double theta) {
     if (!(std::abs(theta) <= 0.2)) return Rotation::fromAngle(theta);
     const double t2 = theta * theta;
     constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0, k110 = 1.0 / 110.0;
     constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0;
-    const double s = theta * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42 * (1.0 - t2 * k72 * (1.0 - t2 * k110)))));
+    const double s =
+        theta * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42 * (1.0 - t2 * k72 * (1.0 - t2 * k110)))));
     const double c = 1.0 - t2 * k2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56 * (1.0 - t2 * k90))));
     return {c, s};
 }

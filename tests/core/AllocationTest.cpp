@@ -3,6 +3,7 @@
 // the calls, so it is a program of its own.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -51,19 +52,11 @@ constexpr double kDt = 1.0 / 60.0;
 // A base-20 pyramid (210 boxes, about 600 contact points) on a static ground, sleep off so that every step does
 // the whole work: broad phase, narrow phase, colouring, the solve and the islands.
 void buildPyramid(World& world) {
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(30.0, 0.5);
-    ground.position = {0.0, -0.5};
-    world.createBody(ground);
+    test::addGround(world, 30.0);
     const int base = 20;
     for (int row = 0; row < base; ++row)
-        for (int col = 0; col < base - row; ++col) {
-            BodyDef box;
-            box.shape = makeBox(0.5, 0.5);
-            box.position = {(col - 0.5 * (base - row - 1)) * 1.0, 0.5 + row * 1.0};
-            world.createBody(box);
-        }
+        for (int col = 0; col < base - row; ++col)
+            test::addBox(world, {(col - 0.5 * (base - row - 1)) * 1.0, 0.5 + row * 1.0}, 0.5, 0.5);
 }
 
 long allocationsOverSteps(World& world, int steps) {
