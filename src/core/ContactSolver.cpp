@@ -378,8 +378,9 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
 
 // One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
 // immovable and not spinning; prepareContact decides once per step): the same rule with its angular terms left
-// out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop.
-template <bool Turns>
+// out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
+// pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
+template <bool Turns, bool Bias>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
                                               const ContactPass& pass) {
     WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
@@ -400,7 +401,7 @@ template <bool Turns>
         // Speculative (apart): close the gap in this substep, no further. Overlapping: the solve pass pushes out
         // softly, the relax pass not at all.
         const WideMask apart = s > 0.0;
-        if (pass.useBias) {
+        if constexpr (Bias) {
             bias[i] = apart ? s * pass.invH : max(pass.softness.biasRate * s, splat(-pass.maxPushVelocity));
             massScale[i] = apart ? one : splat(pass.softness.massScale);
             leak[i] = apart ? zero : splat(pass.softness.impulseScale);
@@ -430,8 +431,13 @@ template <bool Turns>
         const WideMask secondOnly = (second >= 0.0) & (c.k12 * second + b1 >= 0.0);
         const Wide y1 = bothPush ? both1 : (firstOnly ? first : zero);
         const Wide y2 = bothPush ? both2 : (firstOnly ? zero : (secondOnly ? second : zero));
-        blockDelta[0] = max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, zero) - x1;
-        blockDelta[1] = max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, zero) - x2;
+        if constexpr (Bias) {
+            blockDelta[0] = max(x1 + massScale[0] * (y1 - x1) - leak[0] * x1, zero) - x1;
+            blockDelta[1] = max(x2 + massScale[1] * (y2 - x2) - leak[1] * x2, zero) - x2;
+        } else {  // the same with massScale 1 and leak 0, term for term (so the same bits)
+            blockDelta[0] = max(x1 + (y1 - x1), zero) - x1;
+            blockDelta[1] = max(x2 + (y2 - x2), zero) - x2;
+        }
     }
     WideMask started[2];
     Wide deltas[2];  // each point's impulse change in this pass
@@ -442,8 +448,11 @@ template <bool Turns>
         Wide delta = blockDelta[i];  // an empty lane's is zero either way
         if (c.singles) {
             if (i == 1) before[1] = block ? before[1] : speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
-            const Wide single =
-                max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
+            Wide single;
+            if constexpr (Bias)
+                single = max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
+            else
+                single = max(x - cp.normalMass * (before[i] + bias[i]), zero) - x;
             delta = block ? blockDelta[i] : single;
         }
         applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
@@ -480,7 +489,7 @@ template <bool Turns>
         const Wide vt = speedAlong<Turns>(A, B, tx, ty, c.rtA, c.rtB);
         const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
         const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, -bound, bound);
-        if (!pass.useBias) {
+        if constexpr (!Bias) {
             const WideMask hasMass = c.tangentMass > 0.0;
             const Wide mass = hasMass ? c.tangentMass : one;
             const WideMask slides = hasMass & (abs(vt + (tangent - c.tangentImpulse) / mass) > pass.slipSpeed);
@@ -501,12 +510,19 @@ template <bool Turns>
     }
 }
 
+template <bool Bias>
+[[gnu::always_inline]] inline void solveLoopWith(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                                 SolverBody* states, const ContactPass& pass) {
+    for (ContactBlock* c = begin; c != end; ++c, ++cold) {
+        if (c->turns) solveBlock<true, Bias>(*c, *cold, states, pass);
+        else solveBlock<false, Bias>(*c, *cold, states, pass);
+    }
+}
+
 [[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                              SolverBody* states, const ContactPass& pass) {
-    for (ContactBlock* c = begin; c != end; ++c, ++cold) {
-        if (c->turns) solveBlock<true>(*c, *cold, states, pass);
-        else solveBlock<false>(*c, *cold, states, pass);
-    }
+    if (pass.useBias) solveLoopWith<true>(begin, end, cold, states, pass);
+    else solveLoopWith<false>(begin, end, cold, states, pass);
 }
 
 // The same loops built for baseline x86-64 and for AVX2 (Wide.hpp).
