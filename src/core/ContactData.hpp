@@ -36,7 +36,6 @@ struct ManifoldCache {
 struct ContactData {
     std::uint32_t a = 0, b = 0;     // body slots, a < b; the manifold's normal points from a to b
     Manifold manifold;
-    ManifoldCache cache;
     // Intrusive lists through each body's contacts: side 0 is in a's list, side 1 in b's.
     std::int32_t prev[2] = {kNullIndex, kNullIndex};
     std::int32_t next[2] = {kNullIndex, kNullIndex};
@@ -45,6 +44,7 @@ struct ContactData {
     bool alive = false;
     bool touching = false;          // a manifold point within the speculative distance (islands, events)
     bool sliding = false;           // its friction slid at the end of the last step (ContactSolver.hpp)
+    ManifoldCache cache;            // last: only the narrow phase reads it, the solver's preparation does not
 };
 
 /// Contact begin / end events of one step, by pair of bodies.
