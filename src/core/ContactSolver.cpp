@@ -325,8 +325,8 @@ template <bool Turns>
 }
 
 // What a point that started to push in this pass brings to the bounce path: per point, whether it started, its
-// normal speed before this pass's impulse, its separation, this pass's impulse, and the part of it that pushes an
-// overlap out.
+// normal speed before this pass's impulses on the row, its separation, this pass's impulse, and the part of it that
+// pushes an overlap out.
 struct Start {
     bool started[2] = {false, false};
     double before[2] = {0.0, 0.0}, separation[2] = {0.0, 0.0}, delta[2] = {0.0, 0.0}, push[2] = {0.0, 0.0};
@@ -439,6 +439,9 @@ template <bool Turns, bool Bias>
             blockDelta[1] = max(x2 + (y2 - x2), zero) - x2;
         }
     }
+    // Each point's normal speed before any of this pass's impulses on the row (the one-point-at-a-time path below
+    // measures the second point again after the first's): what a bounce answers, since it takes all of them back.
+    const Wide met[2] = {before[0], before[1]};
     WideMask started[2];
     Wide deltas[2];  // each point's impulse change in this pass
     Wide totalNormal = zero;
@@ -472,7 +475,7 @@ template <bool Turns, bool Bias>
             Start start;
             for (int i = 0; i < 2; ++i) {
                 start.started[i] = started[i][k] != 0;
-                start.before[i] = before[i][k];
+                start.before[i] = met[i][k];
                 start.separation[i] = separation[i][k];
                 start.delta[i] = deltas[i][k];
                 start.push[i] = push[i][k];
