@@ -221,8 +221,11 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
 }
 
 #if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in both builds
+// Against the AVX2 loops where the processor runs them; elsewhere against what the step's dispatch picks there
+// (WideCode::Best), which must then be the baseline loops, run without a fault and with the same bits.
 TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
-    if (!avx2CodeRuns()) GTEST_SKIP() << "this machine's processor has no AVX2";
+    const WideCode other = avx2CodeRuns() ? WideCode::Avx2 : WideCode::Best;
+    RecordProperty("compared_with", avx2CodeRuns() ? "avx2" : "dispatch (no avx2 on this processor)");
     std::mt19937 rng(5);
     int met = 0, slid = 0;
     for (int trial = 0; trial < 300; ++trial) {
@@ -243,7 +246,7 @@ TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
         std::vector<SolverBody> baselineStates = start, avx2States = start;
         std::vector<PushVelocity> baselinePushes(start.size()), avx2Pushes(start.size());
         run(baseline, baselineCold, baselineStates, baselinePushes, WideCode::Baseline);
-        run(avx2, avx2Cold, avx2States, avx2Pushes, WideCode::Avx2);
+        run(avx2, avx2Cold, avx2States, avx2Pushes, other);
         for (std::size_t i = 0; i < start.size(); ++i) expectSameBody(baselineStates[i], avx2States[i], trial);
         for (int b = 0; b < 2; ++b)
             for (int k = 0; k < kLanes; ++k) {
