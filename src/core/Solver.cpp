@@ -1,7 +1,8 @@
 // The soft step over the awake bodies: gather them into contiguous arrays, colour the contact rows so rows of one
-// colour share no dynamic body (they can be solved in any order, on any thread, with the same result), then
-// substeps of integrate velocities -> warm start -> solve -> integrate positions -> relax, one restitution pass,
-// and finalize (poses, boxes, sleep timers, proxies that left their boxes).
+// colour share no dynamic body (they can be solved in any order, on any thread, with the same result), group whole
+// islands, then per group substeps of integrate velocities -> warm start -> solve -> integrate positions -> relax,
+// and finalize (poses, boxes, sleep timers, proxies that left their boxes). Islands share no moving body, so a
+// group's substeps need nothing of another's: each group runs all of its substeps while its rows are in cache.
 
 #include "Impulse.hpp"
 #include "Joints.hpp"
@@ -11,14 +12,20 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 namespace physim {
 namespace {
 
 // Colours tried per row before it goes to the overflow (solved serially after the coloured rows).
 constexpr int kColours = 24;
+constexpr std::size_t kSegments = kColours + 1;  // a group's rows: kColours colours, then the overflow
 constexpr std::size_t kBodyGrain = 256;
 constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
+// Islands are solved in groups of about this many bodies: a group's rows (~260 bytes each, two or three per body)
+// and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
+// per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
+constexpr std::size_t kGroupBodies = 256;
 
 class StageTimer {
 public:
@@ -75,12 +82,14 @@ void WorldImpl::solve() {
     }
 
     // Colour the rows: greedy, in the awake list's order (deterministic), each dynamic body's colours as bits.
+    // Meanwhile join the bodies each row couples (union-find over awake indices) to solve islands apart.
     std::size_t rowCount = 0;
     rowContacts.clear();
     blockRows.clear();
     jointConstraints.clear();
-    colourStart.assign(kColours + 2, 0);
-    blockStart.assign(kColours + 2, 0);
+    const bool byIsland = !effects.perSubstep();  // a per-substep effect may couple any bodies
+    bodyRoot.resize(n);
+    for (std::size_t i = 0; i < n; ++i) bodyRoot[i] = static_cast<std::int32_t>(i);
     if (!awakeContacts.empty() || rowJointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         bodyColours.assign(n, 0);
@@ -106,21 +115,54 @@ void WorldImpl::solve() {
                 if (usedB) *usedB |= std::uint32_t{1} << colour;
             }
             constraintColour[k] = colour;
-            ++colourStart[static_cast<std::size_t>(colour) + 1];
+            if (byIsland) joinBodies(A.awakeIndex, B.awakeIndex);
             ++rowCount;
         }
-        for (int col = 0; col <= kColours; ++col) colourStart[col + 1] += colourStart[col];
+        for (std::uint32_t j = 0; j < joints.size(); ++j) {
+            const JointData& joint = joints[j];
+            if (!joint.alive || !joint.isRow()) continue;
+            const bool active = bodies[joint.b].awake() || (joint.twoBodies() && bodies[joint.a].awake());
+            if (!active) continue;
+            JointConstraint row;
+            row.joint = j;
+            prepareJoint(row, joint, bodies, h, rodSoftness);
+            jointConstraints.push_back(row);
+            if (byIsland) joinBodies(row.indexA, row.indexB);
+        }
+    }
+    groupIslands(byIsland);
+    const std::size_t groups = groupBodyStart.size() - 1;
+
+    if (rowCount > 0 || !jointConstraints.empty()) {
+        StageTimer timer(profile, Stage::Solve);
+        // Rows sorted by group, then colour (then the overflow), each in the awake contacts' order.
+        auto groupOfRow = [&](const ContactData& c) {
+            const std::int32_t a = bodies[c.a].awakeIndex;
+            return bodyGroup[static_cast<std::size_t>(a != kNullIndex ? a : bodies[c.b].awakeIndex)];
+        };
+        segmentStart.assign(groups * kSegments + 1, 0);
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
+            if (constraintColour[k] < 0) continue;
+            const std::size_t segment = groupOfRow(contacts[awakeContacts[k]]) * kSegments +
+                                        static_cast<std::size_t>(constraintColour[k]);
+            ++segmentStart[segment + 1];
+        }
+        for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) segmentStart[s + 1] += segmentStart[s];
         rowContacts.resize(rowCount);
-        colourFill.assign(colourStart.begin(), colourStart.end() - 1);
-        for (std::size_t k = 0; k < awakeContacts.size(); ++k)
-            if (constraintColour[k] >= 0)
-                rowContacts[colourFill[static_cast<std::size_t>(constraintColour[k])]++] = awakeContacts[k];
+        segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
+            if (constraintColour[k] < 0) continue;
+            const ContactData& c = contacts[awakeContacts[k]];
+            const std::size_t segment = groupOfRow(c) * kSegments + static_cast<std::size_t>(constraintColour[k]);
+            rowContacts[segmentFill[segment]++] = awakeContacts[k];
+        }
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).
-        for (int col = 0; col <= kColours; ++col) {
-            const std::uint32_t first = colourStart[col], end = colourStart[col + 1];
-            const std::uint32_t lanes = col < kColours ? kLanes : 1;
+        blockStart.assign(groups * kSegments + 1, 0);
+        for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) {
+            const std::uint32_t first = segmentStart[s], end = segmentStart[s + 1];
+            const std::uint32_t lanes = s % kSegments < kColours ? kLanes : 1;
             for (std::uint32_t r = first; r < end; r += lanes) blockRows.push_back({r, std::min(lanes, end - r)});
-            blockStart[col + 1] = static_cast<std::uint32_t>(blockRows.size());
+            blockStart[s + 1] = static_cast<std::uint32_t>(blockRows.size());
         }
         contactBlocks.resize(blockRows.size());  // every lane is written below: no need to clear them
         contactCold.resize(blockRows.size());
@@ -142,90 +184,47 @@ void WorldImpl::solve() {
             turningRows.fetch_add(turning, std::memory_order_relaxed);
         });
         profile.turningRows = turningRows.load();
-        jointConstraints.clear();
-        for (std::uint32_t j = 0; j < joints.size(); ++j) {
-            const JointData& joint = joints[j];
-            if (!joint.alive || !joint.isRow()) continue;
-            const bool active = bodies[joint.b].awake() || (joint.twoBodies() && bodies[joint.a].awake());
-            if (!active) continue;
-            JointConstraint row;
-            row.joint = j;
-            prepareJoint(row, joint, bodies, h, rodSoftness);
-            jointConstraints.push_back(row);
-        }
+        // Joint rows sorted by group, each group's in the joints' order.
+        groupJointStart.assign(groups + 1, 0);
+        auto groupOfJoint = [&](const JointConstraint& row) {
+            return bodyGroup[static_cast<std::size_t>(row.indexB != kNullIndex ? row.indexB : row.indexA)];
+        };
+        for (const JointConstraint& row : jointConstraints) ++groupJointStart[groupOfJoint(row) + 1];
+        for (std::size_t g = 0; g < groups; ++g) groupJointStart[g + 1] += groupJointStart[g];
+        groupedJoints.resize(jointConstraints.size());
+        segmentFill.assign(groupJointStart.begin(), groupJointStart.end() - 1);
+        for (const JointConstraint& row : jointConstraints) groupedJoints[segmentFill[groupOfJoint(row)]++] = row;
+        jointConstraints.swap(groupedJoints);
+    } else {
+        segmentStart.assign(groups * kSegments + 1, 0);
+        blockStart.assign(groups * kSegments + 1, 0);
+        groupJointStart.assign(groups + 1, 0);
+    }
+
+    contactPassSettings.h = h;
+    contactPassSettings.invH = invH;
+    contactPassSettings.softness = contactSoftness;
+    contactPassSettings.maxPushVelocity = settings.contactPushMaxVelocity;
+    contactPassSettings.restitutionThreshold = settings.restitutionThreshold;
+    contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
+    pushVelocities.assign(n, PushVelocity{});
+    // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
+    // of its passes. A large group spreads each of its loops over the threads; the small ones go to the threads
+    // whole. Either way every group gives the same bits on any thread count.
+    const std::size_t bigFrom = groups == 1 ? 0 : 4 * kGroupBodies;
+    for (std::size_t g = 0; g < groups; ++g)
+        if (groupBodyStart[g + 1] - groupBodyStart[g] >= bigFrom) solveGroup(g, true);
+    if (groups > 1) {
+        StageTimer timer(profile, Stage::Solve);
+        executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t g = begin; g < end; ++g)
+                if (groupBodyStart[g + 1] - groupBodyStart[g] < bigFrom) solveGroup(g, false);
+        });
     }
 
     SolverBody* const st = states;
     ContactBlock* const blocks = contactBlocks.data();
     ContactBlockCold* const cold = contactCold.data();
-    // One pass over all rows: joints, then colour by colour (in parallel within a colour), then the overflow.
-    // rowsWork(begin, end, worker) over blocks; jointWork(row, joint) for each joint.
-    auto pass = [&](auto&& rowsWork, auto&& jointWork) {
-        for (const JointConstraint& row : jointConstraints) jointWork(row, joints[row.joint]);
-        for (int col = 0; col < kColours; ++col) {
-            const std::size_t first = blockStart[col], count = blockStart[col + 1] - first;
-            executor.parallelFor(count, kBlockGrain, [&](std::size_t begin, std::size_t end, int worker) {
-                rowsWork(blocks + first + begin, blocks + first + end, worker);
-            });
-        }
-        rowsWork(blocks + blockStart[kColours], blocks + blockStart[kColours + 1], 0);
-    };
-    ContactPass contactPass;
-    contactPass.h = h;
-    contactPass.invH = invH;
-    contactPass.softness = contactSoftness;
-    contactPass.maxPushVelocity = settings.contactPushMaxVelocity;
-    contactPass.restitutionThreshold = settings.restitutionThreshold;
-    contactPass.slipSpeed = 0.1 * settings.linearSlop / dt;
-    pushVelocities.assign(n, PushVelocity{});
-    contactPass.pushes = pushVelocities.data();
-    auto solvePass = [&](bool useBias) {
-        contactPass.useBias = useBias;
-        pass([&](ContactBlock* b, ContactBlock* e, int) { solveContacts(b, e, cold + (b - blocks), st, contactPass); },
-             [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
-    };
-    const bool anyRows = rowCount > 0 || !jointConstraints.empty();
-
-    for (int sub = 0; sub < substeps; ++sub) {
-        contactPass.substep = sub;
-        if (effects.perSubstep()) effects.substep(*this, h);
-        {
-            StageTimer timer(profile, Stage::Integrate);
-            executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-                for (std::size_t i = begin; i < end; ++i) {
-                    const SolverBodySim& sim = sims[i];
-                    if (!sim.dynamic) continue;
-                    st[i].v += h * sim.acceleration;
-                    if (sim.turns) st[i].w += h * sim.angularAcceleration;
-                }
-            });
-        }
-        if (anyRows) {
-            StageTimer timer(profile, Stage::Solve);
-            pass([&](ContactBlock* b, ContactBlock* e, int) { warmStartContacts(b, e, st); },
-                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
-            for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true);
-        }
-        {
-            StageTimer timer(profile, Stage::Integrate);
-            executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-                for (std::size_t i = begin; i < end; ++i) {
-                    SolverBody& s = st[i];
-                    s.dp += h * s.v;
-                    if (s.w != 0.0) {
-                        const double turn = h * s.w;
-                        s.dAngle += turn;
-                        s.dq = compose(rotationBy(turn), s.dq);
-                    }
-                }
-            });
-        }
-        if (anyRows) {
-            StageTimer timer(profile, Stage::Solve);
-            for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
-        }
-    }
-
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         executor.parallelFor(contactBlocks.size(), kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
@@ -288,6 +287,137 @@ void WorldImpl::solve() {
         // The Continuous stage may put this body back: its proxy moves after that stage, once (bit 2).
         if ((enlarged[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged[i] |= 4;
         else moveProxy(b);
+    }
+}
+
+void WorldImpl::joinBodies(std::int32_t a, std::int32_t b) {
+    if (a == kNullIndex || b == kNullIndex) return;  // a static or sleeping side couples nothing
+    auto root = [&](std::int32_t i) {
+        while (bodyRoot[static_cast<std::size_t>(i)] != i) {
+            auto& parent = bodyRoot[static_cast<std::size_t>(i)];
+            parent = bodyRoot[static_cast<std::size_t>(parent)];  // path halving
+            i = parent;
+        }
+        return i;
+    };
+    a = root(a);
+    b = root(b);
+    if (a < b) bodyRoot[static_cast<std::size_t>(b)] = a;  // the lower index roots: the same tree on any run
+    else if (b < a) bodyRoot[static_cast<std::size_t>(a)] = b;
+}
+
+void WorldImpl::groupIslands(bool byIsland) {
+    const std::size_t n = awake.size();
+    bodyGroup.assign(n, 0);
+    groupBodies.resize(n);
+    groupBodyStart.assign(2, 0);
+    groupBodyStart[1] = static_cast<std::uint32_t>(n);
+    if (!byIsland || n <= kGroupBodies) {
+        for (std::size_t i = 0; i < n; ++i) groupBodies[i] = static_cast<std::uint32_t>(i);
+        return;
+    }
+    // Flatten the trees (a root has the lowest index of its island, so one pass in index order does it) and
+    // count each island's bodies at its root.
+    islandSize.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto root = static_cast<std::size_t>(bodyRoot[static_cast<std::size_t>(bodyRoot[i])]);
+        bodyRoot[i] = static_cast<std::int32_t>(root);
+        ++islandSize[root];
+    }
+    // Islands join groups in the order of their first body, a group closing once it holds kGroupBodies.
+    std::uint32_t groups = 0, open = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto root = static_cast<std::size_t>(bodyRoot[i]);
+        if (root == i) {
+            if (groups == 0 || open >= kGroupBodies) {
+                ++groups;
+                open = 0;
+            }
+            open += islandSize[root];
+            bodyGroup[i] = groups - 1;
+        } else {
+            bodyGroup[i] = bodyGroup[root];
+        }
+    }
+    groupBodyStart.assign(groups + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) ++groupBodyStart[bodyGroup[i] + 1];
+    for (std::uint32_t g = 0; g < groups; ++g) groupBodyStart[g + 1] += groupBodyStart[g];
+    segmentFill.assign(groupBodyStart.begin(), groupBodyStart.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) groupBodies[segmentFill[bodyGroup[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+void WorldImpl::solveGroup(std::size_t g, bool timed) {
+    const int substeps = settings.substeps;
+    const double h = dt / substeps;
+    const std::uint32_t* const bodyList = groupBodies.data() + groupBodyStart[g];
+    const std::size_t bodyCount = groupBodyStart[g + 1] - groupBodyStart[g];
+    const std::uint32_t* const segments = blockStart.data() + g * kSegments;
+    const bool anyRows = segments[kSegments] > segments[0] || groupJointStart[g + 1] > groupJointStart[g];
+    SolverBody* const st = states;
+    ContactBlock* const blocks = contactBlocks.data();
+    ContactBlockCold* const cold = contactCold.data();
+    // On the calling thread's share of the step: a stage's time counts only where one group runs at a time.
+    auto stage = [&](Stage s) { return timed ? std::optional<StageTimer>(std::in_place, profile, s) : std::nullopt; };
+    auto forBodies = [&](auto&& f) {
+        executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t k = begin; k < end; ++k) f(bodyList[k]);
+        });
+    };
+    // One pass over the group's rows: joints, then colour by colour (in parallel within a colour), then the
+    // overflow. rowsWork(begin, end) over blocks; jointWork(row, joint) for each joint.
+    auto pass = [&](auto&& rowsWork, auto&& jointWork) {
+        for (std::uint32_t j = groupJointStart[g]; j < groupJointStart[g + 1]; ++j)
+            jointWork(jointConstraints[j], joints[jointConstraints[j].joint]);
+        for (std::size_t col = 0; col < kColours; ++col) {
+            const std::size_t first = segments[col], count = segments[col + 1] - first;
+            executor.parallelFor(count, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
+                rowsWork(first + begin, first + end);
+            });
+        }
+        rowsWork(segments[kColours], segments[kSegments]);
+    };
+    ContactPass contactPass = contactPassSettings;
+    contactPass.pushes = pushVelocities.data();
+    auto solvePass = [&](bool useBias) {
+        contactPass.useBias = useBias;
+        pass([&](std::size_t b, std::size_t e) { solveContacts(blocks + b, blocks + e, cold + b, st, contactPass); },
+             [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
+    };
+
+    for (int sub = 0; sub < substeps; ++sub) {
+        contactPass.substep = sub;
+        if (effects.perSubstep()) effects.substep(*this, h);  // then there is one group
+        {
+            auto timer = stage(Stage::Integrate);
+            forBodies([&](std::size_t i) {
+                const SolverBodySim& sim = sims[i];
+                if (!sim.dynamic) return;
+                st[i].v += h * sim.acceleration;
+                if (sim.turns) st[i].w += h * sim.angularAcceleration;
+            });
+        }
+        if (anyRows) {
+            auto timer = stage(Stage::Solve);
+            pass([&](std::size_t b, std::size_t e) { warmStartContacts(blocks + b, blocks + e, st); },
+                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
+            for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true);
+        }
+        {
+            auto timer = stage(Stage::Integrate);
+            forBodies([&](std::size_t i) {
+                SolverBody& s = st[i];
+                s.dp += h * s.v;
+                if (s.w != 0.0) {
+                    const double turn = h * s.w;
+                    s.dAngle += turn;
+                    s.dq = compose(rotationBy(turn), s.dq);
+                }
+            });
+        }
+        if (anyRows) {
+            auto timer = stage(Stage::Solve);
+            for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
+        }
     }
 }
 

@@ -79,16 +79,26 @@ struct WorldImpl {
     SolverBody* states = nullptr;                // &solverBodies[1]: states[i] is awake body i, states[-1] still
     std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
     std::vector<SolverBodySim> sims;
-    std::vector<std::uint32_t> rowContacts;      // the contact of each row, colour by colour
-    std::vector<std::uint32_t> colourStart;      // rows of colour c: [colourStart[c], colourStart[c + 1])
+    // The awake bodies are solved in groups of whole islands (Solver.cpp); a segment is one group's rows of one
+    // colour, or its overflow: segment g * (colours + 1) + c.
+    std::vector<std::int32_t> bodyRoot;          // per awake body: union-find parent, then its island's root
+    std::vector<std::uint32_t> islandSize;       // per root: its island's bodies
+    std::vector<std::uint32_t> bodyGroup;        // per awake body: its group
+    std::vector<std::uint32_t> groupBodies;      // awake indices, group by group
+    std::vector<std::uint32_t> groupBodyStart;   // group g's bodies: [groupBodyStart[g], groupBodyStart[g + 1])
+    std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise
+    std::vector<std::uint32_t> rowContacts;      // the contact of each row, segment by segment
+    std::vector<std::uint32_t> segmentStart;     // rows of segment s: [segmentStart[s], segmentStart[s + 1])
     std::vector<ContactBlock> contactBlocks;     // the rows, kLanes to a block (an overflow row alone)
     std::vector<ContactBlockCold> contactCold;   // the rest of each block's rows
-    std::vector<std::uint32_t> blockStart;       // blocks of colour c: [blockStart[c], blockStart[c + 1])
+    std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
-    std::vector<std::uint32_t> colourFill;
+    std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
+    ContactPass contactPassSettings;             // this step's pass constants
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
-    std::vector<JointConstraint> jointConstraints;
+    std::vector<JointConstraint> jointConstraints;  // group by group
+    std::vector<JointConstraint> groupedJoints;
     std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
     std::vector<Aabb> deferredBoxes;
     std::vector<std::uint8_t> enlarged;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
@@ -150,6 +160,9 @@ struct WorldImpl {
 
     // Solver.cpp
     void solve();            // the Forces, Solve and Integrate stages
+    void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
+    void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
+    void solveGroup(std::size_t g, bool timed);  // a group's substeps
     void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
 };
 

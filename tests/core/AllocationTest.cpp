@@ -51,12 +51,22 @@ constexpr double kDt = 1.0 / 60.0;
 
 // A base-20 pyramid (210 boxes, about 600 contact points) on a static ground, sleep off so that every step does
 // the whole work: broad phase, narrow phase, colouring, the solve and the islands.
-void buildPyramid(World& world) {
-    test::addGround(world, 30.0);
-    const int base = 20;
+void addPyramid(World& world, int base, double x) {
     for (int row = 0; row < base; ++row)
         for (int col = 0; col < base - row; ++col)
-            test::addBox(world, {(col - 0.5 * (base - row - 1)) * 1.0, 0.5 + row * 1.0}, 0.5, 0.5);
+            test::addBox(world, {x + (col - 0.5 * (base - row - 1)) * 1.0, 0.5 + row * 1.0}, 0.5, 0.5);
+}
+
+void buildPyramid(World& world) {
+    test::addGround(world, 30.0);
+    addPyramid(world, 20, 0.0);
+}
+
+// Twelve base-8 pyramids 10 m apart (432 boxes in twelve islands): the solver groups islands and solves the
+// groups apart, with buffers of its own.
+void buildPiles(World& world) {
+    test::addGround(world, 70.0);
+    for (int p = 0; p < 12; ++p) addPyramid(world, 8, 10.0 * (p - 6));
 }
 
 long allocationsOverSteps(World& world, int steps) {
@@ -69,18 +79,26 @@ long allocationsOverSteps(World& world, int steps) {
 
 class Allocation : public ::testing::TestWithParam<int> {};
 
-TEST_P(Allocation, ASettledPyramidStepsWithoutAllocating) {
+void expectSettledStepsAllocateNothing(void (*build)(World&), int threads) {
     WorldSettings settings;
     settings.enableSleep = false;
-    settings.threads = GetParam();
+    settings.threads = threads;
     World world(settings);
-    buildPyramid(world);
+    build(world);
     for (int k = 0; k < 120; ++k) world.step(kDt);  // 2 s: settled, and every buffer at its working size
     // The check can fail: the first steps of the same world allocate (this also proves the counter counts).
     World fresh(settings);
-    buildPyramid(fresh);
+    build(fresh);
     EXPECT_GT(allocationsOverSteps(fresh, 2), 0) << "the counter sees the first steps' allocations";
-    EXPECT_EQ(allocationsOverSteps(world, 60), 0) << GetParam() << " threads";
+    EXPECT_EQ(allocationsOverSteps(world, 60), 0) << threads << " threads";
+}
+
+TEST_P(Allocation, ASettledPyramidStepsWithoutAllocating) {
+    expectSettledStepsAllocateNothing(buildPyramid, GetParam());
+}
+
+TEST_P(Allocation, ManySettledPilesStepWithoutAllocating) {
+    expectSettledStepsAllocateNothing(buildPiles, GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Threads, Allocation, ::testing::Values(1, 2),
