@@ -209,16 +209,19 @@ void WorldImpl::solve() {
     contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
     pushVelocities.assign(n, PushVelocity{});
     // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
-    // of its passes. A large group spreads each of its loops over the threads; the small ones go to the threads
-    // whole. Either way every group gives the same bits on any thread count.
-    const std::size_t bigFrom = groups == 1 ? 0 : 4 * kGroupBodies;
+    // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
+    // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
+    auto spread = [&](std::size_t g) {
+        const std::size_t size = groupBodyStart[g + 1] - groupBodyStart[g];
+        return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > n;
+    };
     for (std::size_t g = 0; g < groups; ++g)
-        if (groupBodyStart[g + 1] - groupBodyStart[g] >= bigFrom) solveGroup(g, true);
+        if (spread(g)) solveGroup(g, true);
     if (groups > 1) {
         StageTimer timer(profile, Stage::Solve);
         executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t g = begin; g < end; ++g)
-                if (groupBodyStart[g + 1] - groupBodyStart[g] < bigFrom) solveGroup(g, false);
+                if (!spread(g)) solveGroup(g, false);
         });
     }
 
