@@ -164,26 +164,8 @@ void WorldImpl::solve() {
             for (std::uint32_t r = first; r < end; r += lanes) blockRows.push_back({r, std::min(lanes, end - r)});
             blockStart[s + 1] = static_cast<std::uint32_t>(blockRows.size());
         }
-        contactBlocks.resize(blockRows.size());  // every lane is written below: no need to clear them
+        contactBlocks.resize(blockRows.size());  // each group fills its own (solveGroup), every lane of them
         contactCold.resize(blockRows.size());
-        std::atomic<std::size_t> turningRows{0};  // counted while each row is at hand, one add per chunk
-        executor.parallelFor(contactBlocks.size(), kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
-            std::size_t turning = 0;
-            for (std::size_t b = begin; b < end; ++b) {
-                ContactBlock& block = contactBlocks[b];
-                const int lanes = static_cast<int>(blockRows[b].count);
-                startBlock(block, contactCold[b], lanes);
-                for (int lane = 0; lane < lanes; ++lane) {
-                    ContactConstraint row;
-                    row.contact = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
-                    prepareContact(row, contacts[row.contact], bodies, settings.gravity);
-                    setRow(block, contactCold[b], lane, row);
-                    turning += row.turns ? 1 : 0;
-                }
-            }
-            turningRows.fetch_add(turning, std::memory_order_relaxed);
-        });
-        profile.turningRows = turningRows.load();
         // Joint rows sorted by group, each group's in the joints' order.
         groupJointStart.assign(groups + 1, 0);
         auto groupOfJoint = [&](const JointConstraint& row) {
@@ -215,26 +197,22 @@ void WorldImpl::solve() {
         const std::size_t size = groupBodyStart[g + 1] - groupBodyStart[g];
         return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > n;
     };
+    std::atomic<std::size_t> turningRows{0};
     for (std::size_t g = 0; g < groups; ++g)
-        if (spread(g)) solveGroup(g, true);
+        if (spread(g)) turningRows += solveGroup(g, true);
     if (groups > 1) {
         StageTimer timer(profile, Stage::Solve);
         executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t g = begin; g < end; ++g)
-                if (!spread(g)) solveGroup(g, false);
+                if (!spread(g)) turningRows += solveGroup(g, false);
         });
     }
+    profile.turningRows = turningRows.load();
 
     SolverBody* const st = states;
-    ContactBlock* const blocks = contactBlocks.data();
-    ContactBlockCold* const cold = contactCold.data();
+    const ContactBlockCold* const cold = contactCold.data();
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        executor.parallelFor(contactBlocks.size(), kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t b = begin; b < end; ++b)
-                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane)
-                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[cold[b].lanes[lane].contact]);
-        });
         // Impacts, in row order (deterministic): the fastest meeting point of each contact above the threshold.
         for (std::size_t b = 0; b < contactBlocks.size(); ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
@@ -349,7 +327,24 @@ void WorldImpl::groupIslands(bool byIsland) {
     for (std::size_t i = 0; i < n; ++i) groupBodies[segmentFill[bodyGroup[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-void WorldImpl::solveGroup(std::size_t g, bool timed) {
+std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
+    std::size_t turning = 0;
+    for (std::size_t b = begin; b < end; ++b) {
+        ContactBlock& block = contactBlocks[b];
+        const int lanes = static_cast<int>(blockRows[b].count);
+        startBlock(block, contactCold[b], lanes);
+        for (int lane = 0; lane < lanes; ++lane) {
+            ContactConstraint row;
+            row.contact = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
+            prepareContact(row, contacts[row.contact], bodies, settings.gravity);
+            setRow(block, contactCold[b], lane, row);
+            turning += row.turns ? 1 : 0;
+        }
+    }
+    return turning;
+}
+
+std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const int substeps = settings.substeps;
     const double h = dt / substeps;
     const std::uint32_t* const bodyList = groupBodies.data() + groupBodyStart[g];
@@ -379,6 +374,16 @@ void WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         rowsWork(segments[kColours], segments[kSegments]);
     };
+    // The group's rows are prepared here and their impulses stored at the end, so that its blocks go from being
+    // written to their last pass without leaving the cache.
+    const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
+    std::atomic<std::size_t> turningRows{0};
+    if (blockCount > 0) {
+        auto timer = stage(Stage::Solve);
+        executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
+            turningRows += prepareBlocks(firstBlock + begin, firstBlock + end);  // one add per chunk
+        });
+    }
     ContactPass contactPass = contactPassSettings;
     contactPass.pushes = pushVelocities.data();
     auto solvePass = [&](bool useBias) {
@@ -422,6 +427,15 @@ void WorldImpl::solveGroup(std::size_t g, bool timed) {
             for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
         }
     }
+    if (blockCount > 0) {
+        auto timer = stage(Stage::Solve);
+        executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t b = firstBlock + begin; b < firstBlock + end; ++b)
+                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane)
+                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[cold[b].lanes[lane].contact]);
+        });
+    }
+    return turningRows.load();
 }
 
 void WorldImpl::moveDeferredProxies() {
