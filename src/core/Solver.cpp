@@ -53,32 +53,11 @@ void WorldImpl::solve() {
 
     {
         StageTimer timer(profile, Stage::Forces);
-        solverBodies.assign(n + 1, SolverBody{});  // [0]: the still body that kNullIndex reads (ContactSolver.hpp)
+        solverBodies.resize(n + 1);  // each group gathers its own bodies (startBody)
+        solverBodies[0] = SolverBody{};  // the still body that kNullIndex reads (ContactSolver.hpp)
         states = solverBodies.data() + 1;
         sims.resize(n);
-        const Vec2 gravity = settings.gravity;
-        executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const BodyData& b = bodies[awake[i]];
-                const bool dynamic = b.type == BodyType::Dynamic;
-                SolverBody& s = states[i];
-                s.v = b.v;
-                s.w = b.w;
-                s.dAngle = 0.0;
-                s.dp.setZero();
-                s.dq = Rotation{};
-                SolverBodySim& sim = sims[i];
-                sim.center0 = b.center;
-                sim.q0 = b.xf.q;
-                sim.angle0 = b.angle;
-                sim.acceleration = dynamic ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
-                sim.angularAcceleration = dynamic ? b.invInertia * b.torque : 0.0;
-                sim.invInertia = dynamic ? b.invInertia : 0.0;
-                sim.body = awake[i];
-                sim.dynamic = dynamic;
-                sim.turns = rowSide(b).turns;
-            }
-        });
+        enlarged.assign(n, 0);
     }
 
     // Colour the rows: greedy, in the awake list's order (deterministic), each dynamic body's colours as bits.
@@ -209,7 +188,6 @@ void WorldImpl::solve() {
     }
     profile.turningRows = turningRows.load();
 
-    SolverBody* const st = states;
     const ContactBlockCold* const cold = contactCold.data();
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
@@ -230,37 +208,6 @@ void WorldImpl::solve() {
     }
 
     StageTimer timer(profile, Stage::Integrate);
-    enlarged.assign(n, 0);
-    const double linearTolerance = settings.sleepLinearTolerance, angularTolerance = settings.sleepAngularTolerance;
-    const bool sleep = settings.enableSleep;
-    executor.parallelFor(n, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t i = begin; i < end; ++i) {
-            const SolverBody& s = st[i];
-            const SolverBodySim& sim = sims[i];
-            BodyData& b = bodies[sim.body];
-            b.v = s.v;
-            b.w = s.w;
-            b.center = sim.center0 + s.dp;
-            if (sim.turns) {
-                b.angle = sim.angle0 + s.dAngle;
-                b.xf.q = compose(s.dq, sim.q0);
-            }
-            b.xf.p = b.center - b.xf.q.apply(b.localCenter);
-            b.force.setZero();
-            b.torque = 0.0;
-            b.aabb = computeAabb(b.shape, b.xf);
-            if (sleep && b.canSleep() && sim.dynamic && b.v.norm() <= linearTolerance &&
-                std::abs(b.w) <= angularTolerance)
-                b.sleepTime += dt;
-            else
-                b.sleepTime = 0.0;
-            // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
-            const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
-            enlarged[i] = static_cast<std::uint8_t>((proxyOutgrown(b) ? 1 : 0) |
-                                                    (sim.dynamic && b.proxy != kNullIndex &&
-                                                     travel > 0.5 * b.coreRadius ? 2 : 0));
-        }
-    });
     fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
     for (std::size_t i = 0; i < n; ++i) {
         if (!(enlarged[i] & 1)) continue;
@@ -327,6 +274,53 @@ void WorldImpl::groupIslands(bool byIsland) {
     for (std::size_t i = 0; i < n; ++i) groupBodies[segmentFill[bodyGroup[i]]++] = static_cast<std::uint32_t>(i);
 }
 
+void WorldImpl::startBody(std::size_t i) {
+    const BodyData& b = bodies[awake[i]];
+    const bool dynamic = b.type == BodyType::Dynamic;
+    SolverBody& s = states[i];
+    s.v = b.v;
+    s.w = b.w;
+    s.dAngle = 0.0;
+    s.dp.setZero();
+    s.dq = Rotation{};
+    SolverBodySim& sim = sims[i];
+    sim.center0 = b.center;
+    sim.q0 = b.xf.q;
+    sim.angle0 = b.angle;
+    sim.acceleration = dynamic ? Vec2(b.gravityFactor() * settings.gravity + b.invMass * b.force) : Vec2::Zero();
+    sim.angularAcceleration = dynamic ? b.invInertia * b.torque : 0.0;
+    sim.invInertia = dynamic ? b.invInertia : 0.0;
+    sim.body = awake[i];
+    sim.dynamic = dynamic;
+    sim.turns = rowSide(b).turns;
+}
+
+void WorldImpl::finishBody(std::size_t i) {
+    const SolverBody& s = states[i];
+    const SolverBodySim& sim = sims[i];
+    BodyData& b = bodies[sim.body];
+    b.v = s.v;
+    b.w = s.w;
+    b.center = sim.center0 + s.dp;
+    if (sim.turns) {
+        b.angle = sim.angle0 + s.dAngle;
+        b.xf.q = compose(s.dq, sim.q0);
+    }
+    b.xf.p = b.center - b.xf.q.apply(b.localCenter);
+    b.force.setZero();
+    b.torque = 0.0;
+    b.aabb = computeAabb(b.shape, b.xf);
+    if (settings.enableSleep && b.canSleep() && sim.dynamic && b.v.norm() <= settings.sleepLinearTolerance &&
+        std::abs(b.w) <= settings.sleepAngularTolerance)
+        b.sleepTime += dt;
+    else
+        b.sleepTime = 0.0;
+    // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
+    const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
+    enlarged[i] = static_cast<std::uint8_t>(
+        (proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.proxy != kNullIndex && travel > 0.5 * b.coreRadius ? 2 : 0));
+}
+
 std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
     std::size_t turning = 0;
     for (std::size_t b = begin; b < end; ++b) {
@@ -374,6 +368,10 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         rowsWork(segments[kColours], segments[kSegments]);
     };
+    {
+        auto timer = stage(Stage::Forces);
+        forBodies([&](std::size_t i) { startBody(i); });
+    }
     // The group's rows are prepared here and their impulses stored at the end, so that its blocks go from being
     // written to their last pass without leaving the cache.
     const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
@@ -434,6 +432,10 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
                 for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane)
                     storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[cold[b].lanes[lane].contact]);
         });
+    }
+    {
+        auto timer = stage(Stage::Integrate);
+        forBodies([&](std::size_t i) { finishBody(i); });
     }
     return turningRows.load();
 }

@@ -162,6 +162,8 @@ struct WorldImpl {
     void solve();            // the Forces, Solve and Integrate stages
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
+    void startBody(std::size_t i);   // awake body i's solver state and sims from its record
+    void finishBody(std::size_t i);  // its record from the solver's state: pose, box, sleep timer, enlarged
     std::size_t prepareBlocks(std::size_t begin, std::size_t end);  // fills blocks; returns its turning rows
     std::size_t solveGroup(std::size_t g, bool timed);  // a group's rows, substeps, impulses; its turning rows
     void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
