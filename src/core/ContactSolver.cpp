@@ -38,12 +38,30 @@ inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const
 
 }  // namespace
 
-void prepareContact(ContactConstraint& c, const ContactData& contact, const std::vector<BodyData>& bodies,
-                    const Vec2& gravity) {
-    const BodyData& A = bodies[contact.a];
-    const BodyData& B = bodies[contact.b];
+RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record) {
+    RowBody out;
+    if (index == kNullIndex) {  // static or asleep: immovable, no acceleration
+        out.side = rowSide(record);
+        out.center = record.center;
+        out.restitution = record.restitution;
+        out.staticFriction = record.staticFriction;
+        out.dynamicFriction = record.dynamicFriction;
+        return out;
+    }
+    const SolverBodySim& s = sims[index];
+    out.side = {index, s.dynamic, s.turns, s.invMass, s.invInertia};  // rowSide(record), as at the step's start
+    out.center = s.center0;
+    out.acceleration = s.acceleration;
+    out.restitution = s.restitution;
+    out.staticFriction = s.staticFriction;
+    out.dynamicFriction = s.dynamicFriction;
+    return out;
+}
+
+void prepareContact(ContactConstraint& c, const ContactData& contact, const RowBody& A, const RowBody& B) {
     const Manifold& m = contact.manifold;
-    const RowSide sideA = rowSide(A), sideB = rowSide(B);
+    const RowSide& sideA = A.side;
+    const RowSide& sideB = B.side;
     c.indexA = sideA.index;
     c.indexB = sideB.index;
     c.invMassA = sideA.invMass;
@@ -57,10 +75,7 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const std:
     c.dynamicFriction = 0.5 * (A.dynamicFriction + B.dynamicFriction);
     c.normal = m.normal;
     c.pointCount = m.pointCount;
-    auto acceleration = [&](const BodyData& b, bool moves) -> Vec2 {
-        return moves ? Vec2(b.gravityFactor() * gravity + b.invMass * b.force) : Vec2::Zero();
-    };
-    c.normalAcceleration = c.normal.dot(acceleration(B, sideB.moves) - acceleration(A, sideA.moves));
+    c.normalAcceleration = c.normal.dot(B.acceleration - A.acceleration);
     c.tangentImpulse = 0.0;
     c.sliding = contact.sliding;
     Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();

@@ -74,6 +74,7 @@ void WorldImpl::solve() {
         bodyColours.assign(n, 0);
         constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColours) - 1;
         constraintColour.assign(awakeContacts.size(), -1);
+        rowRefs.resize(awakeContacts.size());
         for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
             const ContactData& c = contacts[awakeContacts[k]];
             if (c.manifold.pointCount == 0) continue;
@@ -94,6 +95,7 @@ void WorldImpl::solve() {
                 if (usedB) *usedB |= std::uint32_t{1} << colour;
             }
             constraintColour[k] = colour;
+            rowRefs[k] = {awakeContacts[k], A.awakeIndex, B.awakeIndex};
             if (byIsland) joinBodies(A.awakeIndex, B.awakeIndex);
             ++rowCount;
         }
@@ -115,26 +117,19 @@ void WorldImpl::solve() {
     if (rowCount > 0 || !jointConstraints.empty()) {
         StageTimer timer(profile, Stage::Solve);
         // Rows sorted by group, then colour (then the overflow), each in the awake contacts' order.
-        auto groupOfRow = [&](const ContactData& c) {
-            const std::int32_t a = bodies[c.a].awakeIndex;
-            return bodyGroup[static_cast<std::size_t>(a != kNullIndex ? a : bodies[c.b].awakeIndex)];
+        auto segmentOf = [&](std::size_t k) {
+            const RowRef& r = rowRefs[k];
+            return bodyGroup[static_cast<std::size_t>(r.indexA != kNullIndex ? r.indexA : r.indexB)] * kSegments +
+                   static_cast<std::size_t>(constraintColour[k]);
         };
         segmentStart.assign(groups * kSegments + 1, 0);
-        for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
-            if (constraintColour[k] < 0) continue;
-            const std::size_t segment = groupOfRow(contacts[awakeContacts[k]]) * kSegments +
-                                        static_cast<std::size_t>(constraintColour[k]);
-            ++segmentStart[segment + 1];
-        }
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k)
+            if (constraintColour[k] >= 0) ++segmentStart[segmentOf(k) + 1];
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) segmentStart[s + 1] += segmentStart[s];
         rowContacts.resize(rowCount);
         segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
-        for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
-            if (constraintColour[k] < 0) continue;
-            const ContactData& c = contacts[awakeContacts[k]];
-            const std::size_t segment = groupOfRow(c) * kSegments + static_cast<std::size_t>(constraintColour[k]);
-            rowContacts[segmentFill[segment]++] = awakeContacts[k];
-        }
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k)
+            if (constraintColour[k] >= 0) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).
         blockStart.assign(groups * kSegments + 1, 0);
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) {
@@ -289,7 +284,11 @@ void WorldImpl::startBody(std::size_t i) {
     sim.angle0 = b.angle;
     sim.acceleration = dynamic ? Vec2(b.gravityFactor() * settings.gravity + b.invMass * b.force) : Vec2::Zero();
     sim.angularAcceleration = dynamic ? b.invInertia * b.torque : 0.0;
+    sim.invMass = dynamic ? b.invMass : 0.0;
     sim.invInertia = dynamic ? b.invInertia : 0.0;
+    sim.restitution = b.restitution;
+    sim.staticFriction = b.staticFriction;
+    sim.dynamicFriction = b.dynamicFriction;
     sim.body = awake[i];
     sim.dynamic = dynamic;
     sim.turns = rowSide(b).turns;
@@ -328,9 +327,12 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
         const int lanes = static_cast<int>(blockRows[b].count);
         startBlock(block, contactCold[b], lanes);
         for (int lane = 0; lane < lanes; ++lane) {
+            const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
+            const ContactData& contact = contacts[ref.contact];
             ContactConstraint row;
-            row.contact = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
-            prepareContact(row, contacts[row.contact], bodies, settings.gravity);
+            row.contact = ref.contact;
+            prepareContact(row, contact, rowBody(ref.indexA, sims.data(), bodies[contact.a]),
+                           rowBody(ref.indexB, sims.data(), bodies[contact.b]));
             setRow(block, contactCold[b], lane, row);
             turning += row.turns ? 1 : 0;
         }

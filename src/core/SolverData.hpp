@@ -21,6 +21,12 @@ struct SolverBody {
     Rotation dq{};            // rotation since the step began
 };
 
+/// A contact row before preparation: its contact and its bodies' awake indices (kNullIndex: static or asleep).
+struct RowRef {
+    std::uint32_t contact = 0;
+    std::int32_t indexA = kNullIndex, indexB = kNullIndex;
+};
+
 /// The velocity the solve pass's soft push-out has given a body in the present substep (m/s, rad/s), kept apart
 /// so that a bounce is planned without it: a bounce must answer how the bodies met, not how fast an overlap with a
 /// third body is being pushed out (the relax pass takes that back). Valid while `substep` is the present one.
@@ -30,14 +36,18 @@ struct PushVelocity {
     int substep = -1;
 };
 
-/// Read by integration and finalization only.
+/// Read by row preparation, integration and finalization: what they need of an awake body's record, copied once
+/// per step into the solver's order, so that preparing a row reads two bodies' lines here instead of scattered
+/// lines of their records.
 struct SolverBodySim {
     Vec2 center0 = Vec2::Zero();   // centre of mass at the step's start, m
     Rotation q0{};                 // rotation at the step's start
     double angle0 = 0.0;           // rad
-    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces, constant over the step
+    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces, constant over the step; 0 unless dynamic
     double angularAcceleration = 0.0;  // rad/s^2
-    double invInertia = 0.0;
+    double invMass = 0.0;          // 1/kg; 0 unless dynamic
+    double invInertia = 0.0;       // 0 unless dynamic
+    double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
     std::uint32_t body = 0;        // slot in World::bodies_
     bool dynamic = false;
     bool turns = false;            // it can turn this step (free to, or spinning): else no rotation work at all

@@ -87,7 +87,7 @@ struct WorldImpl {
     std::vector<std::uint32_t> groupBodies;      // awake indices, group by group
     std::vector<std::uint32_t> groupBodyStart;   // group g's bodies: [groupBodyStart[g], groupBodyStart[g + 1])
     std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise
-    std::vector<std::uint32_t> rowContacts;      // the contact of each row, segment by segment
+    std::vector<RowRef> rowContacts;             // the contact of each row, segment by segment
     std::vector<std::uint32_t> segmentStart;     // rows of segment s: [segmentStart[s], segmentStart[s + 1])
     std::vector<ContactBlock> contactBlocks;     // the rows, kLanes to a block (an overflow row alone)
     std::vector<ContactBlockCold> contactCold;   // the rest of each block's rows
@@ -97,6 +97,7 @@ struct WorldImpl {
     ContactPass contactPassSettings;             // this step's pass constants
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
+    std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
     std::vector<JointConstraint> jointConstraints;  // group by group
     std::vector<JointConstraint> groupedJoints;
     std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
