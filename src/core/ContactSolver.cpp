@@ -38,7 +38,19 @@ inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const
 
 }  // namespace
 
-RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record) {
+namespace {
+
+// What a row needs of one of its bodies for a step.
+struct RowBody {
+    RowSide side;
+    Vec2 center = Vec2::Zero();        // centre of mass, m
+    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces; 0 unless it moves
+    double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
+};
+
+// From the solver's copy of an awake body (index >= 0) or, for a static or sleeping one, from its record.
+// Inlined into prepareRow, so the fields go to registers, not through memory.
+[[gnu::always_inline]] inline RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record) {
     RowBody out;
     if (index == kNullIndex) {  // static or asleep: immovable, no acceleration
         out.side = rowSide(record);
@@ -58,7 +70,8 @@ RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& r
     return out;
 }
 
-void prepareContact(ContactConstraint& c, const ContactData& contact, const RowBody& A, const RowBody& B) {
+[[gnu::always_inline]] inline void prepareContact(ContactConstraint& c, const ContactData& contact, const RowBody& A,
+                                                  const RowBody& B) {
     const Manifold& m = contact.manifold;
     const RowSide& sideA = A.side;
     const RowSide& sideB = B.side;
@@ -118,6 +131,18 @@ void prepareContact(ContactConstraint& c, const ContactData& contact, const RowB
     c.tangentMass = massAlong(c, c.frictionAnchorA, c.frictionAnchorB, perp(c.normal));
     c.rtA = cross(c.frictionAnchorA, perp(c.normal));
     c.rtB = cross(c.frictionAnchorB, perp(c.normal));
+}
+
+}  // namespace
+
+bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, std::uint32_t contactIndex,
+                const ContactData& contact, std::int32_t indexA, std::int32_t indexB, const SolverBodySim* sims,
+                const BodyData& recordA, const BodyData& recordB) {
+    ContactConstraint c;
+    c.contact = contactIndex;
+    prepareContact(c, contact, rowBody(indexA, sims, recordA), rowBody(indexB, sims, recordB));
+    setRow(block, cold, k, c);
+    return c.turns;
 }
 
 namespace {

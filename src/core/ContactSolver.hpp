@@ -123,18 +123,12 @@ ContactConstraint row(const ContactBlock& block, const ContactBlockCold& cold, i
 /// Readies a block for `lanes` rows: its marks cleared, the lanes from `lanes` on empty rows; setRow fills the rest.
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes);
 
-/// What a row needs of one of its bodies for a step.
-struct RowBody {
-    RowSide side;
-    Vec2 center = Vec2::Zero();        // centre of mass, m
-    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces; 0 unless it moves
-    double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
-};
-/// From the solver's copy of an awake body (index >= 0) or, for a static or sleeping one, from its record.
-RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record);
-
-/// Fills c from its contact's manifold and its bodies (lever arms at the centres of mass).
-void prepareContact(ContactConstraint& c, const ContactData& contact, const RowBody& A, const RowBody& B);
+/// Prepares the row of `contact` (its slot in the world's contacts: `contactIndex`) into lane k of the block, from
+/// its manifold and its bodies (lever arms at the centres of mass): an awake side (index >= 0) from the solver's
+/// copy in sims, a static or sleeping one (kNullIndex) from its record. Returns whether a body of the row turns.
+bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, std::uint32_t contactIndex,
+                const ContactData& contact, std::int32_t indexA, std::int32_t indexB, const SolverBodySim* sims,
+                const BodyData& recordA, const BodyData& recordB);
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");

@@ -27,6 +27,8 @@ constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
 // contact that preparation reads, a cache line at a time.
 constexpr std::size_t kPrefetchBlocks = 2;
 constexpr std::size_t kCacheLine = 64;  // bytes
+// Colouring asks for the bodies of the contact this far ahead, and for that contact twice as far ahead.
+constexpr std::size_t kPrefetchContacts = 8;
 // Islands are solved in groups of about this many bodies: a group's rows (~260 bytes each, two or three per body)
 // and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
@@ -81,6 +83,14 @@ void WorldImpl::solve() {
         constraintColour.assign(awakeContacts.size(), -1);
         rowRefs.resize(awakeContacts.size());
         for (std::size_t k = 0; k < awakeContacts.size(); ++k) {
+            // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead.
+            if (k + 2 * kPrefetchContacts < awakeContacts.size())
+                __builtin_prefetch(&contacts[awakeContacts[k + 2 * kPrefetchContacts]]);
+            if (k + kPrefetchContacts < awakeContacts.size()) {
+                const ContactData& ahead = contacts[awakeContacts[k + kPrefetchContacts]];
+                __builtin_prefetch(&bodies[ahead.a].awakeIndex);
+                __builtin_prefetch(&bodies[ahead.b].awakeIndex);
+            }
             const ContactData& c = contacts[awakeContacts[k]];
             if (c.manifold.pointCount == 0) continue;
             const BodyData& A = bodies[c.a];
@@ -344,12 +354,9 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
         for (int lane = 0; lane < lanes; ++lane) {
             const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
             const ContactData& contact = contacts[ref.contact];
-            ContactConstraint row;
-            row.contact = ref.contact;
-            prepareContact(row, contact, rowBody(ref.indexA, sims.data(), bodies[contact.a]),
-                           rowBody(ref.indexB, sims.data(), bodies[contact.b]));
-            setRow(block, contactCold[b], lane, row);
-            turning += row.turns ? 1 : 0;
+            const bool turns = prepareRow(block, contactCold[b], lane, ref.contact, contact, ref.indexA, ref.indexB,
+                                          sims.data(), bodies[contact.a], bodies[contact.b]);
+            turning += turns ? 1 : 0;
         }
     }
     return turning;
