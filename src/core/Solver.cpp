@@ -29,6 +29,8 @@ constexpr std::size_t kPrefetchBlocks = 2;
 constexpr std::size_t kCacheLine = 64;  // bytes
 // Colouring asks for the bodies of the contact this far ahead, and for that contact twice as far ahead.
 constexpr std::size_t kPrefetchContacts = 8;
+// Gathering and writing back bodies asks for the record of the body this far ahead in the group.
+constexpr std::size_t kPrefetchBodies = 4;
 // Islands are solved in groups of about this many bodies: a group's rows (~260 bytes each, two or three per body)
 // and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
@@ -379,6 +381,20 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
             for (std::size_t k = begin; k < end; ++k) f(bodyList[k]);
         });
     };
+    // The same over the bodies' records, asking for each whole record a few bodies ahead: a group lists its
+    // bodies island by island, not in memory order.
+    auto forRecords = [&](auto&& f) {
+        executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t k = begin; k < end; ++k) {
+                if (k + kPrefetchBodies < end) {
+                    const BodyData& ahead = bodies[awake[bodyList[k + kPrefetchBodies]]];
+                    for (std::size_t line = 0; line < sizeof(BodyData); line += kCacheLine)
+                        __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + line);
+                }
+                f(bodyList[k]);
+            }
+        });
+    };
     // One pass over the group's rows: joints, then colour by colour (in parallel within a colour), then the
     // overflow. rowsWork(begin, end) over blocks; jointWork(row, joint) for each joint.
     auto pass = [&](auto&& rowsWork, auto&& jointWork) {
@@ -394,7 +410,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     };
     {
         auto timer = stage(Stage::Forces);
-        forBodies([&](std::size_t i) { startBody(i); });
+        forRecords([&](std::size_t i) { startBody(i); });
     }
     // The group's rows are prepared here and their impulses stored at the end, so that its blocks go from being
     // written to their last pass without leaving the cache.
@@ -459,7 +475,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     }
     {
         auto timer = stage(Stage::Integrate);
-        forBodies([&](std::size_t i) { finishBody(i); });
+        forRecords([&](std::size_t i) { finishBody(i); });
     }
     return turningRows.load();
 }
