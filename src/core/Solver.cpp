@@ -36,6 +36,16 @@ constexpr std::size_t kPrefetchBodies = 4;
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
 constexpr std::size_t kGroupBodies = 256;
 
+// The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
+int impactPoint(const ContactBlockCold::Lane& row, double threshold) {
+    int fastest = -1;
+    for (int p = 0; p < row.pointCount; ++p)
+        if (row.engaged[p] && -row.relativeVelocity[p] > threshold &&
+            (fastest < 0 || row.relativeVelocity[p] < row.relativeVelocity[fastest]))
+            fastest = p;
+    return fastest;
+}
+
 class StageTimer {
 public:
     StageTimer(StepProfile& profile, Stage stage) : profile_(profile), stage_(stage) {}
@@ -157,6 +167,7 @@ void WorldImpl::solve() {
         }
         contactBlocks.resize(blockRows.size());  // each group fills its own (solveGroup), every lane of them
         contactCold.resize(blockRows.size());
+        rowImpact.resize(blockRows.size() * kLanes);  // each group sets its rows' lanes
         // Joint rows sorted by group, each group's in the joints' order.
         groupJointStart.assign(groups + 1, 0);
         auto groupOfJoint = [&](const JointConstraint& row) {
@@ -203,19 +214,15 @@ void WorldImpl::solve() {
     const ContactBlockCold* const cold = contactCold.data();
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        // Impacts, in row order (deterministic): the fastest meeting point of each contact above the threshold.
+        // Impacts, in row order (deterministic); each group found its rows' (impactPoint).
         for (std::size_t b = 0; b < contactBlocks.size(); ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
+                const int point = rowImpact[b * kLanes + lane];
+                if (point < 0) continue;
                 const ContactBlockCold::Lane& c = cold[b].lanes[lane];
-                int fastest = -1;
-                for (int p = 0; p < c.pointCount; ++p)
-                    if (c.engaged[p] && -c.relativeVelocity[p] > settings.impactSpeedThreshold &&
-                        (fastest < 0 || c.relativeVelocity[p] < c.relativeVelocity[fastest]))
-                        fastest = p;
-                if (fastest < 0) continue;
                 const Manifold& m = contacts[c.contact].manifold;
-                events.impacts.push_back({m.bodyA, m.bodyB, m.points[fastest].point, m.normal,
-                                          -c.relativeVelocity[fastest]});
+                events.impacts.push_back(
+                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, -c.relativeVelocity[point]});
             }
     }
 
@@ -467,10 +474,14 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     }
     if (blockCount > 0) {
         auto timer = stage(Stage::Solve);
+        const double impactSpeed = settings.impactSpeedThreshold;
         executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t b = firstBlock + begin; b < firstBlock + end; ++b)
-                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane)
-                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[cold[b].lanes[lane].contact]);
+                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
+                    const ContactBlockCold::Lane& row = cold[b].lanes[lane];
+                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[row.contact]);
+                    rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(impactPoint(row, impactSpeed));
+                }
         });
     }
     {

@@ -93,6 +93,7 @@ struct WorldImpl {
     std::vector<ContactBlockCold> contactCold;   // the rest of each block's rows
     std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
+    std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
     std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
     ContactPass contactPassSettings;             // this step's pass constants
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
