@@ -36,6 +36,11 @@ constexpr std::size_t kPrefetchBodies = 4;
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
 constexpr std::size_t kGroupBodies = 256;
 
+// Asks for the `bytes` from p, a cache line at a time.
+void prefetchLines(const void* p, std::size_t bytes) {
+    for (std::size_t line = 0; line < bytes; line += kCacheLine) __builtin_prefetch(static_cast<const char*>(p) + line);
+}
+
 // The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
 int impactPoint(const ContactBlockCold::Lane& row, double threshold) {
     int fastest = -1;
@@ -214,7 +219,7 @@ void WorldImpl::solve() {
     const ContactBlockCold* const cold = contactCold.data();
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
-        // Impacts, in row order (deterministic); each group found its rows' (impactPoint).
+        // Impacts, in row order (deterministic); each group's store pass found its rows' points (impactPoint).
         for (std::size_t b = 0; b < contactBlocks.size(); ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
                 const int point = rowImpact[b * kLanes + lane];
@@ -354,11 +359,8 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
         // are no longer in the cache by now.
         if (b + kPrefetchBlocks < end) {
             const BlockRows& ahead = blockRows[b + kPrefetchBlocks];
-            for (std::uint32_t r = ahead.first; r < ahead.first + ahead.count; ++r) {
-                const char* const p = reinterpret_cast<const char*>(&contacts[rowContacts[r].contact]);
-                for (std::size_t line = 0; line < offsetof(ContactData, prev); line += kCacheLine)
-                    __builtin_prefetch(p + line);
-            }
+            for (std::uint32_t r = ahead.first; r < ahead.first + ahead.count; ++r)
+                prefetchLines(&contacts[rowContacts[r].contact], offsetof(ContactData, prev));
         }
         for (int lane = 0; lane < lanes; ++lane) {
             const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
@@ -393,11 +395,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     auto forRecords = [&](auto&& f) {
         executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
             for (std::size_t k = begin; k < end; ++k) {
-                if (k + kPrefetchBodies < end) {
-                    const BodyData& ahead = bodies[awake[bodyList[k + kPrefetchBodies]]];
-                    for (std::size_t line = 0; line < sizeof(BodyData); line += kCacheLine)
-                        __builtin_prefetch(reinterpret_cast<const char*>(&ahead) + line);
-                }
+                if (k + kPrefetchBodies < end)
+                    prefetchLines(&bodies[awake[bodyList[k + kPrefetchBodies]]], sizeof(BodyData));
                 f(bodyList[k]);
             }
         });
