@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (the 'fuzz' preset: clang, ASan + UBSan) and runs each for a while.
-#   scripts/fuzz.sh [SECONDS]   each target runs SECONDS (default 60); exit 1 on any crash or sanitizer report.
-# The targets run side by side (one core each), so the whole run takes SECONDS, not twice that.
+# Builds the libFuzzer targets (the 'fuzz' preset: clang, ASan + UBSan) and runs each for a while, then runs the
+# core tests as clang built them (the other presets build with GCC; the two compilers read our code differently).
+#   scripts/fuzz.sh [SECONDS]   each target runs SECONDS (default 60); exit 1 on any crash, sanitizer report or
+#                               failed test.
+# The targets run side by side (one core each), so the fuzzing takes SECONDS, not twice that.
 # A crashing input is left in build/fuzz/ (crash-*); replay it with build/fuzz/tests/fuzz/fuzz_<target> FILE and
 # keep it as a regression case in tests/core/StabilityFuzzTest.cpp.
 set -euo pipefail
@@ -31,4 +33,6 @@ for i in "${!targets[@]}"; do
     tail -n 60 "$log" >&2
   fi
 done
+physim_log "core tests, built by clang with ASan + UBSan"
+ctest --test-dir build/fuzz -L '^physim_core_tests$' -j "$(physim_jobs)" --output-on-failure || failed=1
 exit "$failed"

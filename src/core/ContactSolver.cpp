@@ -285,19 +285,24 @@ struct WideSide {
     d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 }
 
-// A body record's two 32-byte halves, (v, w, dAngle) and (dp, dq), each moved whole as four lanes. The access type
-// may alias doubles (GCC and Clang define it, as their own intrinsics do) and needs only a double's alignment.
-using RecordHalf = double __attribute__((vector_size(sizeof(Wide)), may_alias, aligned(alignof(double))));
+// A body record's two 32-byte halves, (v, w, dAngle) and (dp, dq), each moved whole as four lanes. Records are
+// only a double's alignment apart (a vector's heap block may start 16 bytes past a 32-byte boundary).
 static_assert(sizeof(SolverBody) == 2 * sizeof(Wide) && offsetof(SolverBody, w) == 2 * sizeof(double) &&
                   offsetof(SolverBody, dAngle) == 3 * sizeof(double) && offsetof(SolverBody, dp) == sizeof(Wide) &&
                   offsetof(SolverBody, dq) == sizeof(Wide) + 2 * sizeof(double),
               "a SolverBody is (v, w, dAngle) then (dp, dq), four doubles each");
 
+// The access type may alias doubles and asks for no alignment (packed): GCC and Clang then load and store it whole
+// with unaligned moves.
+struct [[gnu::packed, gnu::may_alias]] RecordHalf {
+    Wide values;
+};
+
 [[gnu::always_inline]] inline Wide loadHalf(const SolverBody& s, int half) {
-    return reinterpret_cast<const RecordHalf*>(&s)[half];
+    return reinterpret_cast<const RecordHalf*>(&s)[half].values;
 }
 [[gnu::always_inline]] inline void storeVelocityHalf(SolverBody& s, const Wide& values) {
-    *reinterpret_cast<RecordHalf*>(&s) = values;
+    reinterpret_cast<RecordHalf*>(&s)->values = values;
 }
 
 // The lanes' bodies: each record's halves loaded whole and transposed. index kNullIndex reads states[-1], a still
