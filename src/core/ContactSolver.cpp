@@ -573,7 +573,7 @@ template <bool Bias>
     else solveLoopWith<false>(begin, end, cold, states, pass);
 }
 
-// The same loops built for baseline x86-64 and for AVX2 (Wide.hpp).
+// The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop(begin, end, states);
 }
@@ -589,27 +589,44 @@ PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactB
                                 const ContactPass& pass) {
     solveLoop(begin, end, cold, states, pass);
 }
+PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                    SolverBody* states, const ContactPass& pass) {
+    solveLoop(begin, end, cold, states, pass);
+}
 #endif
 
-bool useAvx2(WideCode code) {
-    return PHYSIM_HAS_AVX2_CODE && (code == WideCode::Avx2 || (code == WideCode::Best && avx2CodeRuns()));
+// The build a pass runs: the one named, or for Best the widest this processor runs.
+WideCode pick(WideCode code) {
+    if (code != WideCode::Best) return code;
+    if (avx512CodeRuns()) return WideCode::Avx512;
+    if (avx2CodeRuns()) return WideCode::Avx2;
+    return WideCode::Baseline;
 }
 
 }  // namespace
 
-void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, [[maybe_unused]] WideCode code) {
+void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
+    switch (pick(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    if (useAvx2(code)) return warmStartAvx2(begin, end, states);
+    case WideCode::Avx512: return warmStartAvx512(begin, end, states);
+    case WideCode::Avx2: return warmStartAvx2(begin, end, states);
 #endif
-    warmStartBaseline(begin, end, states);
+    default: return warmStartBaseline(begin, end, states);
+    }
 }
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, [[maybe_unused]] WideCode code) {
+                   const ContactPass& pass, WideCode code) {
+    switch (pick(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    if (useAvx2(code)) return solveAvx2(begin, end, cold, states, pass);
+    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
+    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass);
 #endif
-    solveBaseline(begin, end, cold, states, pass);
+    default: return solveBaseline(begin, end, cold, states, pass);
+    }
 }
 
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {

@@ -132,7 +132,7 @@ bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, std::uint32_
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");
-/// `code` picks the loops' build; WideCode::Avx2 only where avx2CodeRuns().
+/// `code` picks the loops' build; WideCode::Avx2 only where avx2CodeRuns(), WideCode::Avx512 where avx512CodeRuns().
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code = WideCode::Best);
 /// What one pass over the rows needs.
 struct ContactPass {

@@ -2,24 +2,30 @@
 // Four lanes of doubles, for solving four contact rows of one colour at once (they share no dynamic body, so the
 // lanes are independent). GCC vector extensions, which Clang has too: each operation is the scalar one, lane by
 // lane, rounded the same way (the build turns floating-point contraction off), so a lane gives bit for bit what the
-// scalar formula gives. The loops that use them are built twice, for baseline x86-64 (SSE2, which has neither
-// four-double registers nor 64-bit lane compares: the compiler splits each operation) and for AVX2, and the
-// processor picks (WideCode). Both give the same bits: contraction stays off, and AVX2 alone adds no fused
-// multiply-add. Internal.
+// scalar formula gives. The loops that use them are built three times, and the processor picks (WideCode):
+//   - baseline x86-64 (SSE2, which has neither four-double registers nor 64-bit lane compares: the compiler splits
+//     each operation);
+//   - AVX2: one 256-bit register per four lanes;
+//   - AVX-512 (F, VL, DQ): the same four lanes in 256-bit registers, but 32 of them instead of 16, so a block's
+//     bodies and row values stay in registers instead of spilling (measured: docs/performance.md). Eight-lane
+//     blocks in 512-bit registers measured slower (same place).
+// All give the same bits: contraction stays off, and neither AVX2 nor AVX-512 adds a fused multiply-add. Internal.
 
 #include <cstdint>
 
 namespace physim {
 
 /// Which build of the four-lane loops runs: the best this processor has, or one named (tests compare them).
-enum class WideCode { Best, Baseline, Avx2 };
+enum class WideCode { Best, Baseline, Avx2, Avx512 };
 
 #if defined(__GNUC__) && defined(__x86_64__)  // GCC and Clang
 #define PHYSIM_HAS_AVX2_CODE 1
 #define PHYSIM_AVX2_CODE __attribute__((target("avx2")))
+#define PHYSIM_AVX512_CODE __attribute__((target("avx2,avx512f,avx512vl,avx512dq")))
 #else
 #define PHYSIM_HAS_AVX2_CODE 0
 #define PHYSIM_AVX2_CODE
+#define PHYSIM_AVX512_CODE
 #endif
 
 /// Whether the AVX2 build exists and this processor runs it.
@@ -28,6 +34,20 @@ inline bool avx2CodeRuns() {
     static const bool runs = [] {
         __builtin_cpu_init();
         return __builtin_cpu_supports("avx2") != 0;
+    }();
+    return runs;
+#else
+    return false;
+#endif
+}
+
+/// Whether the AVX-512 build exists (with the AVX2 one) and this processor runs it.
+inline bool avx512CodeRuns() {
+#if PHYSIM_HAS_AVX2_CODE
+    static const bool runs = [] {
+        __builtin_cpu_init();
+        return avx2CodeRuns() && __builtin_cpu_supports("avx512f") != 0 && __builtin_cpu_supports("avx512vl") != 0 &&
+               __builtin_cpu_supports("avx512dq") != 0;
     }();
     return runs;
 #else

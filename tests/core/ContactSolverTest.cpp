@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <random>
+#include <string>
 #include <vector>
 
 namespace physim {
@@ -229,12 +230,15 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
     EXPECT_GT(slid, 100);
 }
 
-#if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in both builds
-// Against the AVX2 loops where the processor runs them; elsewhere against what the step's dispatch picks there
-// (WideCode::Best), which must then be the baseline loops, run without a fault and with the same bits.
-TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
-    const WideCode other = avx2CodeRuns() ? WideCode::Avx2 : WideCode::Best;
-    RecordProperty("compared_with", avx2CodeRuns() ? "avx2" : "dispatch (no avx2 on this processor)");
+#if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in all three builds
+// Each build this processor runs against the baseline, and so is what the step's dispatch picks (WideCode::Best):
+// on a processor without AVX2 that is the baseline loops, which must then run without a fault.
+TEST(ContactSolver, EveryBuildOfTheLoopsGivesTheSameBits) {
+    std::vector<WideCode> others{WideCode::Best};
+    std::string compared = "dispatch";
+    if (avx2CodeRuns()) others.push_back(WideCode::Avx2), compared += ", avx2";
+    if (avx512CodeRuns()) others.push_back(WideCode::Avx512), compared += ", avx512";
+    RecordProperty("compared_with", compared);
     std::mt19937 rng(5);
     int met = 0, slid = 0;
     for (int trial = 0; trial < 300; ++trial) {
@@ -250,17 +254,25 @@ TEST(ContactSolver, BaselineAndAvx2LoopsGiveTheSameBits) {
                 for (const SolverBody& s : randomStates(rng, 2, turning)) start.push_back(s);
             }
         }
-        std::vector<ContactBlock> avx2 = baseline;
-        std::vector<ContactBlockCold> avx2Cold = baselineCold;
-        std::vector<SolverBody> baselineStates = start, avx2States = start;
-        std::vector<PushVelocity> baselinePushes(start.size()), avx2Pushes(start.size());
+        const std::vector<ContactBlock> initial = baseline;
+        const std::vector<ContactBlockCold> initialCold = baselineCold;
+        std::vector<SolverBody> baselineStates = start;
+        std::vector<PushVelocity> baselinePushes(start.size());
         run(baseline, baselineCold, baselineStates, baselinePushes, WideCode::Baseline);
-        run(avx2, avx2Cold, avx2States, avx2Pushes, other);
-        for (std::size_t i = 0; i < start.size(); ++i) expectSameBody(baselineStates[i], avx2States[i], trial);
+        for (const WideCode code : others) {
+            std::vector<ContactBlock> blocks = initial;
+            std::vector<ContactBlockCold> cold = initialCold;
+            std::vector<SolverBody> states = start;
+            std::vector<PushVelocity> pushes(start.size());
+            run(blocks, cold, states, pushes, code);
+            for (std::size_t i = 0; i < start.size(); ++i) expectSameBody(baselineStates[i], states[i], trial);
+            for (int b = 0; b < 2; ++b)
+                for (int k = 0; k < kLanes; ++k)
+                    expectSameRow(row(baseline[b], baselineCold[b], k), row(blocks[b], cold[b], k), trial);
+        }
         for (int b = 0; b < 2; ++b)
             for (int k = 0; k < kLanes; ++k) {
                 const ContactConstraint x = row(baseline[b], baselineCold[b], k);
-                expectSameRow(x, row(avx2[b], avx2Cold[b], k), trial);
                 for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
                 slid += x.sliding ? 1 : 0;
             }
