@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 
 namespace physim {
@@ -36,9 +37,13 @@ constexpr std::size_t kPrefetchBodies = 4;
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
 constexpr std::size_t kGroupBodies = 256;
 
-// Asks for the `bytes` from p, a cache line at a time.
+// Asks for every cache line that holds some of the `bytes` from p (records are not line-aligned: a record of n
+// lines may span n + 1).
 void prefetchLines(const void* p, std::size_t bytes) {
-    for (std::size_t line = 0; line < bytes; line += kCacheLine) __builtin_prefetch(static_cast<const char*>(p) + line);
+    const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(p) & ~std::uintptr_t{kCacheLine - 1};
+    const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(p) + bytes;
+    for (std::uintptr_t line = first; line < end; line += kCacheLine)
+        __builtin_prefetch(reinterpret_cast<const void*>(line));
 }
 
 // The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
@@ -360,7 +365,7 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
         if (b + kPrefetchBlocks < end) {
             const BlockRows& ahead = blockRows[b + kPrefetchBlocks];
             for (std::uint32_t r = ahead.first; r < ahead.first + ahead.count; ++r)
-                prefetchLines(&contacts[rowContacts[r].contact], offsetof(ContactData, prev));
+                prefetchLines(&contacts[rowContacts[r].contact], offsetof(ContactData, cache));
         }
         for (int lane = 0; lane < lanes; ++lane) {
             const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
