@@ -286,7 +286,7 @@ struct WideSide {
 }
 
 // A body record's two 32-byte halves, (v, w, dAngle) and (dp, dq), each moved whole as four lanes. Records are
-// only a double's alignment apart (a vector's heap block may start 16 bytes past a 32-byte boundary).
+// only 16-byte aligned (a vector's heap block may start 16 bytes past a 32-byte boundary).
 static_assert(sizeof(SolverBody) == 2 * sizeof(Wide) && offsetof(SolverBody, w) == 2 * sizeof(double) &&
                   offsetof(SolverBody, dAngle) == 3 * sizeof(double) && offsetof(SolverBody, dp) == sizeof(Wide) &&
                   offsetof(SolverBody, dq) == sizeof(Wide) + 2 * sizeof(double),

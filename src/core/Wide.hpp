@@ -7,8 +7,8 @@
 //     each operation);
 //   - AVX2: one 256-bit register per four lanes;
 //   - AVX-512 (F, VL, DQ): the same four lanes in 256-bit registers, but 32 of them instead of 16, so a block's
-//     bodies and row values stay in registers instead of spilling (measured: docs/performance.md). Eight-lane
-//     blocks in 512-bit registers measured slower (same place).
+//     bodies and row values stay in registers instead of spilling (measured: docs/performance.md). Eight lanes
+//     in 512-bit registers measured no faster (same place).
 // All give the same bits: contraction stays off, and neither AVX2 nor AVX-512 adds a fused multiply-add. Internal.
 
 #include <cstdint>
