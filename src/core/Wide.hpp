@@ -6,10 +6,11 @@
 //   - baseline x86-64 (SSE2, which has neither four-double registers nor 64-bit lane compares: the compiler splits
 //     each operation);
 //   - AVX2: one 256-bit register per four lanes;
-//   - AVX-512 (F, VL, DQ): the same four lanes in 256-bit registers, but 32 of them instead of 16, so a block's
-//     bodies and row values stay in registers instead of spilling (measured: docs/performance.md). Eight lanes
-//     in 512-bit registers measured no faster (same place).
-// All give the same bits: contraction stays off, and neither AVX2 nor AVX-512 adds a fused multiply-add. Internal.
+//   - AVX-512 (F, VL, DQ): the same four lanes in 256-bit registers, but 32 of them instead of 16, so fewer of a
+//     block's values spill to the stack (docs/performance.md, "Ninth measurement"). Eight lanes in 512-bit
+//     registers measured no faster (same place).
+// All give the same bits because the build turns contraction off (-ffp-contract=off): AVX-512 has fused
+// multiply-add instructions, and only that flag keeps the compiler from using them. Internal.
 
 #include <cstdint>
 

@@ -1,6 +1,6 @@
 // The contact rows are solved kLanes at a time (ContactBlock). Each lane must be exactly the scalar rule on its own
 // row: what shares its block, and which lane it sits in, must not change a single bit; nor may the build of the loops
-// that runs (baseline x86-64 or AVX2), so a scene gives the same bits on any processor. And a block whose bodies
+// that runs (baseline x86-64, AVX2 or AVX-512), so a scene gives the same bits on any processor. And a block whose bodies
 // cannot turn skips the angular terms; those terms are products with zero there, so the lean form must match the
 // full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
 // a time, points that start to push (the bounce path, with and without restitution), sticking and sliding friction.
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <new>
 #include <random>
 #include <string>
 #include <vector>
@@ -114,9 +115,10 @@ void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold,
     std::vector<double> storage((states.size() + 1) * sizeof(SolverBody) / sizeof(double) + 4);
     std::size_t offset = 0;  // in doubles, to the first address that is 16 past a multiple of 32
     while (reinterpret_cast<std::uintptr_t>(storage.data() + offset) % 32 != 16) ++offset;
-    SolverBody* const records = reinterpret_cast<SolverBody*>(storage.data() + offset);
-    std::uninitialized_fill_n(records, 1, SolverBody{});
-    std::uninitialized_copy(states.begin(), states.end(), records + 1);
+    SolverBody* const place = reinterpret_cast<SolverBody*>(storage.data() + offset);
+    std::uninitialized_fill_n(place, 1, SolverBody{});
+    std::uninitialized_copy(states.begin(), states.end(), place + 1);
+    SolverBody* const records = std::launder(place);
     SolverBody* const bodies = records + 1;
     ContactPass pass = substepPass();
     pass.pushes = pushes.data();
