@@ -536,7 +536,9 @@ template <bool Turns, bool Bias>
         const Wide tx = -ny, ty = nx;
         const Wide vt = speedAlong<Turns>(A, B, tx, ty, c.rtA, c.rtB);
         const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
-        const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, -bound, bound);
+        // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a lane's
+        // bits do not depend on whether a neighbour's friction made the block run this path.
+        const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, zero - bound, bound);
         if constexpr (!Bias) {
             const WideMask hasMass = c.tangentMass > 0.0;
             const Wide mass = hasMass ? c.tangentMass : one;

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <new>
 #include <random>
@@ -135,21 +136,44 @@ void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold,
     std::copy(bodies, bodies + states.size(), states.begin());
 }
 
+// The same double, bit for bit: -0.0 and +0.0 differ here, where == calls them equal.
+void expectSameBits(double x, double y, const char* what, int trial) {
+    std::uint64_t a = 0, b = 0;
+    std::memcpy(&a, &x, sizeof a);
+    std::memcpy(&b, &y, sizeof b);
+    EXPECT_EQ(a, b) << what << ": " << x << " against " << y << ", trial " << trial;
+}
+
 void expectSameRow(const ContactConstraint& x, const ContactConstraint& y, int trial) {
     for (int i = 0; i < x.pointCount; ++i) {
-        EXPECT_EQ(x.points[i].normalImpulse, y.points[i].normalImpulse) << "trial " << trial;
+        expectSameBits(x.points[i].normalImpulse, y.points[i].normalImpulse, "normal impulse", trial);
         EXPECT_EQ(x.points[i].engaged, y.points[i].engaged) << "trial " << trial;
-        EXPECT_EQ(x.points[i].relativeVelocity, y.points[i].relativeVelocity) << "trial " << trial;
+        expectSameBits(x.points[i].relativeVelocity, y.points[i].relativeVelocity, "meeting speed", trial);
     }
-    EXPECT_EQ(x.tangentImpulse, y.tangentImpulse) << "trial " << trial;
+    expectSameBits(x.tangentImpulse, y.tangentImpulse, "tangent impulse", trial);
     EXPECT_EQ(x.sliding, y.sliding) << "trial " << trial;
 }
 
 void expectSameBody(const SolverBody& x, const SolverBody& y, int trial) {
-    EXPECT_EQ(x.v, y.v) << "trial " << trial;
-    EXPECT_EQ(x.w, y.w) << "trial " << trial;
-    EXPECT_EQ(x.dp, y.dp) << "trial " << trial;
-    EXPECT_EQ(x.dAngle, y.dAngle) << "trial " << trial;
+    expectSameBits(x.v.x(), y.v.x(), "vx", trial);
+    expectSameBits(x.v.y(), y.v.y(), "vy", trial);
+    expectSameBits(x.w, y.w, "w", trial);
+    expectSameBits(x.dp.x(), y.dp.x(), "dpx", trial);
+    expectSameBits(x.dp.y(), y.dp.y(), "dpy", trial);
+    expectSameBits(x.dAngle, y.dAngle, "dAngle", trial);
+    expectSameBits(x.dq.c, y.dq.c, "dq.c", trial);
+    expectSameBits(x.dq.s, y.dq.s, "dq.s", trial);
+}
+
+// What push-out gave each body in the last substep, the same bit for bit.
+void expectSamePushes(const std::vector<PushVelocity>& x, const std::vector<PushVelocity>& y, int trial) {
+    ASSERT_EQ(x.size(), y.size());
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        expectSameBits(x[i].v.x(), y[i].v.x(), "pushed vx", trial);
+        expectSameBits(x[i].v.y(), y[i].v.y(), "pushed vy", trial);
+        expectSameBits(x[i].w, y[i].w, "pushed w", trial);
+        EXPECT_EQ(x[i].substep, y[i].substep) << "trial " << trial;
+    }
 }
 
 TEST(ContactSolver, EachLaneIsItsOwnRowBitForBit) {
@@ -184,7 +208,11 @@ TEST(ContactSolver, EachLaneIsItsOwnRowBitForBit) {
             const ContactConstraint x = row(together[0], togetherCold[0], k);
             expectSameRow(x, row(alone[0], aloneCold[0], kLanes - 1), trial);
             for (const std::int32_t body : {rows[k].indexA, rows[k].indexB})
-                if (body != kNullIndex) expectSameBody(togetherStates[body], aloneStates[body], trial);
+                if (body != kNullIndex) {
+                    expectSameBody(togetherStates[body], aloneStates[body], trial);
+                    expectSameBits(togetherPushes[body].v.x(), alonePushes[body].v.x(), "pushed vx", trial);
+                    expectSameBits(togetherPushes[body].w, alonePushes[body].w, "pushed w", trial);
+                }
             for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
             slid += x.sliding ? 1 : 0;
             blocked += x.invDet > 0.0 ? 1 : 0;
@@ -216,6 +244,7 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
         std::vector<PushVelocity> leanPushes(leanStates.size()), fullPushes(fullStates.size());
         run(lean, leanCold, leanStates, leanPushes);
         run(full, fullCold, fullStates, fullPushes);
+        expectSamePushes(leanPushes, fullPushes, trial);
         for (std::size_t b = 0; b < leanStates.size(); ++b) {
             expectSameBody(leanStates[b], fullStates[b], trial);
             EXPECT_EQ(fullStates[b].w, 0.0) << "a locked body turned, trial " << trial;
@@ -268,6 +297,7 @@ TEST(ContactSolver, EveryBuildOfTheLoopsGivesTheSameBits) {
             std::vector<PushVelocity> pushes(start.size());
             run(blocks, cold, states, pushes, code);
             for (std::size_t i = 0; i < start.size(); ++i) expectSameBody(baselineStates[i], states[i], trial);
+            expectSamePushes(baselinePushes, pushes, trial);
             for (int b = 0; b < 2; ++b)
                 for (int k = 0; k < kLanes; ++k)
                     expectSameRow(row(baseline[b], baselineCold[b], k), row(blocks[b], cold[b], k), trial);
