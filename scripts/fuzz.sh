@@ -34,5 +34,6 @@ for i in "${!targets[@]}"; do
   fi
 done
 physim_log "core tests, built by clang with ASan + UBSan"
-ctest --test-dir build/fuzz -L '^physim_core_tests$' -j "$(physim_jobs)" --output-on-failure --no-tests=error || failed=1
+ctest --test-dir build/fuzz -L '^physim_core_tests$' -j "$(physim_jobs)" --output-on-failure --no-tests=error \
+  || failed=1
 exit "$failed"

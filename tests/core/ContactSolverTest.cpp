@@ -1,8 +1,8 @@
 // The contact rows are solved kLanes at a time (ContactBlock). Each lane must be exactly the scalar rule on its own
 // row: what shares its block, and which lane it sits in, must not change a single bit; nor may the build of the loops
-// that runs (baseline x86-64, AVX2 or AVX-512), so a scene gives the same bits on any processor. And a block whose bodies
-// cannot turn skips the angular terms; those terms are products with zero there, so the lean form must match the
-// full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
+// that runs (baseline x86-64, AVX2 or AVX-512), so a scene gives the same bits on any processor. And a block whose
+// bodies cannot turn skips the angular terms; those terms are products with zero there, so the lean form must match
+// the full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
 // a time, points that start to push (the bounce path, with and without restitution), sticking and sliding friction.
 
 #include "ContactSolver.hpp"
@@ -165,15 +165,16 @@ void expectSameBody(const SolverBody& x, const SolverBody& y, int trial) {
     expectSameBits(x.dq.s, y.dq.s, "dq.s", trial);
 }
 
-// What push-out gave each body in the last substep, the same bit for bit.
+// What push-out gave a body in the last substep, the same bit for bit.
+void expectSamePush(const PushVelocity& x, const PushVelocity& y, int trial) {
+    expectSameBits(x.v.x(), y.v.x(), "pushed vx", trial);
+    expectSameBits(x.v.y(), y.v.y(), "pushed vy", trial);
+    expectSameBits(x.w, y.w, "pushed w", trial);
+    EXPECT_EQ(x.substep, y.substep) << "trial " << trial;
+}
 void expectSamePushes(const std::vector<PushVelocity>& x, const std::vector<PushVelocity>& y, int trial) {
     ASSERT_EQ(x.size(), y.size());
-    for (std::size_t i = 0; i < x.size(); ++i) {
-        expectSameBits(x[i].v.x(), y[i].v.x(), "pushed vx", trial);
-        expectSameBits(x[i].v.y(), y[i].v.y(), "pushed vy", trial);
-        expectSameBits(x[i].w, y[i].w, "pushed w", trial);
-        EXPECT_EQ(x[i].substep, y[i].substep) << "trial " << trial;
-    }
+    for (std::size_t i = 0; i < x.size(); ++i) expectSamePush(x[i], y[i], trial);
 }
 
 TEST(ContactSolver, EachLaneIsItsOwnRowBitForBit) {
@@ -210,8 +211,7 @@ TEST(ContactSolver, EachLaneIsItsOwnRowBitForBit) {
             for (const std::int32_t body : {rows[k].indexA, rows[k].indexB})
                 if (body != kNullIndex) {
                     expectSameBody(togetherStates[body], aloneStates[body], trial);
-                    expectSameBits(togetherPushes[body].v.x(), alonePushes[body].v.x(), "pushed vx", trial);
-                    expectSameBits(togetherPushes[body].w, alonePushes[body].w, "pushed w", trial);
+                    expectSamePush(togetherPushes[body], alonePushes[body], trial);
                 }
             for (int i = 0; i < x.pointCount; ++i) met += x.points[i].engaged && x.restitution > 0.0 ? 1 : 0;
             slid += x.sliding ? 1 : 0;
