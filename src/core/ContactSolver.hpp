@@ -79,8 +79,9 @@ struct ContactConstraint {
 
 /// kLanes rows of one colour (no two share a dynamic body), field by field, so a pass solves them at once: what
 /// every pass reads. A lane not in use is an empty row (no bodies, no points, zero masses): every pass leaves it as
-/// it is. A one-point row has a second point with zero mass, which never takes an impulse.
-struct alignas(sizeof(Wide)) ContactBlock {
+/// it is. A one-point row has a second point with zero mass, which never takes an impulse. Line-aligned: threads
+/// solve neighbouring blocks, and a line holding the ends of two would pass between their cores on every write.
+struct alignas(64) ContactBlock {
     struct Point {
         Wide rnA, rnB, ndA, ndB, baseSeparation, normalImpulse, normalMass;
     };
@@ -99,8 +100,8 @@ struct alignas(sizeof(Wide)) ContactBlock {
 };
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
-/// stream less memory).
-struct ContactBlockCold {
+/// stream less memory). Line-aligned, like the blocks.
+struct alignas(64) ContactBlockCold {
     struct Lane {
         std::uint32_t contact = 0;
         int pointCount = 0;

@@ -12,8 +12,9 @@
 
 namespace physim {
 
-/// What every constraint pass reads and writes: 64 bytes, one cache line.
-struct SolverBody {
+/// What every constraint pass reads and writes: 64 bytes, aligned to a cache line, so that a record is one line: a
+/// load never spans two, and a record never shares a line with one another thread writes in the same loop.
+struct alignas(64) SolverBody {
     Vec2 v = Vec2::Zero();    // velocity of the centre of mass, m/s
     double w = 0.0;           // rad/s
     double dAngle = 0.0;      // rad turned since the step began (exact sum; dq caches its rotation)

@@ -13,8 +13,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <memory>
-#include <new>
 #include <random>
 #include <string>
 #include <vector>
@@ -108,19 +106,13 @@ std::vector<SolverBody> randomStates(std::mt19937& rng, int count, bool turning)
 }
 
 // Four substeps of warm start, solve and relax over the given blocks. The passes read an immovable side at
-// states[-1]: the records go after a still one. They start 16 bytes past a 32-byte boundary, as a vector's heap
-// block may: the loops may assume no more than that (a build that does faults here).
+// states[-1]: the records go after a still one, as in the world.
 void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold, std::vector<SolverBody>& states,
          std::vector<PushVelocity>& pushes, WideCode code = WideCode::Best) {
-    static_assert(32 % alignof(SolverBody) == 16 % alignof(SolverBody), "a record may start 16 past 32");
-    std::vector<double> storage((states.size() + 1) * sizeof(SolverBody) / sizeof(double) + 4);
-    std::size_t offset = 0;  // in doubles, to the first address that is 16 past a multiple of 32
-    while (reinterpret_cast<std::uintptr_t>(storage.data() + offset) % 32 != 16) ++offset;
-    SolverBody* const place = reinterpret_cast<SolverBody*>(storage.data() + offset);
-    std::uninitialized_fill_n(place, 1, SolverBody{});
-    std::uninitialized_copy(states.begin(), states.end(), place + 1);
-    SolverBody* const records = std::launder(place);
-    SolverBody* const bodies = records + 1;
+    std::vector<SolverBody> records(states.size() + 1);
+    std::copy(states.begin(), states.end(), records.begin() + 1);
+    ASSERT_EQ(reinterpret_cast<std::uintptr_t>(records.data()) % 64, 0u) << "a record is one cache line";
+    SolverBody* const bodies = records.data() + 1;
     ContactPass pass = substepPass();
     pass.pushes = pushes.data();
     for (int sub = 0; sub < 4; ++sub) {
