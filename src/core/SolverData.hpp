@@ -39,20 +39,21 @@ struct PushVelocity {
 
 /// Read by row preparation, integration and finalization: what they need of an awake body's record, copied once
 /// per step into the solver's order, so that preparing a row reads two bodies' lines here instead of scattered
-/// lines of their records.
-struct SolverBodySim {
+/// lines of their records. Two cache lines, aligned to them; what each substep's integration reads is in the first.
+struct alignas(64) SolverBodySim {
+    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces, constant over the step; 0 unless dynamic
+    double angularAcceleration = 0.0;  // rad/s^2
+    bool dynamic = false;
+    bool turns = false;            // it can turn this step (free to, or spinning): else no rotation work at all
+    std::uint32_t body = 0;        // slot in World::bodies_
     Vec2 center0 = Vec2::Zero();   // centre of mass at the step's start, m
     Rotation q0{};                 // rotation at the step's start
     double angle0 = 0.0;           // rad
-    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces, constant over the step; 0 unless dynamic
-    double angularAcceleration = 0.0;  // rad/s^2
     double invMass = 0.0;          // 1/kg; 0 unless dynamic
     double invInertia = 0.0;       // 0 unless dynamic
     double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
-    std::uint32_t body = 0;        // slot in World::bodies_
-    bool dynamic = false;
-    bool turns = false;            // it can turn this step (free to, or spinning): else no rotation work at all
 };
+static_assert(sizeof(SolverBodySim) == 128, "two cache lines");
 
 /// Small-angle rotation by theta (rad): a Taylor series accurate to rounding for |theta| <= 0.2 (the first term
 /// left out, theta^12 / 12!, is below 1e-17 there), and the library functions beyond. Substeps turn bodies by far
