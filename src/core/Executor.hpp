@@ -38,8 +38,8 @@ public:
     int workerSlots() const { return threads_; }
 
     /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n); on one thread, or when n is below two
-    /// grains, a single call fn(0, n, 0). Inside run() the ranges are chunks of `grain` items (the last may be
-    /// shorter) shared by run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
+    /// grains, a single call fn(0, n, 0). Inside run() the ranges are chunks of at most `grain` items of each
+    /// thread's equal share, shared by run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
     /// into ranges of at least half a grain (static partitioner: the loops are short and even, and one task per
     /// thread costs less than stealing finer tasks; docs/performance.md).
     template <class Fn>

@@ -4,9 +4,11 @@
 //
 // One thread drives: it runs the code between loops and, for each loop, publishes it as a numbered stage, takes
 // chunks of it like everyone else, and waits until every chunk is done. The others (helpers, from the thread
-// pool) wait for stages and take chunks. Each member has its own run of chunks and takes from it first, so a
-// body's record tends to stay in one core's cache from one loop to the next; a member that is done takes what
-// is left of the others' runs, so a thread the system holds back delays a loop by at most the chunk it holds.
+// pool) wait for stages and take chunks. Each member has its own run, an equal share of the items (member m's
+// starts at item n m / members), and takes its chunks first, so a body's record tends to stay in one core's cache
+// from one loop to the next: the solver's loops list rows and bodies in about the bodies' order, and equal shares
+// of each split them at about the same body. A member that is done takes what is left of the others' runs, so a
+// thread the system holds back delays a loop by at most the chunk it holds.
 //
 // Nothing ever waits for a particular helper: the driver can take every chunk itself. A helper that starts late
 // joins whatever stage is current, and one that starts after the end returns at once. Which thread runs a chunk
@@ -56,17 +58,19 @@ public:
         const std::uint64_t stage = stage_.load() + 1;
         // Counters first (a helper holding an older stage's number can claim nothing from here on), then the
         // description, then the stage number that lets helpers read it.
-        for (int m = 0; m < members(); ++m)
-            counters_[static_cast<std::size_t>(m)].next.store(stage << 32 | firstChunk(m, chunks));
+        std::size_t total = 0;  // each member's run is an equal share of the items, in chunks of `grain`
+        for (int m = 0; m < members(); ++m) {
+            total += (runBegin(m + 1, n) - runBegin(m, n) + grain - 1) / grain;
+            counters_[static_cast<std::size_t>(m)].next.store(stage << 32);
+        }
         done_.store(0);
         context_.store(const_cast<void*>(static_cast<const void*>(&fn)));
         call_.store(&callChunk<Fn>);
         items_.store(n);
         grain_.store(grain);
-        chunks_.store(chunks);
         stage_.store(stage);
         work(0, stage);
-        for (unsigned spins = 0; done_.load() != chunks; ++spins) pause(spins);
+        for (unsigned spins = 0; done_.load() != total; ++spins) pause(spins);
         inStage_ = false;
         if (failed_.load()) {
             failed_.store(false);
@@ -107,25 +111,27 @@ private:
         (*static_cast<Fn*>(context))(begin, end, member);
     }
 
-    std::uint64_t firstChunk(int member, std::size_t chunks) const {
-        return static_cast<std::uint64_t>(chunks * static_cast<std::size_t>(member) / counters_.size());
+    // The first item of member's run (members() gives n).
+    std::size_t runBegin(int member, std::size_t n) const {
+        return n * static_cast<std::size_t>(member) / counters_.size();
     }
 
     // Takes chunks of `stage`: the member's own run first, then the others' in turn.
     void work(int member, std::uint64_t stage) noexcept {
         void* const context = context_.load();
         const Call call = call_.load();
-        const std::size_t n = items_.load(), grain = grain_.load(), chunks = chunks_.load();
+        const std::size_t n = items_.load(), grain = grain_.load();
         for (int k = 0; k < members(); ++k) {
             const int owner = (member + k) % members();
-            const std::uint64_t end = firstChunk(owner + 1, chunks);
+            const std::size_t first = runBegin(owner, n), last = runBegin(owner + 1, n);
+            const std::uint64_t end = (last - first + grain - 1) / grain;
             std::atomic<std::uint64_t>& next = counters_[static_cast<std::size_t>(owner)].next;
             std::uint64_t taken = next.load();
             while (taken >> 32 == stage && (taken & 0xffffffffu) < end) {
                 if (!next.compare_exchange_weak(taken, taken + 1)) continue;
-                const std::size_t begin = static_cast<std::size_t>(taken & 0xffffffffu) * grain;
+                const std::size_t begin = first + static_cast<std::size_t>(taken & 0xffffffffu) * grain;
                 try {
-                    call(context, begin, std::min(n, begin + grain), member);
+                    call(context, begin, std::min(last, begin + grain), member);
                 } catch (...) {
                     std::lock_guard<std::mutex> lock(errorMutex_);
                     if (!failed_.load()) error_ = std::current_exception();
@@ -150,7 +156,7 @@ private:
     }
 
     struct alignas(64) Counter {
-        std::atomic<std::uint64_t> next{0};  // stage << 32 | the next chunk of this member's run
+        std::atomic<std::uint64_t> next{0};  // stage << 32 | the next chunk of this member's run (0 its first)
     };
     std::vector<Counter> counters_;
     std::thread::id driver_;  // set by start(); no thread drives before it
@@ -158,7 +164,7 @@ private:
     // The stage's description (written by the driver before it publishes the stage number).
     std::atomic<void*> context_{nullptr};
     std::atomic<Call> call_{nullptr};
-    std::atomic<std::size_t> items_{0}, grain_{0}, chunks_{0};
+    std::atomic<std::size_t> items_{0}, grain_{0};
     alignas(64) std::atomic<std::uint64_t> stage_{0};
     alignas(64) std::atomic<std::size_t> done_{0};
     std::atomic<bool> finished_{false};

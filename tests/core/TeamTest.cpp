@@ -14,6 +14,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace physim {
@@ -83,6 +84,21 @@ TEST(Team, DriverAloneFinishesEveryLoop) {
     for (int k = 0; k < 10; ++k) team.forEach(hits.size(), 8, body);
     team.finish();
     for (const int h : hits) EXPECT_EQ(h, 10);
+}
+
+TEST(Team, ChunksStayWithinEqualShares) {
+    // Three members' runs of 100 items are [0, 33), [33, 66), [66, 100): a chunk is at most a grain and never
+    // crosses from one run into the next, so each member's first chunks cover the same part of every loop.
+    Team team(3);
+    team.start();
+    std::vector<std::pair<std::size_t, std::size_t>> chunks;
+    auto body = [&](std::size_t begin, std::size_t end, int) { chunks.emplace_back(begin, end); };
+    team.forEach(100, 16, body);  // no helper: the driver takes every chunk, in order of the runs
+    team.finish();
+    const std::vector<std::pair<std::size_t, std::size_t>> expected = {{0, 16},  {16, 32}, {32, 33}, {33, 49},
+                                                                       {49, 65}, {65, 66}, {66, 82}, {82, 98},
+                                                                       {98, 100}};
+    EXPECT_EQ(chunks, expected);
 }
 
 TEST(Team, NestedLoopRunsInlineOnItsThread) {
