@@ -423,21 +423,29 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         auto timer = stage(Stage::Forces);
         forRecords([&](std::size_t i) { startBody(i); });
     }
-    // The group's rows are prepared here and their impulses stored at the end, so that its blocks go from being
-    // written to their last pass without leaving the cache.
+    // A block is prepared in the step's first pass over the rows, just before its warm start, and its impulses
+    // stored in the last, just after its relax: the thread that solves it in every pass (Team.hpp) writes it first
+    // and reads it last, so it never moves to another core's cache for that.
     const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
     std::atomic<std::size_t> turningRows{0};
-    if (blockCount > 0) {
-        auto timer = stage(Stage::Solve);
-        executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
-            turningRows += prepareBlocks(firstBlock + begin, firstBlock + end);  // one add per chunk
-        });
-    }
+    const double impactSpeed = settings.impactSpeedThreshold;
+    auto storeBlocks = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b)
+            for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
+                const ContactBlockCold::Lane& row = cold[b].lanes[lane];
+                storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[row.contact]);
+                rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(impactPoint(row, impactSpeed));
+            }
+    };
+    const bool storeInRelax = settings.relaxIterations > 0;
     ContactPass contactPass = contactPassSettings;
     contactPass.pushes = pushVelocities.data();
-    auto solvePass = [&](bool useBias) {
+    auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
-        pass([&](std::size_t b, std::size_t e) { solveContacts(blocks + b, blocks + e, cold + b, st, contactPass); },
+        pass([&](std::size_t b, std::size_t e) {
+                 solveContacts(blocks + b, blocks + e, cold + b, st, contactPass);
+                 if (store) storeBlocks(b, e);
+             },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
 
@@ -455,9 +463,12 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         if (anyRows) {
             auto timer = stage(Stage::Solve);
-            pass([&](std::size_t b, std::size_t e) { warmStartContacts(blocks + b, blocks + e, st); },
+            pass([&](std::size_t b, std::size_t e) {
+                     if (sub == 0) turningRows += prepareBlocks(b, e);  // one add per chunk
+                     warmStartContacts(blocks + b, blocks + e, st);
+                 },
                  [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
-            for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true);
+            for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true, false);
         }
         {
             auto timer = stage(Stage::Integrate);
@@ -473,19 +484,14 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         if (anyRows) {
             auto timer = stage(Stage::Solve);
-            for (int it = 0; it < settings.relaxIterations; ++it) solvePass(false);
+            for (int it = 0; it < settings.relaxIterations; ++it)
+                solvePass(false, sub + 1 == substeps && it + 1 == settings.relaxIterations);
         }
     }
-    if (blockCount > 0) {
+    if (blockCount > 0 && !storeInRelax) {
         auto timer = stage(Stage::Solve);
-        const double impactSpeed = settings.impactSpeedThreshold;
         executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t b = firstBlock + begin; b < firstBlock + end; ++b)
-                for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
-                    const ContactBlockCold::Lane& row = cold[b].lanes[lane];
-                    storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[row.contact]);
-                    rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(impactPoint(row, impactSpeed));
-                }
+            storeBlocks(firstBlock + begin, firstBlock + end);
         });
     }
     {
