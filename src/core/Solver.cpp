@@ -6,6 +6,7 @@
 
 #include "Impulse.hpp"
 #include "Joints.hpp"
+#include "Prefetch.hpp"
 #include "WorldImpl.hpp"
 
 #include <algorithm>
@@ -27,7 +28,6 @@ constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
 // Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4), the part of each
 // contact that preparation reads, a cache line at a time.
 constexpr std::size_t kPrefetchBlocks = 2;
-constexpr std::size_t kCacheLine = 64;  // bytes
 // Colouring asks for the bodies of the contact this far ahead, and for that contact twice as far ahead.
 constexpr std::size_t kPrefetchContacts = 8;
 // Gathering and writing back bodies asks for the record of the body this far ahead in the group.
@@ -36,15 +36,6 @@ constexpr std::size_t kPrefetchBodies = 4;
 // and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
 constexpr std::size_t kGroupBodies = 256;
-
-// Asks for every cache line that holds some of the `bytes` from p (records are not line-aligned: a record of n
-// lines may span n + 1).
-void prefetchLines(const void* p, std::size_t bytes) {
-    const std::uintptr_t first = reinterpret_cast<std::uintptr_t>(p) & ~std::uintptr_t{kCacheLine - 1};
-    const std::uintptr_t end = reinterpret_cast<std::uintptr_t>(p) + bytes;
-    for (std::uintptr_t line = first; line < end; line += kCacheLine)
-        __builtin_prefetch(reinterpret_cast<const void*>(line));
-}
 
 // The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
 int impactPoint(const ContactBlockCold::Lane& row, double threshold) {
