@@ -10,7 +10,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 
 APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libtbb-dev libsfml-dev libx11-dev libimgui-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libeigen3-dev libtbb-dev libsfml-dev libx11-dev libxcb1-dev libimgui-dev libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libbox2d-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core
   clang libclang-rt-14-dev
   python3 python3-venv
