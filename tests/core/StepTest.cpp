@@ -149,6 +149,26 @@ TEST(Step, RestingContactsPersistAndTheBroadPhaseRests) {
     EXPECT_EQ(world.contacts()[0].points[0].id, m.points[0].id);
 }
 
+// The impulses are written back to the contacts by the last relax pass, or after the substeps when there is none
+// (relaxIterations 0): either way a resting box's contact reports the weight's m g h per substep, and a step
+// begins warm-started with it.
+TEST(Step, ImpulsesAreStoredWithAndWithoutARelaxPass) {
+    for (const int relax : {0, 1, 2}) {
+        WorldSettings s = settings();
+        s.enableSleep = false;
+        s.relaxIterations = relax;
+        World world(s);
+        addGround(world);
+        const BodyId box = addBox(world, {0.0, 0.5});
+        for (int i = 0; i < 120; ++i) world.step(kDt);
+        ASSERT_EQ(world.contacts().size(), 1u) << "relax passes " << relax;
+        const Manifold& m = world.contacts()[0];
+        const double h = kDt / s.substeps;
+        EXPECT_NEAR(m.points[0].normalImpulse + m.points[1].normalImpulse, world.mass(box) * 9.81 * h, 1e-6)
+            << "relax passes " << relax;
+    }
+}
+
 // A body turns about its centre of mass, not its origin. A circle centred 1 m off its body's origin, spinning with
 // no linear momentum: its centre of mass stays put (1e-12 m: rounding) while position() (the origin) circles it.
 TEST(Step, BodiesTurnAboutTheirCentreOfMass) {
