@@ -121,6 +121,7 @@ private:
         void* const context = context_.load();
         const Call call = call_.load();
         const std::size_t n = items_.load(), grain = grain_.load();
+        std::size_t finished = 0;  // chunks this member ran, counted into done_ once it has no more to take
         for (int k = 0; k < members(); ++k) {
             const int owner = (member + k) % members();
             const std::size_t first = runBegin(owner, n), last = runBegin(owner + 1, n);
@@ -137,10 +138,11 @@ private:
                     if (!failed_.load()) error_ = std::current_exception();
                     failed_.store(true);
                 }
-                done_.fetch_add(1);
+                ++finished;
                 taken = next.load();
             }
         }
+        if (finished > 0) done_.fetch_add(finished);
     }
 
     // Waiting: spin briefly (stages are microseconds apart), then give the core away (a 2-core machine may have
