@@ -110,6 +110,8 @@ struct RowBody {
         sumA += cp.anchorA;
         sumB += cp.anchorB;
     }
+    for (int i = m.pointCount; i < 2; ++i) c.points[i] = ContactConstraintPoint{};
+    c.k11 = c.k12 = c.k22 = 0.0;
     c.invDet = 0.0;
     if (m.pointCount == 2) {
         const Vec2 n = c.normal;
@@ -135,10 +137,10 @@ struct RowBody {
 
 }  // namespace
 
-bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, std::uint32_t contactIndex,
+bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, ContactConstraint& c, std::uint32_t contactIndex,
                 const ContactData& contact, std::int32_t indexA, std::int32_t indexB, const SolverBodySim* sims,
                 const BodyData& recordA, const BodyData& recordB) {
-    ContactConstraint c;
+    // prepareContact writes every field setRow reads (a point past pointCount is reset, k11..k22 zeroed first).
     c.contact = contactIndex;
     prepareContact(c, contact, rowBody(indexA, sims, recordA), rowBody(indexB, sims, recordB));
     setRow(block, cold, k, c);

@@ -347,6 +347,7 @@ void WorldImpl::finishBody(std::size_t i) {
 
 std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
     std::size_t turning = 0;
+    ContactConstraint scratch;
     for (std::size_t b = begin; b < end; ++b) {
         ContactBlock& block = contactBlocks[b];
         const int lanes = static_cast<int>(blockRows[b].count);
@@ -361,8 +362,8 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
         for (int lane = 0; lane < lanes; ++lane) {
             const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
             const ContactData& contact = contacts[ref.contact];
-            const bool turns = prepareRow(block, contactCold[b], lane, ref.contact, contact, ref.indexA, ref.indexB,
-                                          sims.data(), bodies[contact.a], bodies[contact.b]);
+            const bool turns = prepareRow(block, contactCold[b], lane, scratch, ref.contact, contact, ref.indexA,
+                                          ref.indexB, sims.data(), bodies[contact.a], bodies[contact.b]);
             turning += turns ? 1 : 0;
         }
     }
