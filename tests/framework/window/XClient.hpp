@@ -1,10 +1,9 @@
 #pragma once
 // A test's own connection to the X server, looking at windows as another client (a window manager, xwininfo)
 // does, from the test's own thread while the program under test draws. It speaks xcb, not Xlib: Xlib hands every
-// error to one handler per process, which the program under test replaces (ROOT's calls its interpreter), so a
-// window vanishing between two of the checker's requests ran ROOT's handler on the checker's thread beside
-// ROOT's own work and crashed the test. xcb returns a request's error with its reply. The xcb headers stay in
-// XClient.cpp.
+// error (a window gone between two requests) to one handler per process, and ROOT's runs its interpreter, which
+// must not run on this thread beside ROOT's own work (docs/graphs.md). xcb returns a request's error with its
+// reply. The xcb headers stay in XClient.cpp.
 
 #include <cstddef>
 #include <cstdint>
