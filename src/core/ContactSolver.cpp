@@ -211,8 +211,10 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // passes push the overlap out as usual. What other contacts' push-out gave the bodies in this substep
 // (`othersPush`, along each point's normal) is left out of the speeds the blow answers, for the same reason: it
 // stays on the bodies, and their relax pass takes it back.
+// `blowA` and `blowB` gather the blows' velocities alone.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
-                  const double (&vn)[2], const double (&delta)[2], const double (&othersPush)[2]) {
+                  const double (&vn)[2], const double (&delta)[2], const double (&othersPush)[2], MotionSide& blowA,
+                  MotionSide& blowB) {
     for (int i = 0; i < c.pointCount; ++i) {
         if (delta[i] != 0.0) pushNormal(c, A, B, c.points[i], -delta[i]);
         c.points[i].normalImpulse -= delta[i];
@@ -242,7 +244,10 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
         q[0] = bounce[0].gap * c.points[0].normalMass;
     }
     for (int i = 0; i < c.pointCount; ++i) {
-        if (x[i] != 0.0) pushNormal(c, A, B, c.points[i], x[i]);
+        if (x[i] != 0.0) {
+            pushNormal(c, A, B, c.points[i], x[i]);
+            pushNormal(c, blowA, blowB, c.points[i], x[i]);
+        }
         if (q[i] != 0.0) shift(c, c.points[i], A, B, q[i]);
     }
 }
@@ -260,6 +265,11 @@ MotionSide pushedSide(const ContactPass& pass, std::int32_t index) {
         side.w = pass.pushes[index].w;
     }
     return side;
+}
+
+void addVelocity(RowsBase& base, const MotionSide& change) {
+    base.v += change.v;
+    base.w += change.w;
 }
 
 // Adds a point's push impulse (N s along the normal) to what its bodies have been given by push-out this substep.
@@ -409,7 +419,12 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
         };
         MotionSide A = side(c.indexA, wa), B = side(c.indexB, wb);
         const double met[2] = {start.before[0] - othersPush[0], start.before[1] - othersPush[1]};
-        applyBounces(c, A, B, bounce, met, start.delta, othersPush);
+        MotionSide blowA, blowB;
+        applyBounces(c, A, B, bounce, met, start.delta, othersPush, blowA, blowB);
+        if (pass.rowsBase) {  // a blow is no impulse of the rows: the next substep's warm start leaves it out
+            if (c.indexA != kNullIndex && c.invMassA != 0.0) addVelocity(pass.rowsBase[c.indexA], blowA);
+            if (c.indexB != kNullIndex && c.invMassB != 0.0) addVelocity(pass.rowsBase[c.indexB], blowB);
+        }
         storeSideWithPose(states, c.indexA, c.invMassA, A);
         storeSideWithPose(states, c.indexB, c.invMassB, B);
         wa.vx[k] = A.v.x(), wa.vy[k] = A.v.y(), wa.w[k] = A.w, wa.dAngle[k] = A.dAngle;

@@ -147,6 +147,7 @@ struct ContactPass {
     double restitutionThreshold = 0.0;  // m/s
     double slipSpeed = 0.0;           // m/s: faces moving against each other faster than this slide
     PushVelocity* pushes = nullptr;   // per awake body, what this substep's push-out gave it (solve passes)
+    RowsBase* rowsBase = nullptr;     // per awake body, when the warm start runs on the bodies: bounces go here
 };
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code = WideCode::Best);

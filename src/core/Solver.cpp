@@ -193,6 +193,7 @@ void WorldImpl::solve() {
     contactPassSettings.restitutionThreshold = settings.restitutionThreshold;
     contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
     pushVelocities.assign(n, PushVelocity{});
+    rowsBase.resize(n);
     // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
     // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
     // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
@@ -411,9 +412,14 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         rowsWork(segments[kColours], segments[kSegments]);
     };
+    std::atomic<bool> exactBullets{false};
     {
         auto timer = stage(Stage::Forces);
-        forRecords([&](std::size_t i) { startBody(i); });
+        forRecords([&](std::size_t i) {
+            startBody(i);
+            if (bodies[sims[i].body].detection == CollisionDetection::ContinuousExact)
+                exactBullets.store(true, std::memory_order_relaxed);
+        });
     }
     // A block is prepared in the step's first pass over the rows, just before its warm start, and its impulses
     // stored in the last, just after its relax: the thread that solves it in every pass (Team.hpp) writes it first
@@ -432,6 +438,16 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const bool storeInRelax = settings.relaxIterations > 0;
     ContactPass contactPass = contactPassSettings;
     contactPass.pushes = pushVelocities.data();
+    // After the first substep, the warm start runs on the bodies, not the rows: what the rows' impulses added to a
+    // body's velocity in one substep is M^-1 J^T lambda for their accumulated impulses lambda (the rows' J is fixed
+    // for the step), which is what a warm start over the rows would add again, to rounding. Not with joints (their
+    // J turns with the bodies), an effect acting between substeps, or an exact-continuous bullet: a bullet can
+    // leave its rows' geometry metres and radians behind within a step, and there even a rounding change to its
+    // rows can decide whether a bounce keeps its energy (docs/performance.md, "Thirteenth measurement").
+    const bool bodiesWarmStart = groupJointStart[g + 1] == groupJointStart[g] && !effects.perSubstep() &&
+                                 !exactBullets.load(std::memory_order_relaxed);
+    RowsBase* const base = rowsBase.data();
+    if (bodiesWarmStart) contactPass.rowsBase = base;
     auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
         pass([&](std::size_t b, std::size_t e) {
@@ -449,17 +465,27 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
             forBodies([&](std::size_t i) {
                 const SolverBodySim& sim = sims[i];
                 if (!sim.dynamic) return;
-                st[i].v += h * sim.acceleration;
-                if (sim.turns) st[i].w += h * sim.angularAcceleration;
+                SolverBody& s = st[i];
+                const bool warmStartHere = bodiesWarmStart && sub > 0;
+                const RowsBase rows = warmStartHere ? RowsBase{s.v - base[i].v, s.w - base[i].w} : RowsBase{};
+                s.v += h * sim.acceleration;
+                if (sim.turns) s.w += h * sim.angularAcceleration;
+                if (!bodiesWarmStart) return;
+                base[i] = {s.v, s.w};
+                if (warmStartHere) {
+                    s.v += rows.v;
+                    s.w += rows.w;
+                }
             });
         }
         if (anyRows) {
             auto timer = stage(Stage::Solve);
-            pass([&](std::size_t b, std::size_t e) {
-                     if (sub == 0) turningRows += prepareBlocks(b, e);  // one add per chunk
-                     warmStartContacts(blocks + b, blocks + e, st);
-                 },
-                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
+            if (sub == 0 || !bodiesWarmStart)
+                pass([&](std::size_t b, std::size_t e) {
+                         if (sub == 0) turningRows += prepareBlocks(b, e);  // one add per chunk
+                         warmStartContacts(blocks + b, blocks + e, st);
+                     },
+                     [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
             for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true, false);
         }
         {

@@ -37,6 +37,14 @@ struct PushVelocity {
     int substep = -1;
 };
 
+/// A body's velocity as the present substep's rows found it (after integration, before the warm start), less the
+/// bounces they dealt: what the rows' impulses added since is their accumulated impulse M^-1 J^T lambda, which the
+/// next substep's warm start would apply again (m/s, rad/s).
+struct RowsBase {
+    Vec2 v = Vec2::Zero();
+    double w = 0.0;
+};
+
 /// Read by row preparation, integration and finalization: what they need of an awake body's record, copied once
 /// per step into the solver's order, so that preparing a row reads two bodies' lines here instead of scattered
 /// lines of their records. Two cache lines, aligned to them; what each substep's integration reads is in the first.

@@ -78,6 +78,7 @@ struct WorldImpl {
     std::vector<SolverBody> solverBodies;        // a still body, then one per awake body
     SolverBody* states = nullptr;                // &solverBodies[1]: states[i] is awake body i, states[-1] still
     std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
+    std::vector<RowsBase> rowsBase;              // per awake body: velocity before the substep's rows (Solver)
     std::vector<SolverBodySim> sims;
     // The awake bodies are solved in groups of whole islands (Solver.cpp); a segment is one group's rows of one
     // colour, or its overflow: segment g * (colours + 1) + c.
