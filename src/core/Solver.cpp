@@ -438,12 +438,11 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const bool storeInRelax = settings.relaxIterations > 0;
     ContactPass contactPass = contactPassSettings;
     contactPass.pushes = pushVelocities.data();
-    // After the first substep, the warm start runs on the bodies, not the rows: what the rows' impulses added to a
-    // body's velocity in one substep is M^-1 J^T lambda for their accumulated impulses lambda (the rows' J is fixed
-    // for the step), which is what a warm start over the rows would add again, to rounding. Not with joints (their
-    // J turns with the bodies), an effect acting between substeps, or an exact-continuous bullet: a bullet can
-    // leave its rows' geometry metres and radians behind within a step, and there even a rounding change to its
-    // rows can decide whether a bounce keeps its energy (docs/performance.md, "Thirteenth measurement").
+    // After the first substep, the warm start runs on the bodies (integrateVelocity), not the rows: the same to
+    // rounding, without a pass. Not with joints (their J turns with the bodies), an effect acting between substeps,
+    // or an exact-continuous bullet: a bullet can leave its rows' geometry metres and radians behind within a step,
+    // and there even a rounding change can decide whether a bounce keeps its energy (docs/performance.md,
+    // "Thirteenth measurement").
     const bool bodiesWarmStart = groupJointStart[g + 1] == groupJointStart[g] && !effects.perSubstep() &&
                                  !exactBullets.load(std::memory_order_relaxed);
     RowsBase* const base = rowsBase.data();
@@ -465,17 +464,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
             forBodies([&](std::size_t i) {
                 const SolverBodySim& sim = sims[i];
                 if (!sim.dynamic) return;
-                SolverBody& s = st[i];
-                const bool warmStartHere = bodiesWarmStart && sub > 0;
-                const RowsBase rows = warmStartHere ? RowsBase{s.v - base[i].v, s.w - base[i].w} : RowsBase{};
-                s.v += h * sim.acceleration;
-                if (sim.turns) s.w += h * sim.angularAcceleration;
-                if (!bodiesWarmStart) return;
-                base[i] = {s.v, s.w};
-                if (warmStartHere) {
-                    s.v += rows.v;
-                    s.w += rows.w;
-                }
+                integrateVelocity(st[i], bodiesWarmStart ? &base[i] : nullptr, h * sim.acceleration,
+                                  h * sim.angularAcceleration, sim.turns, sub > 0);
             });
         }
         if (anyRows) {

@@ -45,6 +45,22 @@ struct RowsBase {
     double w = 0.0;
 };
 
+/// A substep's velocity integration of a dynamic body: dv, and dw if it can turn. With `base` (the warm start on the
+/// bodies), it keeps in `base` the velocity the rows start from, and from a step's second substep on (`again`) adds
+/// again what the rows gave the body over the substep before: M^-1 J^T lambda for their accumulated impulses lambda,
+/// since a row's J is fixed for the step, so what a warm start over the rows would add.
+inline void integrateVelocity(SolverBody& s, RowsBase* base, const Vec2& dv, double dw, bool turns, bool again) {
+    const RowsBase rows = base && again ? RowsBase{s.v - base->v, s.w - base->w} : RowsBase{};
+    s.v += dv;
+    if (turns) s.w += dw;
+    if (!base) return;
+    *base = {s.v, s.w};
+    if (again) {
+        s.v += rows.v;
+        s.w += rows.w;
+    }
+}
+
 /// Read by row preparation, integration and finalization: what they need of an awake body's record, copied once
 /// per step into the solver's order, so that preparing a row reads two bodies' lines here instead of scattered
 /// lines of their records. Two cache lines, aligned to them; what each substep's integration reads is in the first.
