@@ -211,7 +211,7 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // passes push the overlap out as usual. What other contacts' push-out gave the bodies in this substep
 // (`othersPush`, along each point's normal) is left out of the speeds the blow answers, for the same reason: it
 // stays on the bodies, and their relax pass takes it back.
-// `blowA` and `blowB` gather the blows' velocities alone.
+// The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
                   const double (&vn)[2], const double (&delta)[2], const double (&othersPush)[2], MotionSide& blowA,
                   MotionSide& blowB) {
@@ -278,8 +278,8 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
     if (!pass.pushes) return;
     MotionSide A = pushedSide(pass, c.indexA), B = pushedSide(pass, c.indexB);
     pushNormal(c, A, B, cp, impulse);
-    if (c.indexA != kNullIndex && c.invMassA != 0.0) pass.pushes[c.indexA] = {A.v, A.w, pass.substep};
-    if (c.indexB != kNullIndex && c.invMassB != 0.0) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
+    if (rowMoves(c.indexA, c.invMassA)) pass.pushes[c.indexA] = {A.v, A.w, pass.substep};
+    if (rowMoves(c.indexB, c.invMassB)) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
 }
 
 // kLanes bodies' motion, one per lane: what a block's pass reads of its A sides or its B sides.
@@ -422,8 +422,8 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
         MotionSide blowA, blowB;
         applyBounces(c, A, B, bounce, met, start.delta, othersPush, blowA, blowB);
         if (pass.rowsBase) {  // a blow is no impulse of the rows: the next substep's warm start leaves it out
-            if (c.indexA != kNullIndex && c.invMassA != 0.0) addVelocity(pass.rowsBase[c.indexA], blowA);
-            if (c.indexB != kNullIndex && c.invMassB != 0.0) addVelocity(pass.rowsBase[c.indexB], blowB);
+            if (rowMoves(c.indexA, c.invMassA)) addVelocity(pass.rowsBase[c.indexA], blowA);
+            if (rowMoves(c.indexB, c.invMassB)) addVelocity(pass.rowsBase[c.indexB], blowB);
         }
         storeSideWithPose(states, c.indexA, c.invMassA, A);
         storeSideWithPose(states, c.indexB, c.invMassB, B);

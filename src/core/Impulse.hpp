@@ -38,16 +38,19 @@ inline MotionSide loadSide(const SolverBody* states, std::int32_t index) {
     return {s.v, s.w, s.dp, s.dq, s.dAngle};
 }
 
-/// Only bodies a row can move are written back: a kinematic body is read by many rows of one colour at once.
+/// Whether a row can move its side: only those are written back, since a kinematic body is read by many rows of one
+/// colour at once (and the static side is no record).
+inline bool rowMoves(std::int32_t index, double invMass) { return index != kNullIndex && invMass != 0.0; }
+
 inline void storeSide(SolverBody* states, std::int32_t index, double invMass, const MotionSide& side) {
-    if (index == kNullIndex || invMass == 0.0) return;
+    if (!rowMoves(index, invMass)) return;
     states[index].v = side.v;
     states[index].w = side.w;
 }
 
 /// Also writes the displacement and turn (rows that move positions: bounces).
 inline void storeSideWithPose(SolverBody* states, std::int32_t index, double invMass, const MotionSide& side) {
-    if (index == kNullIndex || invMass == 0.0) return;
+    if (!rowMoves(index, invMass)) return;
     SolverBody& s = states[index];
     s.v = side.v;
     s.w = side.w;

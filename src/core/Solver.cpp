@@ -89,6 +89,10 @@ void WorldImpl::solve() {
     const bool byIsland = !effects.perSubstep();  // a per-substep effect may couple any bodies
     bodyRoot.resize(n);
     for (std::size_t i = 0; i < n; ++i) bodyRoot[i] = static_cast<std::int32_t>(i);
+    rowsWarmStart.assign(n, 0);
+    auto keepRowsWarmStart = [&](std::int32_t index) {
+        if (index != kNullIndex) rowsWarmStart[static_cast<std::size_t>(index)] = 1;
+    };
     if (!awakeContacts.empty() || rowJointCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         bodyColours.assign(n, 0);
@@ -124,6 +128,8 @@ void WorldImpl::solve() {
             }
             constraintColour[k] = colour;
             rowRefs[k] = {awakeContacts[k], A.awakeIndex, B.awakeIndex};
+            if (A.detection == CollisionDetection::ContinuousExact) keepRowsWarmStart(A.awakeIndex);
+            if (B.detection == CollisionDetection::ContinuousExact) keepRowsWarmStart(B.awakeIndex);
             if (byIsland) joinBodies(A.awakeIndex, B.awakeIndex);
             ++rowCount;
         }
@@ -136,6 +142,8 @@ void WorldImpl::solve() {
             row.joint = j;
             prepareJoint(row, joint, bodies, h, rodSoftness);
             jointConstraints.push_back(row);
+            keepRowsWarmStart(row.indexA);
+            keepRowsWarmStart(row.indexB);
             if (byIsland) joinBodies(row.indexA, row.indexB);
         }
     }
@@ -261,8 +269,10 @@ void WorldImpl::groupIslands(bool byIsland) {
     groupBodies.resize(n);
     groupBodyStart.assign(2, 0);
     groupBodyStart[1] = static_cast<std::uint32_t>(n);
-    if (!byIsland || n <= kGroupBodies) {
+    const bool anyRowsWarmStart = std::find(rowsWarmStart.begin(), rowsWarmStart.end(), 1) != rowsWarmStart.end();
+    if (!byIsland || (n <= kGroupBodies && !anyRowsWarmStart)) {
         for (std::size_t i = 0; i < n; ++i) groupBodies[i] = static_cast<std::uint32_t>(i);
+        groupRowsWarmStart.assign(1, anyRowsWarmStart ? 1 : 0);
         return;
     }
     // Flatten the trees (a root has the lowest index of its island, so one pass in index order does it) and
@@ -272,18 +282,25 @@ void WorldImpl::groupIslands(bool byIsland) {
         const auto root = static_cast<std::size_t>(bodyRoot[static_cast<std::size_t>(bodyRoot[i])]);
         bodyRoot[i] = static_cast<std::int32_t>(root);
         ++islandSize[root];
+        if (rowsWarmStart[i]) rowsWarmStart[root] = 1;
     }
-    // Islands join groups in the order of their first body, a group closing once it holds kGroupBodies.
-    std::uint32_t groups = 0, open = 0;
+    // Islands join groups in the order of their first body, a group closing once it holds kGroupBodies. Islands that
+    // keep the rows' warm start fill groups of their own, so an island's warm start, and so its bits, never depend
+    // on which islands share its group.
+    std::uint32_t groups = 0;
+    std::uint32_t openGroup[2] = {0, 0}, open[2] = {kGroupBodies, kGroupBodies};  // per kind; full: none open
+    groupRowsWarmStart.clear();
     for (std::size_t i = 0; i < n; ++i) {
         const auto root = static_cast<std::size_t>(bodyRoot[i]);
         if (root == i) {
-            if (groups == 0 || open >= kGroupBodies) {
-                ++groups;
-                open = 0;
+            const std::uint8_t kind = rowsWarmStart[i];
+            if (open[kind] >= kGroupBodies) {
+                openGroup[kind] = groups++;
+                open[kind] = 0;
+                groupRowsWarmStart.push_back(kind);
             }
-            open += islandSize[root];
-            bodyGroup[i] = groups - 1;
+            open[kind] += islandSize[root];
+            bodyGroup[i] = openGroup[kind];
         } else {
             bodyGroup[i] = bodyGroup[root];
         }
@@ -412,14 +429,9 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         rowsWork(segments[kColours], segments[kSegments]);
     };
-    std::atomic<bool> exactBullets{false};
     {
         auto timer = stage(Stage::Forces);
-        forRecords([&](std::size_t i) {
-            startBody(i);
-            if (bodies[sims[i].body].detection == CollisionDetection::ContinuousExact)
-                exactBullets.store(true, std::memory_order_relaxed);
-        });
+        forRecords([&](std::size_t i) { startBody(i); });
     }
     // A block is prepared in the step's first pass over the rows, just before its warm start, and its impulses
     // stored in the last, just after its relax: the thread that solves it in every pass (Team.hpp) writes it first
@@ -443,8 +455,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     // or an exact-continuous bullet: a bullet can leave its rows' geometry metres and radians behind within a step,
     // and there even a rounding change can decide whether a bounce keeps its energy (docs/performance.md,
     // "Thirteenth measurement").
-    const bool bodiesWarmStart = groupJointStart[g + 1] == groupJointStart[g] && !effects.perSubstep() &&
-                                 !exactBullets.load(std::memory_order_relaxed);
+    const bool bodiesWarmStart = !groupRowsWarmStart[g] && !effects.perSubstep();
     RowsBase* const base = rowsBase.data();
     if (bodiesWarmStart) contactPass.rowsBase = base;
     auto solvePass = [&](bool useBias, bool store) {

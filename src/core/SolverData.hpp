@@ -37,9 +37,9 @@ struct PushVelocity {
     int substep = -1;
 };
 
-/// A body's velocity as the present substep's rows found it (after integration, before the warm start), less the
-/// bounces they dealt: what the rows' impulses added since is their accumulated impulse M^-1 J^T lambda, which the
-/// next substep's warm start would apply again (m/s, rad/s).
+/// A body's velocity as the present substep's rows found it (after integration, before the warm start), plus the
+/// blows of the bounces they dealt: what the body gained beyond it is then the rows' accumulated impulses'
+/// M^-1 J^T lambda, which the next substep's warm start would apply again (m/s, rad/s).
 struct RowsBase {
     Vec2 v = Vec2::Zero();
     double w = 0.0;

@@ -85,6 +85,10 @@ struct WorldImpl {
     std::vector<std::int32_t> bodyRoot;          // per awake body: union-find parent, then its island's root
     std::vector<std::uint32_t> islandSize;       // per root: its island's bodies
     std::vector<std::uint32_t> bodyGroup;        // per awake body: its group
+    // Per awake body, then per island root: its island keeps the warm start as a pass over the rows (it has a joint
+    // or an exact-continuous bullet; Solver.cpp); such islands are grouped apart from the others.
+    std::vector<std::uint8_t> rowsWarmStart;
+    std::vector<std::uint8_t> groupRowsWarmStart;  // per group: the same for all its islands
     std::vector<std::uint32_t> groupBodies;      // awake indices, group by group
     std::vector<std::uint32_t> groupBodyStart;   // group g's bodies: [groupBodyStart[g], groupBodyStart[g + 1])
     std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise

@@ -266,8 +266,8 @@ TEST(ContactSolver, BlocksWithoutTurningBodiesMatchTheFullRowsExactly) {
 // After a step's first substep the world warm-starts on the bodies: each adds again what the rows gave it over the
 // substep before, which is M^-1 J^T lambda for the rows' accumulated impulses (their J is fixed for the step), what
 // the pass over the rows adds. A bounce's blow is no row impulse and is recorded apart; without that, rows that bounce
-// end up metres per second off. Tolerance 1e-12 of the speeds (about 3 m/s): the two sums differ only in
-// rounding, about 1e-16 of the impulses' speeds per operation, grown by four substeps of passes.
+// end up metres per second off. Tolerance 1e-12 m/s on speeds of about 3 m/s: the two sums differ only in rounding,
+// about 1e-16 of the speeds per operation, grown by four substeps of passes.
 TEST(ContactSolver, TheWarmStartOnTheBodiesIsThePassOverTheRows) {
     std::mt19937 rng(5);
     int bounced = 0;
@@ -302,7 +302,7 @@ TEST(ContactSolver, TheWarmStartOnTheBodiesIsThePassOverTheRows) {
     std::ostringstream worstText;
     worstText << worst;
     RecordProperty("worst_speed_difference", worstText.str());
-    EXPECT_GT(bounced, 100);  // the random rows reached the bounce path
+    EXPECT_GT(bounced, 100);  // points with restitution that met: the bounce path ran
 }
 
 #if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in all three builds
