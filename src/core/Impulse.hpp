@@ -39,7 +39,7 @@ inline MotionSide loadSide(const SolverBody* states, std::int32_t index) {
 }
 
 /// Whether a row can move its side: only those are written back, since a kinematic body is read by many rows of one
-/// colour at once (and the static side is no record).
+/// colour at once, and every row reads the static side from one still record (states[-1]).
 inline bool rowMoves(std::int32_t index, double invMass) { return index != kNullIndex && invMass != 0.0; }
 
 inline void storeSide(SolverBody* states, std::int32_t index, double invMass, const MotionSide& side) {
