@@ -677,9 +677,9 @@ const std::vector<Manifold>& World::contacts() const {
 }
 
 void World::step(double dt) {
-    // Above a second per step is a unit mistake (milliseconds passed as seconds), not a simulation.
-    requireInRange("time step dt (s)", dt, 0.0, 1.0);
-    if (dt == 0.0) throw std::invalid_argument("physim: time step dt (s) must be > 0, got 0");
+    // Above a second per step is a unit mistake (milliseconds passed as seconds), not a simulation. Below a
+    // nanosecond the substep's powers and inverses leave the doubles' range (1e-300 s turned a mouse-held body NaN).
+    requireInRange("time step dt (s)", dt, 1e-9, 1.0);
     WorldImpl& w = *impl_;
     w.requireNotStepping("step");
     if (w.effects.callbacks.running()) throw std::logic_error("physim: World::step called from a force callback");

@@ -157,6 +157,7 @@ TEST(WorldBadInput, NamesTheValueAndLeavesStateUnchanged) {
     EXPECT_THROW(world.createBody(def), std::invalid_argument);
     EXPECT_THROW(world.step(0.0), std::invalid_argument);
     EXPECT_THROW(world.step(-0.01), std::invalid_argument);
+    EXPECT_THROW(world.step(1e-300), std::invalid_argument) << "below a nanosecond: the substep's inverses overflow";
     EXPECT_THROW(world.step(NAN), std::invalid_argument);
     EXPECT_THROW(world.step(5.0), std::invalid_argument) << "5 s per step is a unit mistake";
     EXPECT_EQ(world.stepCount(), 0u);

@@ -193,7 +193,8 @@ public:
     std::vector<JointId> joints() const;
 
     // --- stepping -----------------------------------------------------------------------------------
-    /// Advances the world by dt seconds, in (0, 1]: larger steps are a unit mistake (milliseconds as seconds).
+    /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),
+    /// smaller ones leave the range of doubles in the substep's arithmetic.
     void step(double dt);
 
     /// The touching contacts of awake bodies after the last step (a sleeping pile's contacts are not listed).
