@@ -197,7 +197,8 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 
 // Applies the bounces of a row one of whose points bounces, as one blow on the whole row. First everything this
 // pass gave the row's points is taken back (`delta`, N s per point), so the bodies move as they met (`vn`: each
-// point's normal speed then, m/s, less what other contacts' push-out gave it). Then impulses x >= 0, one per point,
+// point's normal speed then, m/s, less what the substep gave the bodies provisionally). Then impulses x >= 0, one per
+// point,
 // bring each point to at least its target speed, exactly where x > 0, as the normal rows' 2x2 complementarity
 // problem does: a bouncing point's target is its bounce's; any other point may not approach faster than it
 // separated (target -vn), and one that approached is stopped (target 0). The kinetic energy changes by
@@ -208,18 +209,21 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // A bounce is a blow, not a lasting push: nothing of it is warm-started into the next substep. Taking back the
 // pass's impulse includes what it gave a point to push an overlap apart: the pair leaves at e times its meeting
 // speed, not at the push-out speed (an overlapping pair that met slowly would otherwise keep that speed); later
-// passes push the overlap out as usual. What other contacts' push-out gave the bodies in this substep
-// (`othersPush`, along each point's normal) is left out of the speeds the blow answers, for the same reason: it
-// stays on the bodies, and their relax pass takes it back.
+// passes push the overlap out as usual. What the substep gave the bodies provisionally (`provisional`, along each
+// point's normal: the warm start and other contacts' push-out) is left out of the speeds the blow answers, for the
+// same reason: it stays on the bodies, and the rows that gave it keep or take it back in later passes. A blow that
+// answered a warm start reflected a guess at this substep's impulses: when the guess was then taken back, the
+// bodies kept the reflection's energy (a thin box spinning at 10^4 rad/s, stopped by one wall's rows, warm-started
+// into another wall, gained up to 110% in a step: docs/dynamics.md).
 // The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
-                  const double (&vn)[2], const double (&delta)[2], const double (&othersPush)[2], MotionSide& blowA,
+                  const double (&vn)[2], const double (&delta)[2], const double (&provisional)[2], MotionSide& blowA,
                   MotionSide& blowB) {
     for (int i = 0; i < c.pointCount; ++i) {
         if (delta[i] != 0.0) pushNormal(c, A, B, c.points[i], -delta[i]);
         c.points[i].normalImpulse -= delta[i];
     }
-    auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]) - othersPush[i]; };
+    auto speedAt = [&](int i) { return normalSpeed(c, A, B, c.points[i]) - provisional[i]; };
     auto target = [&](int i) { return bounce[i].active ? bounce[i].target : std::min(-vn[i], 0.0); };
     double x[2] = {0.0, 0.0}, q[2] = {0.0, 0.0};
     if (c.pointCount == 2) {
@@ -263,6 +267,18 @@ MotionSide pushedSide(const ContactPass& pass, std::int32_t index) {
     if (pass.pushes && index != kNullIndex && pass.pushes[index].substep == pass.substep) {
         side.v = pass.pushes[index].v;
         side.w = pass.pushes[index].w;
+    }
+    return side;
+}
+
+// What the present substep has given a side provisionally, as a velocity: its push-out, and for a row that can
+// bounce its warm start (zero for a side the row cannot move: no row changes its velocity). A row that cannot
+// bounce plans only its meeting speed for events, which stays as the solve passes' push-out alone leaves it.
+MotionSide provisionalSide(const ContactPass& pass, const ContactConstraint& c, std::int32_t index, double invMass) {
+    MotionSide side = pushedSide(pass, index);
+    if (pass.warmStarts && c.restitution > 0.0 && rowMoves(index, invMass)) {
+        side.v += pass.warmStarts[index].v;
+        side.w += pass.warmStarts[index].w;
     }
     return side;
 }
@@ -395,16 +411,17 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
                  const Start& start, const ContactPass& pass) {
     ContactConstraint c = row(block, cold, k);
     const int count = c.pointCount;
-    // Along each point's normal, what other contacts' push-out gave the pair in this substep (solve passes).
-    double othersPush[2] = {0.0, 0.0};
+    // Along each point's normal, what the substep gave the pair provisionally (solve passes): push-out and warm start.
+    double provisional[2] = {0.0, 0.0};
     if (pass.useBias) {
-        const MotionSide pushedA = pushedSide(pass, c.indexA), pushedB = pushedSide(pass, c.indexB);
-        for (int i = 0; i < count; ++i) othersPush[i] = normalSpeed(c, pushedA, pushedB, c.points[i]);
+        const MotionSide givenA = provisionalSide(pass, c, c.indexA, c.invMassA);
+        const MotionSide givenB = provisionalSide(pass, c, c.indexB, c.invMassB);
+        for (int i = 0; i < count; ++i) provisional[i] = normalSpeed(c, givenA, givenB, c.points[i]);
     }
     Bounce bounce[2];
     for (int i = 0; i < count; ++i)
         if (start.started[i])
-            bounce[i] = planBounce(c, c.points[i], start.before[i] - othersPush[i], start.separation[i], pass);
+            bounce[i] = planBounce(c, c.points[i], start.before[i] - provisional[i], start.separation[i], pass);
     if (!bounce[0].active && !bounce[1].active) {
         // A push that stays is remembered on both bodies for their other contacts.
         for (int i = 0; i < count; ++i)
@@ -418,9 +435,9 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
             return m;
         };
         MotionSide A = side(c.indexA, wa), B = side(c.indexB, wb);
-        const double met[2] = {start.before[0] - othersPush[0], start.before[1] - othersPush[1]};
+        const double met[2] = {start.before[0] - provisional[0], start.before[1] - provisional[1]};
         MotionSide blowA, blowB;
-        applyBounces(c, A, B, bounce, met, start.delta, othersPush, blowA, blowB);
+        applyBounces(c, A, B, bounce, met, start.delta, provisional, blowA, blowB);
         if (pass.rowsBase) {  // a blow is no impulse of the rows: the next substep's warm start leaves it out
             if (rowMoves(c.indexA, c.invMassA)) addVelocity(pass.rowsBase[c.indexA], blowA);
             if (rowMoves(c.indexB, c.invMassB)) addVelocity(pass.rowsBase[c.indexB], blowB);

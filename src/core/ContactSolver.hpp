@@ -148,6 +148,8 @@ struct ContactPass {
     double slipSpeed = 0.0;           // m/s: faces moving against each other faster than this slide
     PushVelocity* pushes = nullptr;   // per awake body, what this substep's push-out gave it (solve passes)
     RowsBase* rowsBase = nullptr;     // per awake body, when the warm start runs on the bodies: bounces go here
+    const WarmStartVelocity* warmStarts = nullptr;  // per awake body, what this substep's warm start gave it: read
+                                                    // only by rows that can bounce (restitution > 0)
 };
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code = WideCode::Best);

@@ -202,6 +202,7 @@ void WorldImpl::solve() {
     contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
     pushVelocities.assign(n, PushVelocity{});
     rowsBase.resize(n);
+    warmStarts.resize(n);
     // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
     // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
     // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
@@ -363,8 +364,8 @@ void WorldImpl::finishBody(std::size_t i) {
         (proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.proxy != kNullIndex && travel > 0.5 * b.coreRadius ? 2 : 0));
 }
 
-std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
-    std::size_t turning = 0;
+WorldImpl::PreparedRows WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
+    PreparedRows prepared;
     ContactConstraint scratch;
     for (std::size_t b = begin; b < end; ++b) {
         ContactBlock& block = contactBlocks[b];
@@ -382,10 +383,11 @@ std::size_t WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
             const ContactData& contact = contacts[ref.contact];
             const bool turns = prepareRow(block, contactCold[b], lane, scratch, ref.contact, contact, ref.indexA,
                                           ref.indexB, sims.data(), bodies[contact.a], bodies[contact.b]);
-            turning += turns ? 1 : 0;
+            prepared.turning += turns ? 1 : 0;
+            prepared.bounce = prepared.bounce || contactCold[b].lanes[lane].restitution > 0.0;
         }
     }
-    return turning;
+    return prepared;
 }
 
 std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
@@ -438,6 +440,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     // and reads it last, so it never moves to another core's cache for that.
     const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
     std::atomic<std::size_t> turningRows{0};
+    std::atomic<bool> bounces{false};  // some row can bounce: only then is what the warm start gave kept (bounces)
     const double impactSpeed = settings.impactSpeedThreshold;
     auto storeBlocks = [&](std::size_t begin, std::size_t end) {
         for (std::size_t b = begin; b < end; ++b)
@@ -458,6 +461,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const bool bodiesWarmStart = !groupRowsWarmStart[g] && !effects.perSubstep();
     RowsBase* const base = rowsBase.data();
     if (bodiesWarmStart) contactPass.rowsBase = base;
+    WarmStartVelocity* const warm = warmStarts.data();
+    contactPass.warmStarts = warm;
     auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
         pass([&](std::size_t b, std::size_t e) {
@@ -472,21 +477,31 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         if (effects.perSubstep()) effects.substep(*this, h);  // then there is one group
         {
             auto timer = stage(Stage::Integrate);
+            WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
             forBodies([&](std::size_t i) {
                 const SolverBodySim& sim = sims[i];
                 if (!sim.dynamic) return;
-                integrateVelocity(st[i], bodiesWarmStart ? &base[i] : nullptr, h * sim.acceleration,
-                                  h * sim.angularAcceleration, sim.turns, sub > 0);
+                integrateVelocity(st[i], base[i], keepWarm ? &keepWarm[i] : nullptr, h * sim.acceleration,
+                                  h * sim.angularAcceleration, sim.turns, bodiesWarmStart && sub > 0);
             });
         }
         if (anyRows) {
             auto timer = stage(Stage::Solve);
-            if (sub == 0 || !bodiesWarmStart)
+            if (sub == 0 || !bodiesWarmStart) {
                 pass([&](std::size_t b, std::size_t e) {
-                         if (sub == 0) turningRows += prepareBlocks(b, e);  // one add per chunk
+                         if (sub == 0) {
+                             const PreparedRows prepared = prepareBlocks(b, e);
+                             turningRows += prepared.turning;  // one add per chunk
+                             if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
+                         }
                          warmStartContacts(blocks + b, blocks + e, st);
                      },
                      [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
+                if (bounces.load(std::memory_order_relaxed))
+                    forBodies([&](std::size_t i) {
+                        if (sims[i].dynamic) recordWarmStart(st[i], base[i], warm[i]);
+                    });
+            }
             for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true, false);
         }
         {

@@ -45,20 +45,33 @@ struct RowsBase {
     double w = 0.0;
 };
 
-/// A substep's velocity integration of a dynamic body: dv, and dw if it can turn. With `base` (the warm start on the
-/// bodies), it keeps in `base` the velocity the rows start from, and from a step's second substep on (`again`) adds
-/// again what the rows gave the body over the substep before: M^-1 J^T lambda for their accumulated impulses lambda,
-/// since a row's J is fixed for the step, so what a warm start over the rows would add.
-inline void integrateVelocity(SolverBody& s, RowsBase* base, const Vec2& dv, double dw, bool turns, bool again) {
-    const RowsBase rows = base && again ? RowsBase{s.v - base->v, s.w - base->w} : RowsBase{};
+/// What the present substep's warm start gave a body (m/s, rad/s): a guess at the substep's impulses, which the
+/// passes then keep or take back, so a bounce leaves it out of the speeds it answers (ContactSolver.cpp).
+struct WarmStartVelocity {
+    Vec2 v = Vec2::Zero();
+    double w = 0.0;
+};
+
+/// A substep's velocity integration of a dynamic body: dv, and dw if it can turn. It keeps in `base` the velocity
+/// the rows start from. With `again` (the warm start on the bodies, from a step's second substep on) it adds again
+/// what the rows gave the body over the substep before, and keeps that in `warm` if given: M^-1 J^T lambda for their
+/// accumulated impulses lambda, since a row's J is fixed for the step, so what a warm start over the rows would add.
+inline void integrateVelocity(SolverBody& s, RowsBase& base, WarmStartVelocity* warm, const Vec2& dv, double dw,
+                              bool turns, bool again) {
+    const RowsBase rows = again ? RowsBase{s.v - base.v, s.w - base.w} : RowsBase{};
     s.v += dv;
     if (turns) s.w += dw;
-    if (!base) return;
-    *base = {s.v, s.w};
+    base = {s.v, s.w};
     if (again) {
         s.v += rows.v;
         s.w += rows.w;
+        if (warm) *warm = {rows.v, rows.w};
     }
+}
+
+/// After a warm-start pass over the rows: what it gave the body (integrateVelocity kept the velocity before it).
+inline void recordWarmStart(const SolverBody& s, const RowsBase& base, WarmStartVelocity& warm) {
+    warm = {s.v - base.v, s.w - base.w};
 }
 
 /// Read by row preparation, integration and finalization: what they need of an awake body's record, copied once

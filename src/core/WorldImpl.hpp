@@ -79,6 +79,7 @@ struct WorldImpl {
     SolverBody* states = nullptr;                // &solverBodies[1]: states[i] is awake body i, states[-1] still
     std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
     std::vector<RowsBase> rowsBase;              // per awake body: velocity before the substep's rows (Solver)
+    std::vector<WarmStartVelocity> warmStarts;   // per awake body: what the substep's warm start gave it (bounces)
     std::vector<SolverBodySim> sims;
     // The awake bodies are solved in groups of whole islands (Solver.cpp); a segment is one group's rows of one
     // colour, or its overflow: segment g * (colours + 1) + c.
@@ -171,7 +172,11 @@ struct WorldImpl {
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record
     void finishBody(std::size_t i);  // its record from the solver's state: pose, box, sleep timer, enlarged
-    std::size_t prepareBlocks(std::size_t begin, std::size_t end);  // fills blocks; returns its turning rows
+    struct PreparedRows {
+        std::size_t turning = 0;  // rows a body of which turns
+        bool bounce = false;      // some row can bounce (restitution > 0)
+    };
+    PreparedRows prepareBlocks(std::size_t begin, std::size_t end);  // fills blocks
     std::size_t solveGroup(std::size_t g, bool timed);  // a group's rows, substeps, impulses; its turning rows
     void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
 };

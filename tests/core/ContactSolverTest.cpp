@@ -120,14 +120,19 @@ void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold,
     ContactPass pass = substepPass();
     pass.pushes = pushes.data();
     std::vector<RowsBase> base(states.size());
+    std::vector<WarmStartVelocity> warm(states.size());
     if (warmStart == WarmStart::Bodies) pass.rowsBase = base.data();
+    pass.warmStarts = warm.data();
     for (int sub = 0; sub < 4; ++sub) {
         pass.substep = sub;
-        if (warmStart == WarmStart::Bodies)  // no forces: only the velocity the rows start from, and the warm start
-            for (std::size_t i = 0; i < states.size(); ++i)
-                integrateVelocity(bodies[i], &base[i], Vec2::Zero(), 0.0, false, sub > 0);
-        if (warmStart == WarmStart::Rows || sub == 0)
+        // No forces: only the velocity the rows start from, and on the bodies the warm start.
+        for (std::size_t i = 0; i < states.size(); ++i)
+            integrateVelocity(bodies[i], base[i], &warm[i], Vec2::Zero(), 0.0, false,
+                              warmStart == WarmStart::Bodies && sub > 0);
+        if (warmStart == WarmStart::Rows || sub == 0) {
             warmStartContacts(blocks.data(), blocks.data() + blocks.size(), bodies, code);
+            for (std::size_t i = 0; i < states.size(); ++i) recordWarmStart(bodies[i], base[i], warm[i]);
+        }
         for (const bool bias : {true, false}) {
             pass.useBias = bias;
             solveContacts(blocks.data(), blocks.data() + blocks.size(), cold.data(), bodies, pass, code);

@@ -157,24 +157,18 @@ TEST(Energy, ADroppedPileOnlyLosesEnergy) {
 }
 
 // One or two exact-continuous bullets (a thin box spinning up to thousands of rad/s, and a small disc) at 150 to
-// 600 m/s in a closed box of elastic walls, 100 random starts each, 60 steps: no step ends with more kinetic energy
-// than it began with, beyond 1e-6 relative (friction only takes). A box turning several radians per substep
-// meets a wall on both corners of a face at once, one approaching and one leaving; the blow that answered only the
-// approaching corner, keeping what the pass had given the other, gained up to 57% in a step.
+// 600 m/s in a closed box of elastic walls, 60 steps from 3000 random starts (one bullet) and 1500 (two): no step
+// ends with more kinetic energy than it began with, beyond 1e-6 relative (friction only takes). A box turning
+// several radians per substep meets a wall on both corners of a face at once, one approaching and one leaving; the
+// blow that answered only the approaching corner, keeping what the pass had given the other, gained up to 57% in a
+// step. A blow that answered the warm start (a box stopped by one wall's rows, warm-started into another) gained up
+// to 47% (one bullet, start 2852) and 15% (two, start 2852; 1% at start 1434). The wider sweep is in
+// StabilityLongTest.cpp.
 TEST(Energy, SpinningBulletsOffElasticWallsNeverGainEnergy) {
-    WorldSettings s;
-    s.gravity = Vec2::Zero();
-    for (const int bullets : {1, 2})
-        for (unsigned seed = 1; seed <= 100; ++seed) {
-            World w(s);
-            const std::vector<BodyId> ids = testing::fillBulletBox(w, bullets, seed);
-            for (int step = 0; step < 60; ++step) {
-                const double before = testing::kineticEnergy(w, ids);
-                w.step(kDt);
-                ASSERT_LE(testing::kineticEnergy(w, ids), before * (1.0 + 1e-6))
-                    << bullets << " bullets, seed " << seed << ", step " << step;
-            }
-        }
+    for (const auto& [bullets, starts] : {std::pair{1, 3000u}, std::pair{2, 1500u}})
+        for (unsigned seed = 1; seed <= starts; ++seed)
+            ASSERT_EQ(testing::firstEnergyGain(bullets, seed, 60, 1e-6), -1)
+                << "the step that gained energy; " << bullets << " bullets, seed " << seed;
 }
 
 }  // namespace

@@ -245,4 +245,19 @@ inline std::vector<BodyId> fillBulletBox(World& world, int bullets, unsigned see
 /// Kinetic energy of the bodies, translational and rotational (J): the one in Scenes.hpp.
 using test::kineticEnergy;
 
+/// Steps fillBulletBox's scene (no gravity, 60 Hz) and returns the first step that ends with more kinetic energy
+/// than it began with, beyond `tolerance` relative; -1 when none of `steps` does.
+inline int firstEnergyGain(int bullets, unsigned seed, int steps, double tolerance) {
+    WorldSettings settings;
+    settings.gravity = Vec2::Zero();
+    World world(settings);
+    const std::vector<BodyId> ids = fillBulletBox(world, bullets, seed);
+    for (int step = 0; step < steps; ++step) {
+        const double before = kineticEnergy(world, ids);
+        world.step(1.0 / 60.0);
+        if (kineticEnergy(world, ids) > before * (1.0 + tolerance)) return step;
+    }
+    return -1;
+}
+
 }  // namespace physim::testing
