@@ -197,11 +197,10 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 
 // Applies the bounces of a row one of whose points bounces, as one blow on the whole row. First everything this
 // pass gave the row's points is taken back (`delta`, N s per point), so the bodies move as they met (`vn`: each
-// point's normal speed then, m/s, less what the substep gave the bodies provisionally). Then impulses x >= 0, one per
-// point,
-// bring each point to at least its target speed, exactly where x > 0, as the normal rows' 2x2 complementarity
-// problem does: a bouncing point's target is its bounce's; any other point may not approach faster than it
-// separated (target -vn), and one that approached is stopped (target 0). The kinetic energy changes by
+// point's normal speed then, m/s, less what the substep gave the bodies provisionally). Then impulses x >= 0, one
+// per point, bring each point to at least its target speed, exactly where x > 0, as the normal rows' 2x2
+// complementarity problem does: a bouncing point's target is its bounce's; any other point may not approach faster
+// than it separated (target -vn), and one that approached is stopped (target 0). The kinetic energy changes by
 // sum x (vn + v') / 2, so each point's share is zero (a bounce with e = 1, a separating point held at the mirror
 // of its speed) or a loss, whatever the coupling between the points. Both points of a face bounce together (a
 // box landing flat stays level); point by point, or keeping the pass's impulse at a point the blow then leaves
@@ -214,7 +213,7 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // same reason: it stays on the bodies, and the rows that gave it keep or take it back in later passes. A blow that
 // answered a warm start reflected a guess at this substep's impulses: when the guess was then taken back, the
 // bodies kept the reflection's energy (a thin box spinning at 10^4 rad/s, stopped by one wall's rows, warm-started
-// into another wall, gained up to 110% in a step: docs/dynamics.md).
+// into another wall, gained up to 114% in a step: docs/dynamics.md).
 // The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
                   const double (&vn)[2], const double (&delta)[2], const double (&provisional)[2], MotionSide& blowA,

@@ -1,5 +1,6 @@
 // The hard cases that take minutes (ctest label stability_long; ctest --preset stability-long): a pyramid with a
-// 100-box base, a million steps of bouncing scenes, and spinning bullets from 20 000 starts each. Criteria as in StabilityTest.cpp; docs/stability.md.
+// 100-box base, a million steps of bouncing scenes, and spinning bullets from 20 000 starts each. Criteria as in
+// StabilityTest.cpp; docs/stability.md.
 
 #include "support/RandomBatch.hpp"
 #include "support/Scenes.hpp"
