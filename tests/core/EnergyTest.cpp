@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <vector>
 
 namespace physim {
@@ -82,39 +81,14 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
 // settings otherwise: over 60 s the kinetic energy never rises by 1e-6 and keeps 99% (every collision, however
 // slow, is elastic: the restitution threshold applies below e = 1 only). Seeds 1 to 6: before the push-out fix
 // above, four of them rose by 1e-5 to 4e-5. Seed 23 rose by 3.1e-4 until bounces were planned without the push-out
-// other contacts had given the bodies (docs/dynamics.md). Seeds 1 to 40 now stay within 2.5e-14 (rounding).
+// other contacts had given the bodies (docs/dynamics.md). Seeds 1 to 40 rise by at most 2.5e-14 (rounding). Not
+// every start passes: over 600 (StabilityLong.DISABLED_ElasticGasKeepsItsEnergyFrom600Starts), 10 rise above 1e-6
+// and 6 keep under 99%, an open defect (docs/dynamics.md, "Not done yet").
 TEST(Energy, ElasticGasKeepsItsEnergy) {
     for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u, 23u}) {
-        World w(zeroGravity());
-        const double half = 8.0, t = 1.0;
-        for (const auto& [size, at] : {std::pair{Vec2(half + t, t / 2), Vec2(0.0, -half - t / 2)},
-                                       std::pair{Vec2(half + t, t / 2), Vec2(0.0, half + t / 2)},
-                                       std::pair{Vec2(t / 2, half + t), Vec2(-half - t / 2, 0.0)},
-                                       std::pair{Vec2(t / 2, half + t), Vec2(half + t / 2, 0.0)}}) {
-            BodyDef wall;
-            wall.type = BodyType::Static;
-            wall.shape = makeBox(size.x(), size.y());
-            wall.position = at;
-            wall.restitution = 1.0;
-            wall.staticFriction = wall.dynamicFriction = 0.0;
-            w.createBody(wall);
-        }
-        std::mt19937 rng(seed);
-        std::uniform_real_distribution<double> turn(0.0, 2.0 * M_PI);
-        std::vector<BodyId> discs;
-        for (int i = 0; i < 200; ++i) {
-            const double a = turn(rng);
-            discs.push_back(w.createBody(elasticDisc(0.2, {-half + 0.8 * (i % 20 + 0.5), -half + 0.8 * (i / 20 + 0.5)},
-                                                     5.0 * Vec2(std::cos(a), std::sin(a)))));
-        }
-        const double k0 = testing::kineticEnergy(w, discs);
-        double highest = k0;
-        for (int s = 0; s < 60 * 60; ++s) {
-            w.step(kDt);
-            highest = std::max(highest, testing::kineticEnergy(w, discs));
-        }
-        EXPECT_LE(highest, k0 * (1.0 + 1e-6)) << "seed " << seed;
-        EXPECT_GT(testing::kineticEnergy(w, discs), 0.99 * k0) << "seed " << seed;
+        const test::GasRun r = test::runElasticGas(seed, 60 * 60);
+        EXPECT_LE(r.rise, 1e-6) << "seed " << seed;
+        EXPECT_GT(r.kept, 0.99) << "seed " << seed;
     }
 }
 
