@@ -82,8 +82,8 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
 // slow, is elastic: the restitution threshold applies below e = 1 only). Seeds 1 to 6: before the push-out fix
 // above, four of them rose by 1e-5 to 4e-5. Seed 23 rose by 3.1e-4 until bounces were planned without the push-out
 // other contacts had given the bodies (docs/dynamics.md). Seeds 1 to 40 rise by at most 2.5e-14 (rounding). Not
-// every start passes: over 600 (StabilityLong.DISABLED_ElasticGasKeepsItsEnergyFrom600Starts), 10 rise above 1e-6
-// and 6 keep under 99%, an open defect (docs/dynamics.md, "Not done yet").
+// every start passes: over seeds 1 to 600 (bench/energy, `energy_sweep --gas 1 600`), 10 rise above 1e-6 and 6 keep
+// under 99%, an open defect (docs/dynamics.md, "Not done yet").
 TEST(Energy, ElasticGasKeepsItsEnergy) {
     for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u, 23u}) {
         const test::GasRun r = test::runElasticGas(seed, 60 * 60);
