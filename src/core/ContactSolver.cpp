@@ -82,6 +82,7 @@ struct RowBody {
     c.invMassB = sideB.invMass;
     c.invIB = sideB.invI;
     c.turns = sideA.turns || sideB.turns;
+    c.keepsPush = A.restitution > 0.0 || B.restitution > 0.0;
     // The paper's combination rules: restitution min, friction coefficients averaged.
     c.restitution = std::min(A.restitution, B.restitution);
     c.staticFriction = 0.5 * (A.staticFriction + B.staticFriction);
@@ -168,6 +169,7 @@ struct Bounce {
 
 Bounce planBounce(ContactConstraint& c, ContactConstraintPoint& cp, double vn, double separation,
                   const ContactPass& pass) {
+    vn += 0.0;  // an exact zero reads +0, whether the lane's block summed turning terms into it or not
     cp.relativeVelocity = cp.engaged ? std::min(cp.relativeVelocity, vn) : vn;  // the fastest meeting, for events
     cp.engaged = true;
     const double e = c.restitution;
@@ -270,12 +272,16 @@ MotionSide pushedSide(const ContactPass& pass, std::int32_t index) {
     return side;
 }
 
-// What the present substep has given a side provisionally, as a velocity: its push-out, and for a row that can
-// bounce its warm start (zero for a side the row cannot move: no row changes its velocity). A row that cannot
-// bounce plans only its meeting speed for events, which stays as the solve passes' push-out alone leaves it.
+// What the present substep has given a side provisionally, as a velocity: the push-out its rows still hold, and in
+// a solve pass, for a row that can bounce, its warm start (zero for a side the row cannot move: no row changes its
+// velocity). A row that cannot bounce plans only its meeting speed for events, which stays as the push-out alone
+// leaves it. By the relax pass every row has answered the warm start in the solve pass, so it is no longer a guess;
+// the push-out is, until the row that holds it relaxes (releasePushes). In the relax pass a row that cannot bounce
+// leaves nothing out (its bodies' other rows need not keep their push).
 MotionSide provisionalSide(const ContactPass& pass, const ContactConstraint& c, std::int32_t index, double invMass) {
+    if (!pass.useBias && !(pass.holdPushes && c.restitution > 0.0)) return {};
     MotionSide side = pushedSide(pass, index);
-    if (pass.warmStarts && c.restitution > 0.0 && rowMoves(index, invMass)) {
+    if (pass.useBias && pass.warmStarts && c.restitution > 0.0 && rowMoves(index, invMass)) {
         side.v += pass.warmStarts[index].v;
         side.w += pass.warmStarts[index].w;
     }
@@ -410,9 +416,9 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
                  const Start& start, const ContactPass& pass) {
     ContactConstraint c = row(block, cold, k);
     const int count = c.pointCount;
-    // Along each point's normal, what the substep gave the pair provisionally (solve passes): push-out and warm start.
+    // Along each point's normal, what the substep gave the pair provisionally: push-out and warm start.
     double provisional[2] = {0.0, 0.0};
-    if (pass.useBias) {
+    {
         const MotionSide givenA = provisionalSide(pass, c, c.indexA, c.invMassA);
         const MotionSide givenB = provisionalSide(pass, c, c.indexB, c.invMassB);
         for (int i = 0; i < count; ++i) provisional[i] = normalSpeed(c, givenA, givenB, c.points[i]);
@@ -422,9 +428,15 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
         if (start.started[i])
             bounce[i] = planBounce(c, c.points[i], start.before[i] - provisional[i], start.separation[i], pass);
     if (!bounce[0].active && !bounce[1].active) {
-        // A push that stays is remembered on both bodies for their other contacts.
+        // A push that stays is remembered on both bodies for their other contacts, until this row relaxes.
         for (int i = 0; i < count; ++i)
-            if (start.push[i] > 0.0) recordPush(pass, c, c.points[i], start.push[i]);
+            if (start.push[i] > 0.0) {
+                recordPush(pass, c, c.points[i], start.push[i]);
+                if (pass.holdPushes && c.keepsPush) {
+                    cold.lanes[k].push[i] += start.push[i];
+                    block.holdsPush = true;
+                }
+            }
     } else {
         auto side = [&](std::int32_t index, const WideSide& g) {
             MotionSide m;
@@ -454,6 +466,56 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
     return c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
 }
 
+// A block's rows relax: each point first takes back the push-out it holds (the relax pass would: it solves for the
+// accumulated impulse, so starting it from the impulse less the push gives the same answer), so that push is no
+// longer on the bodies when another row bounces off them later in this pass, nor in their push record.
+void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* states, const ContactPass& pass) {
+    for (int k = 0; k < kLanes; ++k) {
+        ContactBlockCold::Lane& lane = cold.lanes[k];
+        if (lane.push[0] == 0.0 && lane.push[1] == 0.0) continue;
+        const ContactConstraint c = row(block, cold, k);
+        MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
+        for (int i = 0; i < 2; ++i) {
+            if (lane.push[i] == 0.0) continue;
+            double& impulse = block.points[i].normalImpulse[k];
+            const double back = std::min(lane.push[i], impulse);
+            pushNormal(c, A, B, c.points[i], -back);
+            impulse -= back;
+            recordPush(pass, c, c.points[i], -lane.push[i]);
+            lane.push[i] = 0.0;
+        }
+        storeSide(states, c.indexA, c.invMassA, A);
+        storeSide(states, c.indexB, c.invMassB, B);
+    }
+    block.holdsPush = false;
+}
+
+// A solve pass over rows that keep their push-out: each point that did not start in this pass (startLane records
+// those) holds as push-out the part of its impulse its bias gave, at most all of it; its bodies' push record follows.
+void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const ContactPass& pass, const Wide (&pushes)[2],
+                      const WideMask (&started)[2]) {
+    for (int k = 0; k < kLanes; ++k) {
+        ContactBlockCold::Lane& lane = cold.lanes[k];
+        if (!lane.keepsPush) continue;
+        for (int i = 0; i < 2; ++i) {
+            if (started[i][k]) continue;
+            const double held = std::min(pushes[i][k], block.points[i].normalImpulse[k]);
+            if (held == lane.push[i]) continue;
+            const ContactConstraint c = row(block, cold, k);
+            recordPush(pass, c, c.points[i], held - lane.push[i]);
+            lane.push[i] = held;
+            if (held != 0.0) block.holdsPush = true;
+        }
+    }
+}
+
+// Each lane's push-out held, N s (both points).
+Wide heldPush(const ContactBlockCold& cold) {
+    Wide held;
+    for (int k = 0; k < kLanes; ++k) held[k] = cold.lanes[k].push[0] + cold.lanes[k].push[1];
+    return held;
+}
+
 // One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
 // immovable and not spinning; prepareContact decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
@@ -461,6 +523,8 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
 template <bool Turns, bool Bias>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
                                               const ContactPass& pass) {
+    if constexpr (!Bias)
+        if (c.holdsPush) releasePushes(c, cold, states, pass);
     WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
     const Wide zero{}, one = splat(1.0);
     const Wide nx = c.nx, ny = c.ny;
@@ -542,6 +606,14 @@ template <bool Turns, bool Bias>
         cp.normalImpulse = x + delta;
         totalNormal += cp.normalImpulse;
     }
+    if constexpr (Bias) {
+        if (pass.holdPushes && c.keepsPushes) {
+            Wide pushes[2];
+            for (int i = 0; i < 2; ++i)
+                pushes[i] = bias[i] < 0.0 ? -c.points[i].normalMass * massScale[i] * bias[i] : zero;
+            updateHeldPushes(c, cold, pass, pushes, started);
+        }
+    }
     if (any(started[0] | started[1])) {
         Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
         for (int i = 0; i < 2; ++i)
@@ -568,7 +640,11 @@ template <bool Turns, bool Bias>
     if (c.friction) {
         const Wide tx = -ny, ty = nx;
         const Wide vt = speedAlong<Turns>(A, B, tx, ty, c.rtA, c.rtB);
-        const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+        // The push-out a row holds is no load: friction on it would stay when the relax pass takes the push back.
+        Wide load = totalNormal;
+        if constexpr (Bias)
+            if (c.holdsPush) load = max(totalNormal - heldPush(cold), zero);  // a lane holding none keeps its bits
+        const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * load;
         // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a lane's
         // bits do not depend on whether a neighbour's friction made the block run this path.
         const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, zero - bound, bound);
@@ -668,7 +744,7 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
     ContactConstraint empty;
     empty.turns = false;
     for (int k = lanes; k < kLanes; ++k) setRow(block, cold, k, empty);
-    block.turns = block.friction = block.pairs = block.singles = false;
+    block.turns = block.friction = block.pairs = block.singles = block.keepsPushes = block.holdsPush = false;
 }
 
 void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstraint& c) {
@@ -696,6 +772,7 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
         lane.anchorB[i] = p.anchorB;
         lane.relativeVelocity[i] = p.relativeVelocity;
         lane.engaged[i] = p.engaged;
+        lane.push[i] = 0.0;
     }
     b.k11[k] = c.k11;
     b.k12[k] = c.k12;
@@ -713,6 +790,8 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     b.friction = b.friction || rubs;
     b.pairs = b.pairs || (c.pointCount > 0 && c.invDet > 0.0);
     b.singles = b.singles || (c.pointCount > 0 && !(c.invDet > 0.0));
+    b.keepsPushes = b.keepsPushes || c.keepsPush;
+    lane.keepsPush = c.keepsPush;
     const unsigned bitA = 1u << k, bitB = 1u << (k + kLanes);
     b.writes = (b.writes & ~(bitA | bitB)) | (c.invMassA != 0.0 ? bitA : 0u) | (c.invMassB != 0.0 ? bitB : 0u);
     lane.restitution = c.restitution;
@@ -742,6 +821,7 @@ ContactConstraint row(const ContactBlock& b, const ContactBlockCold& cold, int k
     c.tangentImpulse = b.tangentImpulse[k];
     c.sliding = b.sliding[k] != 0.0;
     c.turns = b.turns;
+    c.keepsPush = lane.keepsPush;
     c.pointCount = lane.pointCount;
     for (int i = 0; i < 2; ++i) {
         const ContactBlock::Point& q = b.points[i];

@@ -72,6 +72,7 @@ struct ContactConstraint {
     double tangentImpulse = 0.0;
     bool sliding = false;         // friction bound mu_d (true) or mu_s (false); the relax pass decides
     bool turns = true;            // a body can turn: false skips the angular terms (both stay unturned)
+    bool keepsPush = false;       // a body can bounce (restitution > 0): the row keeps its push-out apart (holdPushes)
     int pointCount = 0;
     ContactConstraintPoint points[2];
     double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
@@ -97,6 +98,8 @@ struct alignas(64) ContactBlock {
     bool friction = false;    // some lane has friction
     bool pairs = false;       // some lane solves its two points together (invDet > 0)
     bool singles = false;     // some lane in use solves its points one at a time
+    bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
+    bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
 };
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
@@ -108,7 +111,9 @@ struct alignas(64) ContactBlockCold {
         double restitution = 0.0, normalAcceleration = 0.0;
         Vec2 anchorA[2], anchorB[2];
         double relativeVelocity[2];
+        double push[2];  // N s of this substep's solve-pass push-out a point holds, still in its bodies' record
         bool engaged[2];
+        bool keepsPush;  // the row's ContactConstraint::keepsPush
     } lanes[kLanes];
 };
 
@@ -150,6 +155,7 @@ struct ContactPass {
     RowsBase* rowsBase = nullptr;     // per awake body, when the warm start runs on the bodies: bounces go here
     const WarmStartVelocity* warmStarts = nullptr;  // per awake body, what this substep's warm start gave it: read
                                                     // only by rows that can bounce (restitution > 0)
+    bool holdPushes = false;  // rows that keep their push-out apart do (needs a relax pass: it takes the push back)
 };
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code = WideCode::Best);

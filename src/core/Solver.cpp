@@ -453,6 +453,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const bool storeInRelax = settings.relaxIterations > 0;
     ContactPass contactPass = contactPassSettings;
     contactPass.pushes = pushVelocities.data();
+    contactPass.holdPushes = settings.relaxIterations > 0;  // the relax pass takes held push-out back
     // After the first substep, the warm start runs on the bodies (integrateVelocity), not the rows: the same to
     // rounding, without a pass. Not with joints (their J turns with the bodies), an effect acting between substeps,
     // or an exact-continuous bullet: a bullet can leave its rows' geometry metres and radians behind within a step,
