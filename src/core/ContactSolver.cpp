@@ -509,8 +509,9 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
     }
 }
 
-// Each lane's push-out held, N s (both points).
-Wide heldPush(const ContactBlockCold& cold) {
+// Each lane's push-out held, N s (both points). Inlined like every helper that passes a Wide by value: the caller
+// may be built for AVX, where a Wide travels in a register, not in memory as in a baseline-built function.
+[[gnu::always_inline]] inline Wide heldPush(const ContactBlockCold& cold) {
     Wide held;
     for (int k = 0; k < kLanes; ++k) held[k] = cold.lanes[k].push[0] + cold.lanes[k].push[1];
     return held;
