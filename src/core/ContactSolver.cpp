@@ -477,10 +477,10 @@ void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* stat
         MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
         for (int i = 0; i < 2; ++i) {
             if (lane.push[i] == 0.0) continue;
-            double& impulse = block.points[i].normalImpulse[k];
+            const double impulse = block.points[i].normalImpulse[k];  // clang binds no reference to a lane
             const double back = std::min(lane.push[i], impulse);
             pushNormal(c, A, B, c.points[i], -back);
-            impulse -= back;
+            block.points[i].normalImpulse[k] = impulse - back;
             recordPush(pass, c, c.points[i], -lane.push[i]);
             lane.push[i] = 0.0;
         }
