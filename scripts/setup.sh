@@ -2,7 +2,7 @@
 # Installs everything physim needs on a Debian machine. Idempotent: a second run only checks.
 #   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML (and X11), Dear ImGui, GoogleTest,
 #     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against),
-#     clang with its libFuzzer runtime (the fuzz preset)
+#     clang with its sanitizer and libFuzzer runtimes (the asan preset)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
 #   - Dask (`dask`, `distributed` from PyPI) in the same environment: scripts/study.sh --dask runs cases on a cluster
 set -euo pipefail

@@ -3,8 +3,7 @@
 #   scripts/test.sh                 the 'default' preset (release with debug info)
 #   scripts/test.sh asan cuda ...   the named presets, one after the other
 # The default preset also runs the long stability cases (ctest preset stability-long, docs/stability.md);
-# 'fuzz' runs scripts/fuzz.sh (libFuzzer targets, 60 s each, then the core tests as clang builds them) instead of a
-# ctest preset.
+# 'fuzz' runs scripts/fuzz.sh (the libFuzzer targets of the asan build, 60 s each) instead of a ctest preset.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 "$PHYSIM_ROOT_DIR/scripts/setup.sh"

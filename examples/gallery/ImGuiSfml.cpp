@@ -99,8 +99,8 @@ bool ImGuiSfml::processEvent(const sf::Event& event) {
         case sf::Event::KeyPressed:
         case sf::Event::KeyReleased: {
             const bool down = event.type == sf::Event::KeyPressed;
-            if (event.key.code >= 0 && event.key.code < static_cast<int>(IM_ARRAYSIZE(io.KeysDown)))
-                io.KeysDown[event.key.code] = down;
+            const int key = static_cast<int>(event.key.code);  // sf::Keyboard::Unknown is -1
+            if (key >= 0 && key < static_cast<int>(IM_ARRAYSIZE(io.KeysDown))) io.KeysDown[key] = down;
             io.KeyCtrl = event.key.control;
             io.KeyShift = event.key.shift;
             io.KeyAlt = event.key.alt;

@@ -14,7 +14,6 @@ namespace {
 
 constexpr double kG = 9.81;
 constexpr double kDt = 1.0 / 60.0;
-constexpr double kH = kDt / 8;  // the default substep
 
 WorldSettings weightless() {
     WorldSettings s;
