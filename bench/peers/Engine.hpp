@@ -32,10 +32,14 @@ struct Engine {
     std::string name;  ///< "physim", "box2d-2.4.1", ...
     int threads = 1;   ///< threads the engine was asked to use
     std::function<std::unique_ptr<EngineRun>(const Scene&)> start;
+    int substeps = 0;  ///< physim's substeps per step; 0 for a peer, whose solver counts differently
 };
 
 /// physim with one thread, and (when the machine has more than one) with every hardware thread.
-std::vector<Engine> physimEngines();
+/// physim at its default settings with one thread, and (when the machine has more than one) with every hardware
+/// thread; then one single-thread physim per count in `substeps`, named physim-substeps<n>: the same world with
+/// WorldSettings::substeps = n, its contact spring at min(contactHertz, a quarter of the substep rate) as always.
+std::vector<Engine> physimEngines(const std::vector<int>& substeps = {});
 
 /// The engines physim is measured against in this build. `missing` says why there are none.
 struct Peers {

@@ -36,6 +36,7 @@ struct Options {
     std::vector<std::string> engines;  // empty: all
     int repeats = 3;
     int steps = 500;
+    std::vector<int> substeps;  // extra one-thread physim runs at these substep counts
     std::string json;
     bool profile = false;
 };
@@ -62,20 +63,22 @@ struct Row {
 
 [[noreturn]] void usageError(const std::string& message) {
     std::cerr << "peer_bench: " << message << "\n"
-              << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] [--json FILE] "
-                 "[--profile]\n"
+              << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] "
+                 "[--substeps a,b,...] [--json FILE] [--profile]\n"
               << "  --scenes   large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids, pyramid_grid<R> "
                  "(R rows of 20 base-10 pyramids), scaling (grids of 1k to 21k boxes, for the fit), all (default)\n"
               << "  --engines  physim and the peers this build has (default: all of them)\n"
               << "  --repeats  runs of each scene and engine, n >= 1 (default 3)\n"
               << "  --steps    steps per run, n >= " << kUntimedSteps + 1 << " (default 500); steps "
               << kUntimedSteps + 1 << "..n are timed\n"
+              << "  --substeps also run physim on one thread at each substep count (1 to 1000; engine physim-substeps<n>) "
+                 "and fit its step time against the count\n"
               << "  --json     also write the rows to FILE\n"
               << "  --profile  also print physim's (and the peers') time per stage\n";
     std::exit(2);
 }
 
-int parseCount(const std::string& option, const std::string& text, int least) {
+int parseCount(const std::string& option, const std::string& text, int least, long most = 1000000) {
     std::size_t used = 0;
     long value = 0;
     try {
@@ -83,8 +86,9 @@ int parseCount(const std::string& option, const std::string& text, int least) {
     } catch (const std::exception&) {
         used = 0;
     }
-    if (used != text.size() || value < least || value > 1000000)
-        usageError(option + " wants a whole number from " + std::to_string(least) + " to 1000000, not '" + text + "'");
+    if (used != text.size() || value < least || value > most)
+        usageError(option + " wants a whole number from " + std::to_string(least) + " to " + std::to_string(most) +
+                   ", not '" + text + "'");
     return static_cast<int>(value);
 }
 
@@ -105,7 +109,8 @@ Options parse(int argc, char** argv) {
             o.profile = true;
             continue;
         }
-        if (arg != "--scenes" && arg != "--engines" && arg != "--repeats" && arg != "--steps" && arg != "--json")
+        if (arg != "--scenes" && arg != "--engines" && arg != "--repeats" && arg != "--steps" && arg != "--substeps" &&
+            arg != "--json")
             usageError("unknown option '" + arg + "'");
         if (i + 1 >= argc) usageError(arg + " needs a value");
         const std::string value = argv[++i];
@@ -119,6 +124,10 @@ Options parse(int argc, char** argv) {
             o.repeats = parseCount(arg, value, 1);
         } else if (arg == "--steps") {
             o.steps = parseCount(arg, value, kUntimedSteps + 1);
+        } else if (arg == "--substeps") {
+            const std::vector<std::string> counts = splitList(value);
+            if (counts.empty()) usageError("--substeps needs at least one count");
+            for (const std::string& c : counts) o.substeps.push_back(parseCount(arg, c, 1, 1000));
         } else {
             o.json = value;
         }
@@ -235,6 +244,35 @@ void printFit(const std::vector<Row>& rows, const std::vector<Engine>& engines) 
     if (!printed) std::cout << "\n(no fit: add --scenes scaling for at least 3 pyramid grids of 1k to 21k boxes)\n";
 }
 
+// physim's one-thread step time against its substep count, per scene: a least-squares line ms = perStep +
+// perSubstep * substeps over the counts that ran (at least 2). perStep is the work done once a step (contacts,
+// row preparation, colouring), perSubstep that of one substep's passes and body loops.
+void printSubstepFit(const std::vector<Row>& rows) {
+    bool printed = false;
+    std::vector<std::string> scenes;
+    for (const Row& r : rows)
+        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) scenes.push_back(r.scene);
+    for (const std::string& scene : scenes) {
+        std::vector<std::pair<double, double>> pts;  // (substeps, min ms)
+        for (const Row& r : rows)
+            if (r.scene == scene && r.engine->substeps > 0 && r.engine->threads == 1)
+                pts.emplace_back(r.engine->substeps, r.min());
+        const auto [fewest, most] = std::minmax_element(pts.begin(), pts.end());
+        if (pts.size() < 2 || fewest->first == most->first) continue;
+        double mx = 0, my = 0;
+        for (const auto& [x, y] : pts) mx += x, my += y;
+        mx /= pts.size(), my /= pts.size();
+        double sxy = 0, sxx = 0;
+        for (const auto& [x, y] : pts) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+        const double perSubstep = sxy / sxx, perStep = my - perSubstep * mx;
+        if (!printed) std::cout << "\nphysim's step time against its substeps (one thread, min over repeats):\n";
+        printed = true;
+        std::cout << "  " << scene << ": " << fixed(perStep, 4) << " ms per step + " << fixed(perSubstep, 4)
+                  << " ms per substep (" << pts.size() << " runs, " << fixed(fewest->first, 0) << ".."
+                  << fixed(most->first, 0) << " substeps)\n";
+    }
+}
+
 std::string jsonNumber(double v) {
     if (!std::isfinite(v)) return "null";
     char buf[32];
@@ -276,17 +314,21 @@ int main(int argc, char** argv) {
     }
 
     const Peers peers = peerEngines();
-    std::vector<Engine> engines = physimEngines();
+    std::vector<Engine> engines = physimEngines(o.substeps);
     engines.insert(engines.end(), peers.engines.begin(), peers.engines.end());
     for (const std::string& name : o.engines)
         if (std::none_of(engines.begin(), engines.end(), [&](const Engine& e) { return e.name == name; }))
             usageError("unknown engine '" + name + "' (this build has physim" +
                        (peers.engines.empty() ? std::string() : " and " + peers.engines.front().name) + ")");
+    // --substeps runs are physim's: `--engines physim` keeps them.
+    auto selected = [&](const std::string& name) {
+        return std::find(o.engines.begin(), o.engines.end(), name) != o.engines.end();
+    };
     if (!o.engines.empty())
         engines.erase(std::remove_if(engines.begin(), engines.end(),
                                      [&](const Engine& e) {
-                                         return std::find(o.engines.begin(), o.engines.end(), e.name) ==
-                                                o.engines.end();
+                                         return !selected(e.name) &&
+                                                !(e.name.rfind("physim-substeps", 0) == 0 && selected("physim"));
                                      }),
                       engines.end());
     if (!peers.missing.empty()) std::cout << "note: " << peers.missing << "\n\n";
@@ -315,6 +357,7 @@ int main(int argc, char** argv) {
     printTable(rows, peers.engines);
     if (o.profile) printProfile(rows);
     printFit(rows, engines);
+    printSubstepFit(rows);
     if (json.is_open()) {
         writeJson(json, rows);
         if (!json) {

@@ -2,6 +2,7 @@
 
 #include "physim/core/World.hpp"
 
+#include <string>
 #include <thread>
 
 namespace peers {
@@ -10,7 +11,7 @@ namespace {
 
 class PhysimRun final : public EngineRun {
 public:
-    PhysimRun(const Scene& scene, int threads) : world_(settings(threads)) {
+    PhysimRun(const Scene& scene, int threads, int substeps) : world_(settings(threads, substeps)) {
         for (const ShapeSpec& s : scene.statics) add(s, physim::BodyType::Static);
         ids_.reserve(scene.dynamics.size());
         for (const ShapeSpec& s : scene.dynamics) ids_.push_back(add(s, physim::BodyType::Dynamic));
@@ -34,11 +35,12 @@ public:
     }
 
 private:
-    static physim::WorldSettings settings(int threads) {
-        physim::WorldSettings s;  // substeps and iterations stay at physim's defaults
+    static physim::WorldSettings settings(int threads, int substeps) {
+        physim::WorldSettings s;  // iterations, springs and slop stay at physim's defaults
         s.gravity = {0.0, kGravity};
         s.enableSleep = false;
         s.threads = threads;
+        s.substeps = substeps;
         return s;
     }
 
@@ -60,16 +62,20 @@ private:
     std::vector<physim::BodyId> ids_;
 };
 
-Engine physim(int threads, int reported) {
-    return {"physim", reported, [threads](const Scene& s) { return std::make_unique<PhysimRun>(s, threads); }};
+Engine physim(const std::string& name, int threads, int reported, int substeps) {
+    return {name, reported,
+            [threads, substeps](const Scene& s) { return std::make_unique<PhysimRun>(s, threads, substeps); },
+            substeps};
 }
 
 }  // namespace
 
-std::vector<Engine> physimEngines() {
-    std::vector<Engine> out{physim(1, 1)};
+std::vector<Engine> physimEngines(const std::vector<int>& substeps) {
+    const int defaultSubsteps = physim::WorldSettings{}.substeps;
+    std::vector<Engine> out{physim("physim", 1, 1, defaultSubsteps)};
     const int all = static_cast<int>(std::thread::hardware_concurrency());
-    if (all > 1) out.push_back(physim(0, all));  // 0: every hardware thread
+    if (all > 1) out.push_back(physim("physim", 0, all, defaultSubsteps));  // 0: every hardware thread
+    for (int n : substeps) out.push_back(physim("physim-substeps" + std::to_string(n), 1, 1, n));
     return out;
 }
 

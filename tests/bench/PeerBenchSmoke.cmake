@@ -57,5 +57,21 @@ foreach(want "physim:1" ${PEER})
   endif()
 endforeach()
 
-bench_smoke_usage_errors("${PEER_BENCH}" "--repeats 0" "--scenes no_such_scene" "--steps 100" "--frobnicate")
+# --substeps adds a one-thread physim row per count, kept by --engines physim, and a line fitted through the
+# substep counts that ran (the default's and this one): two points, so the line exists; its values are noise here.
+bench_smoke_run("${PEER_BENCH}" "${WORK_DIR}/substeps.json" "\\| physim-substeps4 \\| 1 \\| 210 \\|"
+  --scenes pyramid20 --engines physim --substeps 4 --repeats 1 --steps 110 --json "${WORK_DIR}/substeps.json")
+string(JSON rows LENGTH "${bench_json}")
+math(EXPR last "${rows} - 1")
+string(JSON last_engine GET "${bench_json}" ${last} engine)
+string(JSON last_threads GET "${bench_json}" ${last} threads)
+if(NOT last_engine STREQUAL "physim-substeps4" OR NOT last_threads EQUAL 1)
+  message(FATAL_ERROR "the last row is ${last_engine} on ${last_threads} threads, not physim-substeps4 on 1:\n${bench_json}")
+endif()
+if(NOT bench_stdout MATCHES "pyramid20: -?[0-9.]+ ms per step \\+ -?[0-9.]+ ms per substep \\(2 runs, 4\\.\\.[0-9]+ substeps\\)")
+  message(FATAL_ERROR "no fit of step time against substeps:\n${bench_stdout}")
+endif()
+
+bench_smoke_usage_errors("${PEER_BENCH}" "--repeats 0" "--scenes no_such_scene" "--steps 100" "--frobnicate"
+  "--substeps 0" "--substeps 4,x" "--substeps 1001")
 file(REMOVE_RECURSE "${WORK_DIR}")
