@@ -35,7 +35,6 @@ struct Engine {
     int substeps = 0;  ///< physim's substeps per step; 0 for a peer, whose solver counts differently
 };
 
-/// physim with one thread, and (when the machine has more than one) with every hardware thread.
 /// physim at its default settings with one thread, and (when the machine has more than one) with every hardware
 /// thread; then one single-thread physim per count in `substeps`, named physim-substeps<n>: the same world with
 /// WorldSettings::substeps = n, its contact spring at min(contactHertz, a quarter of the substep rate) as always.

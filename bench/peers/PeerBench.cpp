@@ -219,6 +219,19 @@ void printProfile(const std::vector<Row>& rows) {
     }
 }
 
+// The least-squares line y = intercept + slope x through the points (at least two, not all at one x).
+struct Line {
+    double intercept = 0.0, slope = 0.0;
+};
+Line leastSquares(const std::vector<std::pair<double, double>>& pts) {
+    double mx = 0, my = 0;
+    for (const auto& [x, y] : pts) mx += x, my += y;
+    mx /= pts.size(), my /= pts.size();
+    double sxy = 0, sxx = 0;
+    for (const auto& [x, y] : pts) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+    return {my - sxy / sxx * mx, sxy / sxx};
+}
+
 // Least-squares slope of log(ms) against log(bodies) over the pyramid grids of 1 000 to about 21 000 boxes,
 // per engine: step time ~ bodies^k.
 void printFit(const std::vector<Row>& rows, const std::vector<Engine>& engines) {
@@ -229,15 +242,11 @@ void printFit(const std::vector<Row>& rows, const std::vector<Engine>& engines) 
             if (r.engine == &e && r.pyramidGrid && r.bodies >= 1000 && r.bodies <= 21000)
                 pts.emplace_back(std::log(static_cast<double>(r.bodies)), std::log(r.min()));
         if (pts.size() < 3) continue;
-        double mx = 0, my = 0;
-        for (const auto& [x, y] : pts) mx += x, my += y;
-        mx /= pts.size(), my /= pts.size();
-        double sxy = 0, sxx = 0;
-        for (const auto& [x, y] : pts) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
+        const double exponent = leastSquares(pts).slope;
         if (!printed) std::cout << "\nStep time against body count (grids of base-10 pyramids, min over repeats):\n";
         printed = true;
         const auto [fewest, most] = std::minmax_element(pts.begin(), pts.end());
-        std::cout << "  " << e.name << " x" << e.threads << ": ms/step ~ bodies^" << fixed(sxy / sxx, 2) << " ("
+        std::cout << "  " << e.name << " x" << e.threads << ": ms/step ~ bodies^" << fixed(exponent, 2) << " ("
                   << pts.size() << " grids, " << fixed(std::exp(fewest->first), 0) << ".."
                   << fixed(std::exp(most->first), 0) << " bodies)\n";
     }
@@ -257,17 +266,13 @@ void printSubstepFit(const std::vector<Row>& rows) {
         for (const Row& r : rows)
             if (r.scene == scene && r.engine->substeps > 0 && r.engine->threads == 1)
                 pts.emplace_back(r.engine->substeps, r.min());
+        if (pts.size() < 2) continue;
         const auto [fewest, most] = std::minmax_element(pts.begin(), pts.end());
-        if (pts.size() < 2 || fewest->first == most->first) continue;
-        double mx = 0, my = 0;
-        for (const auto& [x, y] : pts) mx += x, my += y;
-        mx /= pts.size(), my /= pts.size();
-        double sxy = 0, sxx = 0;
-        for (const auto& [x, y] : pts) sxy += (x - mx) * (y - my), sxx += (x - mx) * (x - mx);
-        const double perSubstep = sxy / sxx, perStep = my - perSubstep * mx;
+        if (fewest->first == most->first) continue;
+        const Line line = leastSquares(pts);  // ms = per step + per substep x substeps
         if (!printed) std::cout << "\nphysim's step time against its substeps (one thread, min over repeats):\n";
         printed = true;
-        std::cout << "  " << scene << ": " << fixed(perStep, 4) << " ms per step + " << fixed(perSubstep, 4)
+        std::cout << "  " << scene << ": " << fixed(line.intercept, 4) << " ms per step + " << fixed(line.slope, 4)
                   << " ms per substep (" << pts.size() << " runs, " << fixed(fewest->first, 0) << ".."
                   << fixed(most->first, 0) << " substeps)\n";
     }
@@ -327,8 +332,7 @@ int main(int argc, char** argv) {
     if (!o.engines.empty())
         engines.erase(std::remove_if(engines.begin(), engines.end(),
                                      [&](const Engine& e) {
-                                         return !selected(e.name) &&
-                                                !(e.name.rfind("physim-substeps", 0) == 0 && selected("physim"));
+                                         return !selected(e.name) && !(e.substeps > 0 && selected("physim"));
                                      }),
                       engines.end());
     if (!peers.missing.empty()) std::cout << "note: " << peers.missing << "\n\n";
