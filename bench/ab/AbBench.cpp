@@ -20,8 +20,9 @@
 #include <vector>
 
 namespace peers {
-std::vector<Engine> physimEngines_a();
-std::vector<Engine> physimEngines_b();
+// physimEngines (Engine.hpp) of each build, renamed by scripts/ab.sh.
+std::vector<Engine> physimEngines_a(const std::vector<int>& substeps);
+std::vector<Engine> physimEngines_b(const std::vector<int>& substeps);
 }  // namespace peers
 
 namespace {
@@ -84,7 +85,7 @@ double seconds(peers::EngineRun& run) {
 
 int main(int argc, char** argv) {
     const Options o = parse(argc, argv);
-    std::vector<peers::Engine> a = peers::physimEngines_a(), b = peers::physimEngines_b();
+    std::vector<peers::Engine> a = peers::physimEngines_a({}), b = peers::physimEngines_b({});
     if (o.swap) std::swap(a, b);
     std::printf("| scene | threads | A ms/step | B ms/step | B / A | one round's spread |\n|---|---|---|---|---|---|\n");
     for (const std::string& name : o.scenes) {

@@ -14,10 +14,17 @@
 // joins whatever stage is current, and one that starts after the end returns at once. Which thread runs a chunk
 // never changes what the chunk computes (the loops write only their own items), so results stay bit-identical.
 //
-// Every shared variable is a sequentially consistent atomic (a chunk's exception: under a mutex). A chunk counter
-// holds its stage's number beside the next chunk, and the driver resets the counters before it writes the stage's
-// description: a helper that read a description newer than the stage it saw finds the counters moved on, so it
-// can claim nothing with it.
+// A loop's cost on two threads is mostly cache lines moving between the cores (100 to 450 ns each on the
+// machines measured, docs/performance.md), so each loop moves as few as it can, and no thread waits on a store:
+//   - the stage's number and description share one line, written by the driver as a sequence lock (odd while
+//     it writes), so a helper gets the whole stage in one move;
+//   - a member's chunk counter is written by the others only when they take from its run: a counter tagged with
+//     an older stage counts as untouched (chunk 0), so the driver resets nothing between loops;
+//   - finished chunks add to a running total, which the driver compares with the sum of the loops' chunks.
+// Stores are releases and loads acquires (no full fences): a helper sees a stage's description and the previous
+// loops' writes once it sees the stage's number, and the driver sees the chunks' writes once it sees the total.
+// A helper that read a stage late can claim nothing with it: every counter it could take from is then tagged
+// with that stage and used up, or with a newer one.
 
 #include <algorithm>
 #include <atomic>
@@ -55,25 +62,14 @@ public:
             return;
         }
         inStage_ = true;
-        const std::uint64_t stage = stage_.load() + 1;
-        // Counters first (a helper holding an older stage's number can claim nothing from here on), then the
-        // description, then the stage number that lets helpers read it.
-        std::size_t total = 0;  // each member's run is an equal share of the items, in chunks of `grain`
-        for (int m = 0; m < members(); ++m) {
-            total += (runBegin(m + 1, n) - runBegin(m, n) + grain - 1) / grain;
-            counters_[static_cast<std::size_t>(m)].next.store(stage << 32);
-        }
-        done_.store(0);
-        context_.store(const_cast<void*>(static_cast<const void*>(&fn)));
-        call_.store(&callChunk<Fn>);
-        items_.store(n);
-        grain_.store(grain);
-        stage_.store(stage);
-        work(0, stage);
-        for (unsigned spins = 0; done_.load() != total; ++spins) pause(spins);
+        const std::uint64_t stage = ++stageCount_;
+        for (int m = 0; m < members(); ++m) doneTarget_ += chunkCount(m, n, grain);  // each member's run
+        publish(stage, {&fn, &callChunk<Fn>, n, grain});
+        work(0, stage, description_);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != doneTarget_; ++spins) pause(spins);
         inStage_ = false;
-        if (failed_.load()) {
-            failed_.store(false);
+        if (failed_.load(std::memory_order_acquire)) {
+            failed_.store(false, std::memory_order_relaxed);
             std::rethrow_exception(error_);
         }
     }
@@ -82,13 +78,14 @@ public:
     void help(int member) noexcept {
         std::uint64_t seen = 0;
         for (;;) {
-            std::uint64_t stage = stage_.load();
-            for (unsigned spins = 0; stage == seen; stage = stage_.load(), ++spins) {
-                if (finished_.load()) return;
+            std::uint64_t stage = 0;
+            Description d;
+            for (unsigned spins = 0; !read(seen, stage, d); ++spins) {
+                if (finished_.load(std::memory_order_acquire)) return;
                 pause(spins);
             }
             seen = stage;
-            work(member, stage);
+            work(member, stage, d);
         }
     }
 
@@ -96,12 +93,16 @@ public:
     /// still be inside help(). Allocates nothing, so a team made once serves every step.
     void start() {
         driver_ = std::this_thread::get_id();
-        stage_.store(0);
-        finished_.store(false);
+        stageCount_ = 0;
+        doneTarget_ = 0;
+        done_.store(0, std::memory_order_relaxed);
+        for (Counter& c : counters_) c.next.store(0, std::memory_order_relaxed);
+        sequence_.store(0, std::memory_order_relaxed);
+        finished_.store(false, std::memory_order_release);
     }
 
     /// Driver: no more stages in this run; the helpers return.
-    void finish() { finished_.store(true); }
+    void finish() { finished_.store(true, std::memory_order_release); }
 
 private:
     using Call = void (*)(void* context, std::size_t begin, std::size_t end, int member);
@@ -111,38 +112,74 @@ private:
         (*static_cast<Fn*>(context))(begin, end, member);
     }
 
+    struct Description {
+        void* context = nullptr;
+        Call call = nullptr;
+        std::size_t items = 0, grain = 0;
+    };
+
     // The first item of member's run (members() gives n).
     std::size_t runBegin(int member, std::size_t n) const {
         return n * static_cast<std::size_t>(member) / counters_.size();
     }
+    std::size_t chunkCount(int member, std::size_t n, std::size_t grain) const {
+        return (runBegin(member + 1, n) - runBegin(member, n) + grain - 1) / grain;
+    }
+
+    // Driver: stage s is sequence 2 s, written as 2 s - 1 while its description changes.
+    void publish(std::uint64_t stage, const Description& d) {
+        description_ = d;
+        sequence_.store(2 * stage - 1, std::memory_order_relaxed);
+        std::atomic_thread_fence(std::memory_order_release);
+        context_.store(const_cast<void*>(d.context), std::memory_order_relaxed);
+        call_.store(d.call, std::memory_order_relaxed);
+        items_.store(d.items, std::memory_order_relaxed);
+        grain_.store(d.grain, std::memory_order_relaxed);
+        sequence_.store(2 * stage, std::memory_order_release);
+    }
+
+    // Helper: a stage newer than `seen`, whole, into stage and d; false if there is none yet (or it is being
+    // written).
+    bool read(std::uint64_t seen, std::uint64_t& stage, Description& d) const {
+        const std::uint64_t before = sequence_.load(std::memory_order_acquire);
+        if (before & 1 || before / 2 == seen) return false;
+        d = {context_.load(std::memory_order_relaxed), call_.load(std::memory_order_relaxed),
+             items_.load(std::memory_order_relaxed), grain_.load(std::memory_order_relaxed)};
+        std::atomic_thread_fence(std::memory_order_acquire);
+        if (sequence_.load(std::memory_order_relaxed) != before) return false;
+        stage = before / 2;
+        return true;
+    }
 
     // Takes chunks of `stage`: the member's own run first, then the others' in turn.
-    void work(int member, std::uint64_t stage) noexcept {
-        void* const context = context_.load();
-        const Call call = call_.load();
-        const std::size_t n = items_.load(), grain = grain_.load();
-        std::size_t finished = 0;  // chunks this member ran, counted into done_ once it has no more to take
+    void work(int member, std::uint64_t stage, const Description& d) noexcept {
+        std::size_t finished = 0;  // chunks this member ran, added to done_ once it has no more to take
         for (int k = 0; k < members(); ++k) {
             const int owner = (member + k) % members();
-            const std::size_t first = runBegin(owner, n), last = runBegin(owner + 1, n);
-            const std::uint64_t end = (last - first + grain - 1) / grain;
+            const std::size_t first = runBegin(owner, d.items), last = runBegin(owner + 1, d.items);
+            const std::uint64_t end = chunkCount(owner, d.items, d.grain);
             std::atomic<std::uint64_t>& next = counters_[static_cast<std::size_t>(owner)].next;
-            std::uint64_t taken = next.load();
-            while (taken >> 32 == stage && (taken & 0xffffffffu) < end) {
-                if (!next.compare_exchange_weak(taken, taken + 1)) continue;
-                const std::size_t begin = first + static_cast<std::size_t>(taken & 0xffffffffu) * grain;
+            std::uint64_t taken = next.load(std::memory_order_relaxed);
+            for (;;) {
+                const std::uint64_t tag = taken >> 32;
+                if (tag > stage) break;  // a newer stage: this one is over
+                const std::uint64_t chunk = tag == stage ? taken & 0xffffffffu : 0;  // older tag: untouched run
+                if (chunk >= end) break;
+                if (!next.compare_exchange_weak(taken, stage << 32 | (chunk + 1), std::memory_order_relaxed))
+                    continue;
+                const std::size_t begin = first + static_cast<std::size_t>(chunk) * d.grain;
                 try {
-                    call(context, begin, std::min(last, begin + grain), member);
+                    d.call(d.context, begin, std::min(last, begin + d.grain), member);
                 } catch (...) {
                     std::lock_guard<std::mutex> lock(errorMutex_);
-                    if (!failed_.load()) error_ = std::current_exception();
-                    failed_.store(true);
+                    if (!failed_.load(std::memory_order_relaxed)) error_ = std::current_exception();
+                    failed_.store(true, std::memory_order_relaxed);
                 }
                 ++finished;
-                taken = next.load();
+                taken = next.load(std::memory_order_relaxed);
             }
         }
-        if (finished > 0) done_.fetch_add(finished);
+        if (finished > 0) done_.fetch_add(finished, std::memory_order_release);
     }
 
     // Waiting: spin briefly (stages are microseconds apart), then give the core away (a 2-core machine may have
@@ -161,15 +198,19 @@ private:
         std::atomic<std::uint64_t> next{0};  // stage << 32 | the next chunk of this member's run (0 its first)
     };
     std::vector<Counter> counters_;
+    // The driver's own state.
     std::thread::id driver_;  // set by start(); no thread drives before it
     bool inStage_ = false;  // the driver is inside forEach (a nested call runs inline)
-    // The stage's description (written by the driver before it publishes the stage number).
+    std::uint64_t stageCount_ = 0;
+    std::size_t doneTarget_ = 0;  // chunks of every stage so far: done_ reaches it when the present one is done
+    Description description_;
+    // The stage, one line: its sequence number, then its description.
+    alignas(64) std::atomic<std::uint64_t> sequence_{0};
     std::atomic<void*> context_{nullptr};
     std::atomic<Call> call_{nullptr};
     std::atomic<std::size_t> items_{0}, grain_{0};
-    alignas(64) std::atomic<std::uint64_t> stage_{0};
-    alignas(64) std::atomic<std::size_t> done_{0};
-    std::atomic<bool> finished_{false};
+    alignas(64) std::atomic<std::size_t> done_{0};  // chunks finished in this run
+    alignas(64) std::atomic<bool> finished_{false};
     std::atomic<bool> failed_{false};
     std::mutex errorMutex_;
     std::exception_ptr error_;

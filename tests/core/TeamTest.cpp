@@ -73,6 +73,32 @@ TEST(Team, EveryItemOnceWithAHelperThatJoinsLate) {
     for (std::size_t i = 0; i < hits.size(); ++i) ASSERT_EQ(hits[i].load(), loops) << "item " << i;
 }
 
+TEST(Team, LoopsOfChangingSizesNeverMix) {
+    // Thousands of short loops, each of its own size and grain, on three members: a helper that read a loop late
+    // must never run a chunk of it (or of the next) with the other's size, nor a chunk after its loop returned.
+    Team team(3);
+    team.start();
+    std::thread helpers[2];
+    for (int m = 0; m < 2; ++m) helpers[m] = std::thread([&team, m] { team.help(m + 1); });
+    std::atomic<int> current{-1};
+    std::atomic<int> strays{0};
+    for (int k = 0; k < 20000; ++k) {
+        const std::size_t n = 2 + static_cast<std::size_t>(k * 37 % 97), grain = 1 + static_cast<std::size_t>(k % 5);
+        std::atomic<std::size_t> covered{0};
+        current.store(k);
+        auto body = [&, k, n, grain](std::size_t begin, std::size_t end, int) {
+            if (current.load() != k || end > n || begin >= end || end - begin > grain) strays.fetch_add(1);
+            covered.fetch_add(end - begin);
+        };
+        team.forEach(n, grain, body);
+        current.store(-1);
+        ASSERT_EQ(covered.load(), n) << "loop " << k;
+    }
+    team.finish();
+    for (std::thread& h : helpers) h.join();
+    EXPECT_EQ(strays.load(), 0);
+}
+
 TEST(Team, DriverAloneFinishesEveryLoop) {
     // No helper ever comes: the driver takes every chunk itself and returns.
     Team team(4);
