@@ -20,9 +20,9 @@
 #include <vector>
 
 namespace peers {
-// physimEngines (Engine.hpp) of each build, renamed by scripts/ab.sh.
-std::vector<Engine> physimEngines_a(const std::vector<int>& substeps);
-std::vector<Engine> physimEngines_b(const std::vector<int>& substeps);
+// physimEngines (Engine.hpp) of each build, renamed by scripts/ab.sh; declared by its type, so that they follow it.
+decltype(physimEngines) physimEngines_a;
+decltype(physimEngines) physimEngines_b;
 }  // namespace peers
 
 namespace {
