@@ -2,6 +2,7 @@
 
 #include "ContactData.hpp"
 #include "Impulse.hpp"
+#include "Prefetch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,7 @@ struct RowBody {
 };
 
 // From the solver's copy of an awake body (index >= 0) or, for a static or sleeping one, from its record.
-// Inlined into prepareRow, so the fields go to registers, not through memory.
+// Inlined into the preparation, so the fields go to registers, not through memory.
 [[gnu::always_inline]] inline RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record) {
     RowBody out;
     if (index == kNullIndex) {  // static or asleep: immovable, no acceleration
@@ -70,83 +71,214 @@ struct RowBody {
     return out;
 }
 
-[[gnu::always_inline]] inline void prepareContact(ContactConstraint& c, const ContactData& contact, const RowBody& A,
-                                                  const RowBody& B) {
+// The rules every lane of a block keeps, and the block's marks, from its lanes' fields: a point past its row's
+// pointCount has zero fields (no mass, no impulse), a frictionless row holds no tangent impulse, and the rows write
+// a side with mass. `turns` and `holdsPush` are the caller's to set.
+[[gnu::always_inline]] inline void markBlock(ContactBlock& b, const ContactBlockCold& cold) {
+    const Wide zero = splat(0.0);
+    Wide count;
+    bool keepsPushes = false;
+    unsigned writes = 0;
+    for (int k = 0; k < kLanes; ++k) {
+        count[k] = cold.lanes[k].pointCount;
+        keepsPushes = keepsPushes || cold.lanes[k].keepsPush;
+        writes |= (b.invMassA[k] != 0.0 ? 1u << k : 0u) | (b.invMassB[k] != 0.0 ? 1u << (k + kLanes) : 0u);
+    }
+    for (int i = 0; i < 2; ++i) {
+        const WideMask used = count > static_cast<double>(i);
+        ContactBlock::Point& q = b.points[i];
+        q.rnA = used ? q.rnA : zero;
+        q.rnB = used ? q.rnB : zero;
+        q.ndA = used ? q.ndA : zero;
+        q.ndB = used ? q.ndB : zero;
+        q.baseSeparation = used ? q.baseSeparation : zero;
+        q.normalImpulse = used ? q.normalImpulse : zero;
+        q.normalMass = used ? q.normalMass : zero;
+    }
+    const WideMask rubs = (b.staticFriction > 0.0) | (b.dynamicFriction > 0.0);
+    b.tangentImpulse = rubs ? b.tangentImpulse : zero;
+    const WideMask inUse = count > 0.0;
+    b.friction = any(rubs);
+    b.pairs = any(inUse & (b.invDet > 0.0));
+    b.singles = any(inUse & ~(b.invDet > 0.0));
+    b.keepsPushes = keepsPushes;
+    b.writes = static_cast<std::uint8_t>(writes);
+}
+
+// One block's inputs, lane by lane (an empty lane all zero), for prepareLoop's four-lane arithmetic.
+struct alignas(64) BlockInputs {
+    Wide nx, ny;
+    Wide centerAx, centerAy, centerBx, centerBy;  // centres of mass, m
+    Wide accelerationNormal;                      // B's minus A's acceleration along the normal, m/s^2
+    Wide invMassA, invIA, invMassB, invIB;
+    Wide restitutionA, restitutionB, staticFrictionA, staticFrictionB, dynamicFrictionA, dynamicFrictionB;
+    Wide pointX[2], pointY[2], separation[2], normalImpulse[2], tangentImpulse[2];
+    Wide pointCount, sliding;
+};
+
+// Gathers lane k's contact and bodies (the scalar part of preparation) and writes what needs no arithmetic.
+[[gnu::always_inline]] inline bool gatherLane(BlockInputs& in, ContactBlock& block, ContactBlockCold& cold, int k,
+                                              const RowRef& ref, const ContactData& contact, const RowBody& A,
+                                              const RowBody& B) {
     const Manifold& m = contact.manifold;
-    const RowSide& sideA = A.side;
-    const RowSide& sideB = B.side;
-    c.indexA = sideA.index;
-    c.indexB = sideB.index;
-    c.invMassA = sideA.invMass;
-    c.invIA = sideA.invI;
-    c.invMassB = sideB.invMass;
-    c.invIB = sideB.invI;
-    c.turns = sideA.turns || sideB.turns;
-    c.keepsPush = A.restitution > 0.0 || B.restitution > 0.0;
-    // The paper's combination rules: restitution min, friction coefficients averaged.
-    c.restitution = std::min(A.restitution, B.restitution);
-    c.staticFriction = 0.5 * (A.staticFriction + B.staticFriction);
-    c.dynamicFriction = 0.5 * (A.dynamicFriction + B.dynamicFriction);
-    c.normal = m.normal;
-    c.pointCount = m.pointCount;
-    c.normalAcceleration = c.normal.dot(B.acceleration - A.acceleration);
-    c.tangentImpulse = 0.0;
-    c.sliding = contact.sliding;
-    Vec2 sumA = Vec2::Zero(), sumB = Vec2::Zero();
-    for (int i = 0; i < m.pointCount; ++i) {
+    block.indexA[k] = A.side.index;
+    block.indexB[k] = B.side.index;
+    in.nx[k] = m.normal.x();
+    in.ny[k] = m.normal.y();
+    in.centerAx[k] = A.center.x();
+    in.centerAy[k] = A.center.y();
+    in.centerBx[k] = B.center.x();
+    in.centerBy[k] = B.center.y();
+    in.accelerationNormal[k] = m.normal.dot(B.acceleration - A.acceleration);
+    in.invMassA[k] = A.side.invMass;
+    in.invIA[k] = A.side.invI;
+    in.invMassB[k] = B.side.invMass;
+    in.invIB[k] = B.side.invI;
+    in.restitutionA[k] = A.restitution;
+    in.restitutionB[k] = B.restitution;
+    in.staticFrictionA[k] = A.staticFriction;
+    in.staticFrictionB[k] = B.staticFriction;
+    in.dynamicFrictionA[k] = A.dynamicFriction;
+    in.dynamicFrictionB[k] = B.dynamicFriction;
+    for (int i = 0; i < 2; ++i) {  // an unused point's fields are never read (prepareLanes masks them), but set
         const ContactPoint& mp = m.points[i];
-        ContactConstraintPoint& cp = c.points[i];
-        cp.anchorA = mp.point - A.center;
-        cp.anchorB = mp.point - B.center;
-        cp.rnA = cross(cp.anchorA, c.normal);
-        cp.rnB = cross(cp.anchorB, c.normal);
-        cp.ndA = c.normal.dot(cp.anchorA);
-        cp.ndB = c.normal.dot(cp.anchorB);
-        cp.baseSeparation = mp.separation - c.normal.dot(cp.anchorB - cp.anchorA);
-        cp.normalImpulse = mp.normalImpulse;
-        cp.normalMass = massAlong(c, cp.anchorA, cp.anchorB, c.normal);
-        cp.relativeVelocity = 0.0;
-        cp.engaged = false;
-        c.tangentImpulse += mp.tangentImpulse;
-        sumA += cp.anchorA;
-        sumB += cp.anchorB;
+        in.pointX[i][k] = mp.point.x();
+        in.pointY[i][k] = mp.point.y();
+        in.separation[i][k] = mp.separation;
+        in.normalImpulse[i][k] = mp.normalImpulse;
+        in.tangentImpulse[i][k] = mp.tangentImpulse;
     }
-    for (int i = m.pointCount; i < 2; ++i) c.points[i] = ContactConstraintPoint{};
-    c.k11 = c.k12 = c.k22 = 0.0;
-    c.invDet = 0.0;
-    if (m.pointCount == 2) {
-        const Vec2 n = c.normal;
-        const ContactConstraintPoint& p1 = c.points[0];
-        const ContactConstraintPoint& p2 = c.points[1];
-        const double a1 = cross(p1.anchorA, n), b1 = cross(p1.anchorB, n);
-        const double a2 = cross(p2.anchorA, n), b2 = cross(p2.anchorB, n);
-        const double lin = c.invMassA + c.invMassB;
-        c.k11 = lin + c.invIA * a1 * a1 + c.invIB * b1 * b1;
-        c.k22 = lin + c.invIA * a2 * a2 + c.invIB * b2 * b2;
-        c.k12 = lin + c.invIA * a1 * a2 + c.invIB * b1 * b2;
-        const double det = c.k11 * c.k22 - c.k12 * c.k12;
-        // Nearly coincident points make K singular: then one point at a time.
-        if (c.k11 * c.k11 < 1000.0 * det) c.invDet = 1.0 / det;
+    in.pointCount[k] = m.pointCount;
+    in.sliding[k] = contact.sliding ? 1.0 : 0.0;
+    ContactBlockCold::Lane& lane = cold.lanes[k];
+    lane.contact = ref.contact;
+    lane.pointCount = m.pointCount;
+    lane.keepsPush = A.restitution > 0.0 || B.restitution > 0.0;
+    return A.side.turns || B.side.turns;
+}
+
+// 1 / k where k > 0, else 0 (an immovable direction takes no impulse), lane by lane.
+[[gnu::always_inline]] inline Wide inverseOrZero(const Wide& k) { return k > 0.0 ? 1.0 / k : splat(0.0); }
+
+// The rows' effective masses, Jacobians and separations, four lanes at once (each operation the scalar one on each
+// lane, Wide.hpp, so a lane's bits never depend on the others). markBlock then zeroes an unused point's fields.
+[[gnu::always_inline]] inline void prepareLanes(const BlockInputs& in, ContactBlock& block, ContactBlockCold& cold) {
+    const Wide zero = splat(0.0);
+    const Wide nx = in.nx, ny = in.ny;
+    block.nx = nx;
+    block.ny = ny;
+    block.invMassA = in.invMassA;
+    block.invIA = in.invIA;
+    block.invMassB = in.invMassB;
+    block.invIB = in.invIB;
+    const Wide linear = in.invMassA + in.invMassB;
+    // Along direction (dx, dy) at lever arms a and b: 1 / (mA^-1 + mB^-1 + IA^-1 (a x d)^2 + IB^-1 (b x d)^2).
+    Wide sumAx = zero, sumAy = zero, sumBx = zero, sumBy = zero, tangentImpulse = zero;
+    Wide rnA[2], rnB[2];
+    for (int i = 0; i < 2; ++i) {
+        const WideMask used = in.pointCount > static_cast<double>(i);
+        const Wide ax = used ? in.pointX[i] - in.centerAx : zero, ay = used ? in.pointY[i] - in.centerAy : zero;
+        const Wide bx = used ? in.pointX[i] - in.centerBx : zero, by = used ? in.pointY[i] - in.centerBy : zero;
+        rnA[i] = ax * ny - ay * nx;  // anchor x n
+        rnB[i] = bx * ny - by * nx;
+        ContactBlock::Point& q = block.points[i];
+        q.rnA = rnA[i];
+        q.rnB = rnB[i];
+        q.ndA = nx * ax + ny * ay;
+        q.ndB = nx * bx + ny * by;
+        q.baseSeparation = in.separation[i] - (nx * (bx - ax) + ny * (by - ay));
+        q.normalImpulse = in.normalImpulse[i];
+        q.normalMass = inverseOrZero(linear + in.invIA * rnA[i] * rnA[i] + in.invIB * rnB[i] * rnB[i]);
+        tangentImpulse = used ? tangentImpulse + in.tangentImpulse[i] : tangentImpulse;
+        sumAx = used ? sumAx + ax : sumAx;
+        sumAy = used ? sumAy + ay : sumAy;
+        sumBx = used ? sumBx + bx : sumBx;
+        sumBy = used ? sumBy + by : sumBy;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            cold.lanes[lane].anchorA[i] = {ax[lane], ay[lane]};
+            cold.lanes[lane].anchorB[i] = {bx[lane], by[lane]};
+            cold.lanes[lane].relativeVelocity[i] = 0.0;
+            cold.lanes[lane].engaged[i] = false;
+            cold.lanes[lane].push[i] = 0.0;
+        }
     }
-    const double share = m.pointCount > 0 ? 1.0 / m.pointCount : 0.0;
-    c.frictionAnchorA = share * sumA;
-    c.frictionAnchorB = share * sumB;
-    c.tangentMass = massAlong(c, c.frictionAnchorA, c.frictionAnchorB, perp(c.normal));
-    c.rtA = cross(c.frictionAnchorA, perp(c.normal));
-    c.rtB = cross(c.frictionAnchorB, perp(c.normal));
+    // Two points: their 2x2 normal mass matrix, solved as a block unless nearly singular (coincident points).
+    const WideMask two = in.pointCount == 2.0;
+    const Wide k11 = linear + in.invIA * rnA[0] * rnA[0] + in.invIB * rnB[0] * rnB[0];
+    const Wide k22 = linear + in.invIA * rnA[1] * rnA[1] + in.invIB * rnB[1] * rnB[1];
+    const Wide k12 = linear + in.invIA * rnA[0] * rnA[1] + in.invIB * rnB[0] * rnB[1];
+    const Wide det = k11 * k22 - k12 * k12;
+    block.k11 = two ? k11 : zero;
+    block.k22 = two ? k22 : zero;
+    block.k12 = two ? k12 : zero;
+    block.invDet = two & (k11 * k11 < 1000.0 * det) ? 1.0 / det : zero;
+    // Friction: one row at the manifold's centre, along the tangent t = perp(n).
+    const Wide share = in.pointCount > 0.0 ? 1.0 / in.pointCount : zero;
+    const Wide fax = share * sumAx, fay = share * sumAy, fbx = share * sumBx, fby = share * sumBy;
+    const Wide tx = -ny, ty = nx;
+    const Wide rtA = fax * ty - fay * tx, rtB = fbx * ty - fby * tx;
+    block.rtA = rtA;
+    block.rtB = rtB;
+    block.tangentMass = inverseOrZero(linear + in.invIA * rtA * rtA + in.invIB * rtB * rtB);
+    // The paper's combination rules: restitution min, friction coefficients averaged.
+    const Wide staticFriction = 0.5 * (in.staticFrictionA + in.staticFrictionB);
+    const Wide dynamicFriction = 0.5 * (in.dynamicFrictionA + in.dynamicFrictionB);
+    block.tangentImpulse = tangentImpulse;
+    block.staticFriction = staticFriction;
+    block.dynamicFriction = dynamicFriction;
+    block.sliding = in.sliding;
+    const Wide restitution = in.restitutionB < in.restitutionA ? in.restitutionB : in.restitutionA;  // std::min
+    for (int lane = 0; lane < kLanes; ++lane) {
+        cold.lanes[lane].restitution = restitution[lane];
+        cold.lanes[lane].normalAcceleration = in.accelerationNormal[lane];
+    }
+    markBlock(block, cold);
+}
+
+// What an empty lane is prepared from: no points, no bodies.
+const ContactData kEmptyContact{};
+
+// Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
+constexpr std::size_t kPrefetchBlocks = 2;
+
+// Prepares blocks [begin, end) of rows: block j holds rows refs[rows[j].first ..] (rows[j].count of them).
+[[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
+                                                       const BlockRows* rows, std::size_t count, const RowRef* refs,
+                                                       const ContactData* contacts, const SolverBodySim* sims,
+                                                       const BodyData* bodies) {
+    PreparedRows prepared;
+    for (std::size_t j = 0; j < count; ++j) {
+        // Rows visit contacts in colour order, which no hardware prefetcher follows, and a large scene's contacts
+        // are no longer in the cache by now: ask for the part preparation reads, a few blocks ahead.
+        if (j + kPrefetchBlocks < count)
+            for (std::uint32_t r = 0; r < rows[j + kPrefetchBlocks].count; ++r)
+                prefetchLines(&contacts[refs[rows[j + kPrefetchBlocks].first + r].contact],
+                              offsetof(ContactData, cache));
+        ContactBlock& block = blocks[j];
+        BlockInputs in;  // every lane written below (zeroing the whole at once took a quarter of the time)
+        block.turns = block.holdsPush = false;
+        const int lanes = static_cast<int>(rows[j].count);
+        for (int k = 0; k < kLanes; ++k) {
+            if (k >= lanes) {  // an empty row: no bodies, no points
+                gatherLane(in, block, cold[j], k, RowRef{}, kEmptyContact, RowBody{}, RowBody{});
+                continue;
+            }
+            const RowRef& ref = refs[rows[j].first + static_cast<std::uint32_t>(k)];
+            const ContactData& contact = contacts[ref.contact];
+            const bool turns = gatherLane(in, block, cold[j], k, ref, contact,
+                                          rowBody(ref.indexA, sims, bodies[contact.a]),
+                                          rowBody(ref.indexB, sims, bodies[contact.b]));
+            block.turns = block.turns || turns;
+            prepared.turning += turns ? 1 : 0;
+        }
+        prepareLanes(in, block, cold[j]);
+        for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].lanes[k].restitution > 0.0;
+    }
+    return prepared;
 }
 
 }  // namespace
 
-bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, ContactConstraint& c, std::uint32_t contactIndex,
-                const ContactData& contact, std::int32_t indexA, std::int32_t indexB, const SolverBodySim* sims,
-                const BodyData& recordA, const BodyData& recordB) {
-    // prepareContact writes every field setRow reads (a point past pointCount is reset, k11..k22 zeroed first).
-    c.contact = contactIndex;
-    prepareContact(c, contact, rowBody(indexA, sims, recordA), rowBody(indexB, sims, recordB));
-    setRow(block, cold, k, c);
-    return c.turns;
-}
 
 namespace {
 
@@ -518,7 +650,7 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
 }
 
 // One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
-// immovable and not spinning; prepareContact decides once per step): the same rule with its angular terms left
+// immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
 // pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
 template <bool Turns, bool Bias>
@@ -686,6 +818,11 @@ template <bool Bias>
 }
 
 // The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
+PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
+                             const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
+                             const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+}
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop(begin, end, states);
 }
@@ -694,6 +831,16 @@ void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* col
     solveLoop(begin, end, cold, states, pass);
 }
 #if PHYSIM_HAS_AVX2_CODE
+PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
+                                          std::size_t count, const RowRef* refs, const ContactData* contacts,
+                                          const SolverBodySim* sims, const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+}
+PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
+                                              std::size_t count, const RowRef* refs, const ContactData* contacts,
+                                              const SolverBodySim* sims, const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+}
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop(begin, end, states);
 }
@@ -719,6 +866,18 @@ WideCode pick(WideCode code) {
 }
 
 }  // namespace
+
+PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
+                             const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
+                             const BodyData* bodies, WideCode code) {
+    switch (pick(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+    case WideCode::Avx512: return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies);
+#endif
+    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    }
+}
 
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
     switch (pick(code)) {
@@ -761,14 +920,13 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     for (int i = 0; i < 2; ++i) {
         const ContactConstraintPoint& p = c.points[i];
         ContactBlock::Point& q = b.points[i];
-        const bool used = i < c.pointCount;  // an unused point has zero mass and no impulse
-        q.rnA[k] = used ? p.rnA : 0.0;
-        q.rnB[k] = used ? p.rnB : 0.0;
-        q.ndA[k] = used ? p.ndA : 0.0;
-        q.ndB[k] = used ? p.ndB : 0.0;
-        q.baseSeparation[k] = used ? p.baseSeparation : 0.0;
-        q.normalImpulse[k] = used ? p.normalImpulse : 0.0;
-        q.normalMass[k] = used ? p.normalMass : 0.0;
+        q.rnA[k] = p.rnA;
+        q.rnB[k] = p.rnB;
+        q.ndA[k] = p.ndA;
+        q.ndB[k] = p.ndB;
+        q.baseSeparation[k] = p.baseSeparation;
+        q.normalImpulse[k] = p.normalImpulse;
+        q.normalMass[k] = p.normalMass;
         lane.anchorA[i] = p.anchorA;
         lane.anchorB[i] = p.anchorB;
         lane.relativeVelocity[i] = p.relativeVelocity;
@@ -782,23 +940,17 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     b.rtA[k] = c.rtA;
     b.rtB[k] = c.rtB;
     b.tangentMass[k] = c.tangentMass;
-    const bool rubs = c.staticFriction > 0.0 || c.dynamicFriction > 0.0;
-    b.tangentImpulse[k] = rubs ? c.tangentImpulse : 0.0;  // a frictionless row holds no tangent impulse
+    b.tangentImpulse[k] = c.tangentImpulse;
     b.staticFriction[k] = c.staticFriction;
     b.dynamicFriction[k] = c.dynamicFriction;
     b.sliding[k] = c.sliding ? 1.0 : 0.0;
     b.turns = b.turns || c.turns;
-    b.friction = b.friction || rubs;
-    b.pairs = b.pairs || (c.pointCount > 0 && c.invDet > 0.0);
-    b.singles = b.singles || (c.pointCount > 0 && !(c.invDet > 0.0));
-    b.keepsPushes = b.keepsPushes || c.keepsPush;
     lane.keepsPush = c.keepsPush;
-    const unsigned bitA = 1u << k, bitB = 1u << (k + kLanes);
-    b.writes = (b.writes & ~(bitA | bitB)) | (c.invMassA != 0.0 ? bitA : 0u) | (c.invMassB != 0.0 ? bitB : 0u);
     lane.restitution = c.restitution;
     lane.normalAcceleration = c.normalAcceleration;
     lane.contact = c.contact;
     lane.pointCount = c.pointCount;
+    markBlock(b, cold);
 }
 
 ContactConstraint row(const ContactBlock& b, const ContactBlockCold& cold, int k) {

@@ -57,8 +57,8 @@ struct ContactConstraintPoint {
     bool engaged = false;
 };
 
-/// One contact row, scalar: what prepareContact fills and the bounce path works on. The passes run on
-/// ContactBlock, which holds kLanes of these field by field.
+/// One contact row, scalar: what the bounce path works on (row() reads one from a lane; setRow puts one into a lane,
+/// as tests build blocks). The passes run on ContactBlock, which holds kLanes of these field by field.
 struct ContactConstraint {
     std::uint32_t contact = 0;
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: immovable
@@ -129,14 +129,18 @@ ContactConstraint row(const ContactBlock& block, const ContactBlockCold& cold, i
 /// Readies a block for `lanes` rows: its marks cleared, the lanes from `lanes` on empty rows; setRow fills the rest.
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes);
 
-/// Prepares the row of `contact` (its slot in the world's contacts: `contactIndex`) into lane k of the block, from
-/// its manifold and its bodies (lever arms at the centres of mass): an awake side (index >= 0) from the solver's
-/// copy in sims, a static or sleeping one (kNullIndex) from its record. Returns whether a body of the row turns.
-/// `scratch` is any row, overwritten whole: a caller preparing many rows passes the same one, so that no row is
-/// built from zero (zeroing a row per contact was a quarter of preparation's samples).
-bool prepareRow(ContactBlock& block, ContactBlockCold& cold, int k, ContactConstraint& scratch,
-                std::uint32_t contactIndex, const ContactData& contact, std::int32_t indexA, std::int32_t indexB,
-                const SolverBodySim* sims, const BodyData& recordA, const BodyData& recordB);
+/// What preparing blocks found.
+struct PreparedRows {
+    std::size_t turning = 0;  // rows a body of which turns
+    bool bounce = false;      // some row can bounce (restitution > 0)
+};
+/// Prepares blocks [0, count): block j's lanes from rows refs[rows[j].first ..] (rows[j].count of them; the other
+/// lanes empty rows), each from its contact's manifold and its bodies (lever arms at the centres of mass): an awake
+/// side (index >= 0) from the solver's copy in sims, a static or sleeping one (kNullIndex) from its record in
+/// bodies. Four lanes at once; a lane's bits never depend on the others or on `code` (as for the passes below).
+PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
+                             const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
+                             const BodyData* bodies, WideCode code = WideCode::Best);
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");

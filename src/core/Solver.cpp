@@ -25,9 +25,6 @@ constexpr int kColours = 24;
 constexpr std::size_t kSegments = kColours + 1;  // a group's rows: kColours colours, then the overflow
 constexpr std::size_t kBodyGrain = 256;
 constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
-// Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4), the part of each
-// contact that preparation reads, a cache line at a time.
-constexpr std::size_t kPrefetchBlocks = 2;
 // Colouring asks for the bodies of the contact this far ahead, and for that contact twice as far ahead.
 constexpr std::size_t kPrefetchContacts = 8;
 // Gathering and writing back bodies asks for the record of the body this far ahead in the group.
@@ -364,30 +361,9 @@ void WorldImpl::finishBody(std::size_t i) {
         (proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.proxy != kNullIndex && travel > 0.5 * b.coreRadius ? 2 : 0));
 }
 
-WorldImpl::PreparedRows WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
-    PreparedRows prepared;
-    ContactConstraint scratch;
-    for (std::size_t b = begin; b < end; ++b) {
-        ContactBlock& block = contactBlocks[b];
-        const int lanes = static_cast<int>(blockRows[b].count);
-        startBlock(block, contactCold[b], lanes);
-        // Rows visit contacts in colour order, which no hardware prefetcher follows, and a large scene's contacts
-        // are no longer in the cache by now.
-        if (b + kPrefetchBlocks < end) {
-            const BlockRows& ahead = blockRows[b + kPrefetchBlocks];
-            for (std::uint32_t r = ahead.first; r < ahead.first + ahead.count; ++r)
-                prefetchLines(&contacts[rowContacts[r].contact], offsetof(ContactData, cache));
-        }
-        for (int lane = 0; lane < lanes; ++lane) {
-            const RowRef& ref = rowContacts[blockRows[b].first + static_cast<std::uint32_t>(lane)];
-            const ContactData& contact = contacts[ref.contact];
-            const bool turns = prepareRow(block, contactCold[b], lane, scratch, ref.contact, contact, ref.indexA,
-                                          ref.indexB, sims.data(), bodies[contact.a], bodies[contact.b]);
-            prepared.turning += turns ? 1 : 0;
-            prepared.bounce = prepared.bounce || contactCold[b].lanes[lane].restitution > 0.0;
-        }
-    }
-    return prepared;
+PreparedRows WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
+    return prepareContacts(contactBlocks.data() + begin, contactCold.data() + begin, blockRows.data() + begin,
+                           end - begin, rowContacts.data(), contacts.data(), sims.data(), bodies.data());
 }
 
 std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {

@@ -172,10 +172,6 @@ struct WorldImpl {
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record
     void finishBody(std::size_t i);  // its record from the solver's state: pose, box, sleep timer, enlarged
-    struct PreparedRows {
-        std::size_t turning = 0;  // rows a body of which turns
-        bool bounce = false;      // some row can bounce (restitution > 0)
-    };
     PreparedRows prepareBlocks(std::size_t begin, std::size_t end);  // fills blocks
     std::size_t solveGroup(std::size_t g, bool timed);  // a group's rows, substeps, impulses; its turning rows
     void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back

@@ -5,6 +5,7 @@
 // the full one exactly. Random rows reach every path: speculative and overlapping points, the 2x2 block and one point at
 // a time, points that start to push (the bounce path, with and without restitution), sticking and sliding friction.
 
+#include "ContactData.hpp"
 #include "ContactSolver.hpp"
 
 #include <gtest/gtest.h>
@@ -16,6 +17,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace physim {
@@ -311,6 +313,127 @@ TEST(ContactSolver, TheWarmStartOnTheBodiesIsThePassOverTheRows) {
     worstText << worst;
     RecordProperty("worst_speed_difference", worstText.str());
     EXPECT_GT(bounced, 100);  // points with restitution that met: the bounce path ran
+}
+
+// Rows prepared from contacts: each lane is its own row (alone in a block, or among three others, on any build of
+// the loops, it gets the same bits), and its fields are what they mean: the lever arms' moments, the separation
+// split into a part fixed for the step and the part the anchors carry, and the effective masses.
+TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
+    std::vector<WideCode> codes{WideCode::Baseline, WideCode::Best};
+    if (avx2CodeRuns()) codes.push_back(WideCode::Avx2);
+    if (avx512CodeRuns()) codes.push_back(WideCode::Avx512);
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int pairs = 0, statics = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+        // Four contacts between awake bodies 2k and 2k + 1, or against a static body (record slot 8).
+        std::vector<SolverBodySim> sims(8);
+        for (SolverBodySim& s : sims) {
+            s.dynamic = true;
+            s.turns = u(rng) > -0.5;
+            s.center0 = {5.0 * u(rng), 5.0 * u(rng)};
+            s.acceleration = {u(rng), -10.0 + u(rng)};
+            s.invMass = 1.0 + 0.5 * u(rng);
+            s.invInertia = s.turns ? 2.0 + u(rng) : 0.0;
+            s.restitution = u(rng) > 0.0 ? 0.5 : 0.0;
+            s.staticFriction = u(rng) > -0.5 ? 0.6 : 0.0;
+            s.dynamicFriction = 0.5 * s.staticFriction;
+        }
+        std::vector<BodyData> records(9);
+        records[8].type = BodyType::Static;
+        records[8].center = {u(rng), u(rng)};
+        records[8].staticFriction = 0.8;
+        std::vector<ContactData> contacts(kLanes);
+        std::vector<RowRef> refs(kLanes);
+        for (int k = 0; k < kLanes; ++k) {
+            ContactData& c = contacts[k];
+            const bool onStatic = (trial + k) % 3 == 0;
+            c.a = onStatic ? 8 : static_cast<std::uint32_t>(2 * k);
+            c.b = static_cast<std::uint32_t>(2 * k + 1);
+            refs[k] = {static_cast<std::uint32_t>(k), onStatic ? kNullIndex : 2 * k, 2 * k + 1};
+            const double angle = 3.14159265358979 * u(rng);
+            c.manifold.normal = {std::cos(angle), std::sin(angle)};
+            c.manifold.pointCount = u(rng) > -0.5 ? 2 : 1;
+            for (int i = 0; i < 2; ++i) {  // a point past pointCount holds stale values, which must not leak
+                ContactPoint& p = c.manifold.points[i];
+                p.point = {5.0 * u(rng), 5.0 * u(rng)};
+                p.separation = 0.01 * u(rng);
+                p.normalImpulse = std::abs(u(rng));
+                p.tangentImpulse = 0.1 * u(rng);
+            }
+            c.sliding = u(rng) > 0.0;
+            statics += onStatic ? 1 : 0;
+        }
+        for (const WideCode code : codes) {
+            std::vector<ContactBlock> together(1);
+            std::vector<ContactBlockCold> togetherCold(1);
+            const BlockRows all{0, kLanes};
+            prepareContacts(together.data(), togetherCold.data(), &all, 1, refs.data(), contacts.data(), sims.data(),
+                            records.data(), code);
+            for (int k = 0; k < kLanes; ++k) {
+                std::vector<ContactBlock> alone(1);
+                std::vector<ContactBlockCold> aloneCold(1);
+                const BlockRows one{static_cast<std::uint32_t>(k), 1};
+                prepareContacts(alone.data(), aloneCold.data(), &one, 1, refs.data(), contacts.data(), sims.data(),
+                                records.data(), WideCode::Baseline);
+                const ContactConstraint x = row(together[0], togetherCold[0], k), y = row(alone[0], aloneCold[0], 0);
+                ASSERT_EQ(x.pointCount, y.pointCount);
+                for (int i = 0; i < 2; ++i) {
+                    const ContactConstraintPoint &p = x.points[i], &q = y.points[i];
+                    for (const auto& [a, b, what] : {std::tuple{p.rnA, q.rnA, "rnA"}, {p.rnB, q.rnB, "rnB"},
+                                                     {p.ndA, q.ndA, "ndA"}, {p.ndB, q.ndB, "ndB"},
+                                                     {p.baseSeparation, q.baseSeparation, "base separation"},
+                                                     {p.normalImpulse, q.normalImpulse, "normal impulse"},
+                                                     {p.normalMass, q.normalMass, "normal mass"},
+                                                     {p.anchorA.x(), q.anchorA.x(), "anchor A x"},
+                                                     {p.anchorB.y(), q.anchorB.y(), "anchor B y"}})
+                        expectSameBits(a, b, what, trial);
+                }
+                for (const auto& [a, b, what] :
+                     {std::tuple{x.k11, y.k11, "k11"}, {x.k12, y.k12, "k12"}, {x.k22, y.k22, "k22"},
+                      {x.invDet, y.invDet, "invDet"}, {x.rtA, y.rtA, "rtA"}, {x.rtB, y.rtB, "rtB"},
+                      {x.tangentMass, y.tangentMass, "tangent mass"}, {x.tangentImpulse, y.tangentImpulse, "tangent"},
+                      {x.staticFriction, y.staticFriction, "mu_s"}, {x.restitution, y.restitution, "e"},
+                      {x.normalAcceleration, y.normalAcceleration, "normal acceleration"}})
+                    expectSameBits(a, b, what, trial);
+                // What the fields mean, against the contact and bodies directly (rounding apart: 1e-12).
+                const ContactData& c = contacts[k];
+                const Vec2 n = c.manifold.normal;
+                const Vec2 centerA = refs[k].indexA == kNullIndex ? records[8].center : sims[2 * k].center0;
+                const Vec2 centerB = sims[2 * k + 1].center0;
+                for (int i = 0; i < 2; ++i) {
+                    const ContactConstraintPoint& p = x.points[i];
+                    if (i >= x.pointCount) {  // an unused point: no mass, no impulse
+                        EXPECT_EQ(p.normalMass, 0.0);
+                        EXPECT_EQ(p.normalImpulse, 0.0);
+                        continue;
+                    }
+                    const ContactPoint& mp = c.manifold.points[i];
+                    const Vec2 rA = mp.point - centerA, rB = mp.point - centerB;
+                    EXPECT_NEAR(p.rnA, cross(rA, n), 1e-12);
+                    EXPECT_NEAR(p.baseSeparation + n.dot(rB - rA), mp.separation, 1e-12);
+                    const double k = x.invMassA + x.invMassB + x.invIA * cross(rA, n) * cross(rA, n) +
+                                     x.invIB * cross(rB, n) * cross(rB, n);
+                    EXPECT_NEAR(p.normalMass * k, 1.0, 1e-12);
+                }
+                if (x.pointCount == 2) {  // K's diagonal is each point's inverse effective mass
+                    EXPECT_NEAR(x.k11 * x.points[0].normalMass, 1.0, 1e-12);
+                    EXPECT_NEAR(x.k22 * x.points[1].normalMass, 1.0, 1e-12);
+                } else {  // one point: no block
+                    EXPECT_EQ(x.k11, 0.0);
+                    EXPECT_EQ(x.invDet, 0.0);
+                }
+                EXPECT_EQ(x.invMassA, refs[k].indexA == kNullIndex ? 0.0 : sims[2 * k].invMass);
+                pairs += x.invDet > 0.0 ? 1 : 0;
+            }
+            EXPECT_EQ(together[0].turns, std::any_of(refs.begin(), refs.end(), [&](const RowRef& r) {
+                          return (r.indexA != kNullIndex && sims[r.indexA].turns) || sims[r.indexB].turns;
+                      }));
+        }
+        if (::testing::Test::HasFailure()) break;
+    }
+    EXPECT_GT(pairs, 100);  // the random contacts reached the 2x2 block
+    EXPECT_GT(statics, 100);
 }
 
 #if PHYSIM_HAS_AVX2_CODE  // an x86-64 build by GCC or Clang: the loops exist in all three builds
