@@ -211,7 +211,7 @@ struct alignas(64) BlockInputs {
     block.k11 = two ? k11 : zero;
     block.k22 = two ? k22 : zero;
     block.k12 = two ? k12 : zero;
-    block.invDet = two & (k11 * k11 < 1000.0 * det) ? 1.0 / det : zero;
+    block.invDet = (two & (k11 * k11 < 1000.0 * det)) ? 1.0 / det : zero;
     // Friction: one row at the manifold's centre, along the tangent t = perp(n).
     const Wide share = in.pointCount > 0.0 ? 1.0 / in.pointCount : zero;
     const Wide fax = share * sumAx, fay = share * sumAy, fbx = share * sumBx, fby = share * sumBy;
