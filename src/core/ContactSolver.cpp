@@ -241,7 +241,7 @@ const ContactData kEmptyContact{};
 // Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
 constexpr std::size_t kPrefetchBlocks = 2;
 
-// Prepares blocks [begin, end) of rows: block j holds rows refs[rows[j].first ..] (rows[j].count of them).
+// Prepares blocks [0, count): block j holds rows refs[rows[j].first ..] (rows[j].count of them).
 [[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
                                                        const BlockRows* rows, std::size_t count, const RowRef* refs,
                                                        const ContactData* contacts, const SolverBodySim* sims,
@@ -278,7 +278,6 @@ constexpr std::size_t kPrefetchBlocks = 2;
 }
 
 }  // namespace
-
 
 namespace {
 
