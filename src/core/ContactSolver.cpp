@@ -140,7 +140,7 @@ struct alignas(64) BlockInputs {
     in.staticFrictionB[k] = B.staticFriction;
     in.dynamicFrictionA[k] = A.dynamicFriction;
     in.dynamicFrictionB[k] = B.dynamicFriction;
-    for (int i = 0; i < 2; ++i) {  // an unused point's fields are never read (prepareLanes masks them), but set
+    for (int i = 0; i < 2; ++i) {  // an unused point's values are stale: prepareLanes and markBlock keep them out
         const ContactPoint& mp = m.points[i];
         in.pointX[i][k] = mp.point.x();
         in.pointY[i][k] = mp.point.y();
@@ -157,6 +157,12 @@ struct alignas(64) BlockInputs {
     return A.side.turns || B.side.turns;
 }
 
+// A row's inverse effective mass along a direction at moments ra, rb (lever arm x direction), lane by lane:
+// mA^-1 + mB^-1 + IA^-1 ra^2 + IB^-1 rb^2.
+[[gnu::always_inline]] inline Wide inverseMass(const BlockInputs& in, const Wide& ra, const Wide& rb) {
+    return in.invMassA + in.invMassB + in.invIA * ra * ra + in.invIB * rb * rb;
+}
+
 // 1 / k where k > 0, else 0 (an immovable direction takes no impulse), lane by lane.
 [[gnu::always_inline]] inline Wide inverseOrZero(const Wide& k) { return k > 0.0 ? 1.0 / k : splat(0.0); }
 
@@ -171,10 +177,8 @@ struct alignas(64) BlockInputs {
     block.invIA = in.invIA;
     block.invMassB = in.invMassB;
     block.invIB = in.invIB;
-    const Wide linear = in.invMassA + in.invMassB;
-    // Along direction (dx, dy) at lever arms a and b: 1 / (mA^-1 + mB^-1 + IA^-1 (a x d)^2 + IB^-1 (b x d)^2).
     Wide sumAx = zero, sumAy = zero, sumBx = zero, sumBy = zero, tangentImpulse = zero;
-    Wide rnA[2], rnB[2];
+    Wide rnA[2], rnB[2], kNormal[2];  // per point: moments about the centres, inverse effective mass
     for (int i = 0; i < 2; ++i) {
         const WideMask used = in.pointCount > static_cast<double>(i);
         const Wide ax = used ? in.pointX[i] - in.centerAx : zero, ay = used ? in.pointY[i] - in.centerAy : zero;
@@ -188,7 +192,8 @@ struct alignas(64) BlockInputs {
         q.ndB = nx * bx + ny * by;
         q.baseSeparation = in.separation[i] - (nx * (bx - ax) + ny * (by - ay));
         q.normalImpulse = in.normalImpulse[i];
-        q.normalMass = inverseOrZero(linear + in.invIA * rnA[i] * rnA[i] + in.invIB * rnB[i] * rnB[i]);
+        kNormal[i] = inverseMass(in, rnA[i], rnB[i]);
+        q.normalMass = inverseOrZero(kNormal[i]);
         tangentImpulse = used ? tangentImpulse + in.tangentImpulse[i] : tangentImpulse;
         sumAx = used ? sumAx + ax : sumAx;
         sumAy = used ? sumAy + ay : sumAy;
@@ -204,9 +209,8 @@ struct alignas(64) BlockInputs {
     }
     // Two points: their 2x2 normal mass matrix, solved as a block unless nearly singular (coincident points).
     const WideMask two = in.pointCount == 2.0;
-    const Wide k11 = linear + in.invIA * rnA[0] * rnA[0] + in.invIB * rnB[0] * rnB[0];
-    const Wide k22 = linear + in.invIA * rnA[1] * rnA[1] + in.invIB * rnB[1] * rnB[1];
-    const Wide k12 = linear + in.invIA * rnA[0] * rnA[1] + in.invIB * rnB[0] * rnB[1];
+    const Wide k11 = kNormal[0], k22 = kNormal[1];
+    const Wide k12 = in.invMassA + in.invMassB + in.invIA * rnA[0] * rnA[1] + in.invIB * rnB[0] * rnB[1];
     const Wide det = k11 * k22 - k12 * k12;
     block.k11 = two ? k11 : zero;
     block.k22 = two ? k22 : zero;
@@ -219,7 +223,7 @@ struct alignas(64) BlockInputs {
     const Wide rtA = fax * ty - fay * tx, rtB = fbx * ty - fby * tx;
     block.rtA = rtA;
     block.rtB = rtB;
-    block.tangentMass = inverseOrZero(linear + in.invIA * rtA * rtA + in.invIB * rtB * rtB);
+    block.tangentMass = inverseOrZero(inverseMass(in, rtA, rtB));
     // The paper's combination rules: restitution min, friction coefficients averaged.
     const Wide staticFriction = 0.5 * (in.staticFrictionA + in.staticFrictionB);
     const Wide dynamicFriction = 0.5 * (in.dynamicFrictionA + in.dynamicFrictionB);

@@ -68,14 +68,6 @@ void applyImpulse(const Row& r, MotionSide& A, MotionSide& B, const Vec2& rA, co
     B.w += r.invIB * cross(rB, P);
 }
 
-/// 1 / (the row's inverse mass along dir at the lever arms); 0 when neither body can move that way.
-template <class Row>
-double massAlong(const Row& r, const Vec2& rA, const Vec2& rB, const Vec2& dir) {
-    const double ra = cross(rA, dir), rb = cross(rB, dir);
-    const double k = r.invMassA + r.invMassB + r.invIA * ra * ra + r.invIB * rb * rb;
-    return k > 0.0 ? 1.0 / k : 0.0;
-}
-
 /// Velocity of B's point relative to A's point, m/s.
 inline Vec2 relativeVelocity(const MotionSide& A, const MotionSide& B, const Vec2& rA, const Vec2& rB) {
     return B.v + cross(B.w, rB) - A.v - cross(A.w, rA);

@@ -14,8 +14,8 @@
 // joins whatever stage is current, and one that starts after the end returns at once. Which thread runs a chunk
 // never changes what the chunk computes (the loops write only their own items), so results stay bit-identical.
 //
-// A loop's cost on two threads is mostly cache lines moving between the cores (100 to 450 ns each on the
-// machines measured, docs/performance.md), so each loop moves as few as it can, and no thread waits on a store:
+// On two threads a loop pays for every cache line that moves between the cores (a round trip took 90 to 470 ns on
+// the machines measured, docs/performance.md), so each loop moves as few as it can, and no thread waits on a store:
 //   - the stage's number and description share one line, written by the driver as a sequence lock (odd while
 //     it writes), so a helper gets the whole stage in one move;
 //   - a member's chunk counter is written by the others only when they take from its run: a counter tagged with
@@ -64,8 +64,9 @@ public:
         inStage_ = true;
         const std::uint64_t stage = ++stageCount_;
         for (int m = 0; m < members(); ++m) doneTarget_ += chunkCount(m, n, grain);  // each member's run
-        publish(stage, {&fn, &callChunk<Fn>, n, grain});
-        work(0, stage, description_);
+        const Description d{const_cast<void*>(static_cast<const void*>(&fn)), &callChunk<Fn>, n, grain};
+        publish(stage, d);
+        work(0, stage, d);
         for (unsigned spins = 0; done_.load(std::memory_order_acquire) != doneTarget_; ++spins) pause(spins);
         inStage_ = false;
         if (failed_.load(std::memory_order_acquire)) {
@@ -128,10 +129,9 @@ private:
 
     // Driver: stage s is sequence 2 s, written as 2 s - 1 while its description changes.
     void publish(std::uint64_t stage, const Description& d) {
-        description_ = d;
         sequence_.store(2 * stage - 1, std::memory_order_relaxed);
         std::atomic_thread_fence(std::memory_order_release);
-        context_.store(const_cast<void*>(d.context), std::memory_order_relaxed);
+        context_.store(d.context, std::memory_order_relaxed);
         call_.store(d.call, std::memory_order_relaxed);
         items_.store(d.items, std::memory_order_relaxed);
         grain_.store(d.grain, std::memory_order_relaxed);
@@ -203,7 +203,6 @@ private:
     bool inStage_ = false;  // the driver is inside forEach (a nested call runs inline)
     std::uint64_t stageCount_ = 0;
     std::size_t doneTarget_ = 0;  // chunks of every stage so far: done_ reaches it when the present one is done
-    Description description_;
     // The stage, one line: its sequence number, then its description.
     alignas(64) std::atomic<std::uint64_t> sequence_{0};
     std::atomic<void*> context_{nullptr};

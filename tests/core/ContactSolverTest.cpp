@@ -396,7 +396,9 @@ TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
                       {x.staticFriction, y.staticFriction, "mu_s"}, {x.restitution, y.restitution, "e"},
                       {x.normalAcceleration, y.normalAcceleration, "normal acceleration"}})
                     expectSameBits(a, b, what, trial);
-                // What the fields mean, against the contact and bodies directly (rounding apart: 1e-12).
+                // What the fields mean, against the contact and bodies directly. Lever arms reach 10 m and inverse
+                // masses 300, and the largest difference measured over these trials is 8.9e-16: 1e-12 leaves room for
+                // the order of operations, and a wrong term would miss by far more.
                 const ContactData& c = contacts[k];
                 const Vec2 n = c.manifold.normal;
                 const Vec2 centerA = refs[k].indexA == kNullIndex ? records[8].center : sims[2 * k].center0;
