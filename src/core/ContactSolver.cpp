@@ -547,9 +547,64 @@ struct Start {
 
 // Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
 // Returns the lane's total normal impulse after it.
+// What the start path reads of lane k, field for field as row() gives it: what it needs to record a meeting speed
+// and push-out. completeRow adds the rest, which only a bounce reads.
+ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold, int k) {
+    const ContactBlockCold::Lane& lane = cold.lanes[k];
+    ContactConstraint c;
+    c.contact = lane.contact;
+    c.indexA = b.indexA[k];
+    c.indexB = b.indexB[k];
+    c.normal = {b.nx[k], b.ny[k]};
+    c.invMassA = b.invMassA[k];
+    c.invIA = b.invIA[k];
+    c.invMassB = b.invMassB[k];
+    c.invIB = b.invIB[k];
+    c.restitution = lane.restitution;
+    c.normalAcceleration = lane.normalAcceleration;
+    c.turns = b.turns;
+    c.keepsPush = lane.keepsPush;
+    c.pointCount = lane.pointCount;
+    for (int i = 0; i < 2; ++i) {
+        const ContactBlock::Point& q = b.points[i];
+        ContactConstraintPoint& p = c.points[i];
+        p.rnA = q.rnA[k];
+        p.rnB = q.rnB[k];
+        p.normalImpulse = q.normalImpulse[k];
+        p.relativeVelocity = lane.relativeVelocity[i];
+        p.engaged = lane.engaged[i];
+    }
+    return c;
+}
+
+void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlockCold& cold, int k) {
+    const ContactBlockCold::Lane& lane = cold.lanes[k];
+    c.staticFriction = b.staticFriction[k];
+    c.dynamicFriction = b.dynamicFriction[k];
+    c.rtA = b.rtA[k];
+    c.rtB = b.rtB[k];
+    c.tangentMass = b.tangentMass[k];
+    c.tangentImpulse = b.tangentImpulse[k];
+    c.sliding = b.sliding[k] != 0.0;
+    for (int i = 0; i < 2; ++i) {
+        const ContactBlock::Point& q = b.points[i];
+        ContactConstraintPoint& p = c.points[i];
+        p.anchorA = lane.anchorA[i];
+        p.anchorB = lane.anchorB[i];
+        p.ndA = q.ndA[k];
+        p.ndB = q.ndB[k];
+        p.baseSeparation = q.baseSeparation[k];
+        p.normalMass = q.normalMass[k];
+    }
+    c.k11 = b.k11[k];
+    c.k12 = b.k12[k];
+    c.k22 = b.k22[k];
+    c.invDet = b.invDet[k];
+}
+
 double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& wa, WideSide& wb, SolverBody* states,
                  const Start& start, const ContactPass& pass) {
-    ContactConstraint c = row(block, cold, k);
+    ContactConstraint c = rowMotion(block, cold, k);  // most starts record a meeting and no bounce
     const int count = c.pointCount;
     // Along each point's normal, what the substep gave the pair provisionally: push-out and warm start.
     double provisional[2] = {0.0, 0.0};
@@ -573,6 +628,7 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
                 }
             }
     } else {
+        completeRow(c, block, cold, k);
         auto side = [&](std::int32_t index, const WideSide& g) {
             MotionSide m;
             if (index != kNullIndex) m = loadSide(states, index);
@@ -957,47 +1013,8 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
 }
 
 ContactConstraint row(const ContactBlock& b, const ContactBlockCold& cold, int k) {
-    const ContactBlockCold::Lane& lane = cold.lanes[k];
-    ContactConstraint c;
-    c.contact = lane.contact;
-    c.indexA = b.indexA[k];
-    c.indexB = b.indexB[k];
-    c.normal = {b.nx[k], b.ny[k]};
-    c.invMassA = b.invMassA[k];
-    c.invIA = b.invIA[k];
-    c.invMassB = b.invMassB[k];
-    c.invIB = b.invIB[k];
-    c.staticFriction = b.staticFriction[k];
-    c.dynamicFriction = b.dynamicFriction[k];
-    c.restitution = lane.restitution;
-    c.normalAcceleration = lane.normalAcceleration;
-    c.rtA = b.rtA[k];
-    c.rtB = b.rtB[k];
-    c.tangentMass = b.tangentMass[k];
-    c.tangentImpulse = b.tangentImpulse[k];
-    c.sliding = b.sliding[k] != 0.0;
-    c.turns = b.turns;
-    c.keepsPush = lane.keepsPush;
-    c.pointCount = lane.pointCount;
-    for (int i = 0; i < 2; ++i) {
-        const ContactBlock::Point& q = b.points[i];
-        ContactConstraintPoint& p = c.points[i];
-        p.anchorA = lane.anchorA[i];
-        p.anchorB = lane.anchorB[i];
-        p.rnA = q.rnA[k];
-        p.rnB = q.rnB[k];
-        p.ndA = q.ndA[k];
-        p.ndB = q.ndB[k];
-        p.baseSeparation = q.baseSeparation[k];
-        p.normalImpulse = q.normalImpulse[k];
-        p.normalMass = q.normalMass[k];
-        p.relativeVelocity = lane.relativeVelocity[i];
-        p.engaged = lane.engaged[i];
-    }
-    c.k11 = b.k11[k];
-    c.k12 = b.k12[k];
-    c.k22 = b.k22[k];
-    c.invDet = b.invDet[k];
+    ContactConstraint c = rowMotion(b, cold, k);
+    completeRow(c, b, cold, k);
     return c;
 }
 
