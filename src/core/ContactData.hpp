@@ -33,7 +33,9 @@ struct ManifoldCache {
     int pointCount = 0;
 };
 
-struct ContactData {
+/// Line-aligned: the solver's preparation reads a record up to `cache`, in colour order (at random), and that part
+/// is then three lines, never four.
+struct alignas(64) ContactData {
     std::uint32_t a = 0, b = 0;     // body slots, a < b; the manifold's normal points from a to b
     Manifold manifold;
     // Intrusive lists through each body's contacts: side 0 is in a's list, side 1 in b's.

@@ -244,6 +244,8 @@ const ContactData kEmptyContact{};
 
 // Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
 constexpr std::size_t kPrefetchBlocks = 2;
+static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactData) == kCacheLine,
+              "what preparation reads of a contact is three lines");
 
 // Prepares blocks [0, count): block j holds rows refs[rows[j].first ..] (rows[j].count of them).
 [[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
