@@ -1,5 +1,6 @@
 #include "ContactSolver.hpp"
 
+#include "BodyLanes.hpp"
 #include "ContactData.hpp"
 #include "Impulse.hpp"
 #include "Prefetch.hpp"
@@ -440,73 +441,6 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
     if (rowMoves(c.indexB, c.invMassB)) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
 }
 
-// kLanes bodies' motion, one per lane: what a block's pass reads of its A sides or its B sides.
-struct WideSide {
-    Wide vx, vy, w, dAngle, dpx, dpy, qc, qs;
-};
-
-// A 4x4 transpose: four lanes' rows of four values into four values' lanes (its own inverse).
-[[gnu::always_inline]] inline void transpose(Wide& a, Wide& b, Wide& c, Wide& d) {
-    const Wide t0 = __builtin_shufflevector(a, b, 0, 4, 2, 6), t1 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
-    const Wide t2 = __builtin_shufflevector(c, d, 0, 4, 2, 6), t3 = __builtin_shufflevector(c, d, 1, 5, 3, 7);
-    a = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
-    b = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
-    c = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
-    d = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
-}
-
-// A body record's two 32-byte halves, (v, w, dAngle) and (dp, dq), each moved whole as four lanes: one cache line.
-static_assert(alignof(SolverBody) == 64, "a record is one cache line, never split across two");
-static_assert(sizeof(SolverBody) == 2 * sizeof(Wide) && offsetof(SolverBody, w) == 2 * sizeof(double) &&
-                  offsetof(SolverBody, dAngle) == 3 * sizeof(double) && offsetof(SolverBody, dp) == sizeof(Wide) &&
-                  offsetof(SolverBody, dq) == sizeof(Wide) + 2 * sizeof(double),
-              "a SolverBody is (v, w, dAngle) then (dp, dq), four doubles each");
-
-// The access type may alias doubles and asks for no alignment (packed): GCC and Clang then load and store it whole
-// with unaligned moves, which cost nothing on an aligned record. The loops then assume nothing of alignment.
-struct [[gnu::packed, gnu::may_alias]] RecordHalf {
-    Wide values;
-};
-
-[[gnu::always_inline]] inline Wide loadHalf(const SolverBody& s, int half) {
-    return reinterpret_cast<const RecordHalf*>(&s)[half].values;
-}
-[[gnu::always_inline]] inline void storeVelocityHalf(SolverBody& s, const Wide& values) {
-    reinterpret_cast<RecordHalf*>(&s)->values = values;
-}
-
-// The lanes' bodies: each record's halves loaded whole and transposed. index kNullIndex reads states[-1], a still
-// body.
-template <bool Pose>
-[[gnu::always_inline]] inline WideSide gather(const std::int32_t (&index)[kLanes], const SolverBody* states) {
-    const SolverBody &s0 = states[index[0]], &s1 = states[index[1]], &s2 = states[index[2]], &s3 = states[index[3]];
-    WideSide g{};  // first lane k's half-record in the k-th vector, then transposed into one field per vector
-    g.vx = loadHalf(s0, 0);
-    g.vy = loadHalf(s1, 0);
-    g.w = loadHalf(s2, 0);
-    g.dAngle = loadHalf(s3, 0);
-    transpose(g.vx, g.vy, g.w, g.dAngle);
-    if constexpr (Pose) {
-        g.dpx = loadHalf(s0, 1);
-        g.dpy = loadHalf(s1, 1);
-        g.qc = loadHalf(s2, 1);
-        g.qs = loadHalf(s3, 1);
-        transpose(g.dpx, g.dpy, g.qc, g.qs);
-    }
-    return g;
-}
-
-// Writes the lanes' velocities back (and turns, which only a bounce changes), only for sides the row can move
-// (`writes`, a bit per lane): a kinematic body is read by many rows of one colour, the still body by all.
-[[gnu::always_inline]] inline void scatter(const std::int32_t (&index)[kLanes], unsigned writes, WideSide g,
-                                           SolverBody* states) {
-    transpose(g.vx, g.vy, g.w, g.dAngle);
-    if (writes & 1u) storeVelocityHalf(states[index[0]], g.vx);
-    if (writes & 2u) storeVelocityHalf(states[index[1]], g.vy);
-    if (writes & 4u) storeVelocityHalf(states[index[2]], g.w);
-    if (writes & 8u) storeVelocityHalf(states[index[3]], g.dAngle);
-}
-
 // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
 // the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
 template <bool Turns>
@@ -918,20 +852,12 @@ PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, Cont
 }
 #endif
 
-// The build a pass runs: the one named, or for Best the widest this processor runs.
-WideCode pick(WideCode code) {
-    if (code != WideCode::Best) return code;
-    if (avx512CodeRuns()) return WideCode::Avx512;
-    if (avx2CodeRuns()) return WideCode::Avx2;
-    return WideCode::Baseline;
-}
-
 }  // namespace
 
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
                              const BodyData* bodies, WideCode code) {
-    switch (pick(code)) {
+    switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
     case WideCode::Avx512: return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies);
     case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies);
@@ -941,7 +867,7 @@ PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const
 }
 
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
-    switch (pick(code)) {
+    switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
     case WideCode::Avx512: return warmStartAvx512(begin, end, states);
     case WideCode::Avx2: return warmStartAvx2(begin, end, states);
@@ -952,7 +878,7 @@ void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* state
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code) {
-    switch (pick(code)) {
+    switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
     case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
     case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass);

@@ -4,6 +4,7 @@
 // and finalize (poses, boxes, sleep timers, proxies that left their boxes). Islands share no moving body, so a
 // group's substeps need nothing of another's: each group runs all of its substeps while its rows are in cache.
 
+#include "BodyPasses.hpp"
 #include "Impulse.hpp"
 #include "Joints.hpp"
 #include "Prefetch.hpp"
@@ -483,14 +484,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
         }
         {
             auto timer = stage(Stage::Integrate);
-            forBodies([&](std::size_t i) {
-                SolverBody& s = st[i];
-                s.dp += h * s.v;
-                if (s.w != 0.0) {
-                    const double turn = h * s.w;
-                    s.dAngle += turn;
-                    s.dq = compose(rotationBy(turn), s.dq);
-                }
+            executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+                integratePositions(st, bodyList + begin, end - begin, h);
             });
         }
         if (anyRows) {

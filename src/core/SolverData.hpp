@@ -92,25 +92,51 @@ struct alignas(64) SolverBodySim {
 };
 static_assert(sizeof(SolverBodySim) == 128, "two cache lines");
 
-/// Small-angle rotation by theta (rad): a Taylor series accurate to rounding for |theta| <= 0.2 (the first term
-/// left out, theta^12 / 12!, is below 1e-17 there), and the library functions beyond. Substeps turn bodies by far
-/// less than that, so the step pays for a few multiplications instead of a sine and a cosine per body per substep.
-/// The series' factors are reciprocals folded at compile time: a division per term would cost more than the rest
-/// of the body's update.
-inline Rotation rotationBy(double theta) {
-    if (!(std::abs(theta) <= 0.2)) return Rotation::fromAngle(theta);
-    const double t2 = theta * theta;
+/// The series rotationBy uses for |theta| <= 0.2: cosine and sine of theta (rad), on a double or, lane by lane, on
+/// four (Wide.hpp), with the same operations in the same order, so a lane's bits are the scalar's. Accurate to
+/// rounding there (the first term left out, theta^12 / 12!, is below 1e-17). The series' factors are reciprocals
+/// folded at compile time: a division per term would cost more than the rest of the body's update.
+template <class T>
+[[gnu::always_inline]] inline void rotationSeries(const T& theta, T& c, T& s) {
+    const T t2 = theta * theta;
     constexpr double k6 = 1.0 / 6.0, k20 = 1.0 / 20.0, k42 = 1.0 / 42.0, k72 = 1.0 / 72.0, k110 = 1.0 / 110.0;
     constexpr double k2 = 1.0 / 2.0, k12 = 1.0 / 12.0, k30 = 1.0 / 30.0, k56 = 1.0 / 56.0, k90 = 1.0 / 90.0;
-    const double s =
-        theta * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42 * (1.0 - t2 * k72 * (1.0 - t2 * k110)))));
-    const double c = 1.0 - t2 * k2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56 * (1.0 - t2 * k90))));
-    return {c, s};
+    s = theta * (1.0 - t2 * k6 * (1.0 - t2 * k20 * (1.0 - t2 * k42 * (1.0 - t2 * k72 * (1.0 - t2 * k110)))));
+    c = 1.0 - t2 * k2 * (1.0 - t2 * k12 * (1.0 - t2 * k30 * (1.0 - t2 * k56 * (1.0 - t2 * k90))));
+}
+
+/// Small-angle rotation by theta (rad): the series above for |theta| <= 0.2, and the library functions beyond.
+/// Substeps turn bodies by far less than that, so the step pays for a few multiplications instead of a sine and a
+/// cosine per body per substep.
+inline Rotation rotationBy(double theta) {
+    if (!(std::abs(theta) <= 0.2)) return Rotation::fromAngle(theta);
+    Rotation r;
+    rotationSeries(theta, r.c, r.s);
+    return r;
+}
+
+/// (c1, s1) * (c2, s2): rotation by the second, then by the first, as cosine and sine; on doubles or lanes.
+template <class T>
+[[gnu::always_inline]] inline void composeParts(const T& c1, const T& s1, const T& c2, const T& s2, T& c, T& s) {
+    c = c1 * c2 - s1 * s2;
+    s = s1 * c2 + c1 * s2;
 }
 
 /// q1 * q2: rotation by q2, then by q1.
 inline Rotation compose(const Rotation& q1, const Rotation& q2) {
-    return {q1.c * q2.c - q1.s * q2.s, q1.s * q2.c + q1.c * q2.s};
+    Rotation q;
+    composeParts(q1.c, q1.s, q2.c, q2.s, q.c, q.s);
+    return q;
+}
+
+/// A substep's position integration of one body: its centre moves by h v, and a turning one (w != 0) turns by h w.
+inline void integratePosition(SolverBody& s, double h) {
+    s.dp += h * s.v;
+    if (s.w != 0.0) {
+        const double turn = h * s.w;
+        s.dAngle += turn;
+        s.dq = compose(rotationBy(turn), s.dq);
+    }
 }
 
 }  // namespace physim

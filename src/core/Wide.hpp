@@ -56,6 +56,14 @@ inline bool avx512CodeRuns() {
 #endif
 }
 
+/// The build a loop runs: the one named, or for Best the widest this processor runs.
+inline WideCode pickWideCode(WideCode code) {
+    if (code != WideCode::Best) return code;
+    if (avx512CodeRuns()) return WideCode::Avx512;
+    if (avx2CodeRuns()) return WideCode::Avx2;
+    return WideCode::Baseline;
+}
+
 constexpr int kLanes = 4;
 
 using Wide = double __attribute__((vector_size(kLanes * sizeof(double))));

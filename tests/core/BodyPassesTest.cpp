@@ -1,0 +1,73 @@
+// The passes over bodies run four bodies at a time (src/core/BodyPasses.cpp). Each body must get bit for bit what
+// the scalar rule (integratePosition) gives it, on every build of the loop (baseline x86-64, AVX2, AVX-512), in a
+// chunk of any length and whatever shares its four: otherwise a scene's bits would depend on the processor and on
+// how the threads cut the bodies into chunks.
+
+#include "BodyPasses.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace physim {
+namespace {
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+::testing::AssertionResult sameRecord(const SolverBody& x, const SolverBody& y) {
+    const double fx[] = {x.v.x(), x.v.y(), x.w, x.dAngle, x.dp.x(), x.dp.y(), x.dq.c, x.dq.s};
+    const double fy[] = {y.v.x(), y.v.y(), y.w, y.dAngle, y.dp.x(), y.dp.y(), y.dq.c, y.dq.s};
+    for (int i = 0; i < 8; ++i)
+        if (!sameBits(fx[i], fy[i]))
+            return ::testing::AssertionFailure() << "field " << i << ": " << fx[i] << " against " << fy[i];
+    return ::testing::AssertionSuccess();
+}
+
+TEST(BodyPasses, PositionsIntegrateAsTheScalarRuleOnEveryBuildAndChunk) {
+    std::vector<WideCode> codes{WideCode::Baseline, WideCode::Best};
+    if (avx2CodeRuns()) codes.push_back(WideCode::Avx2);
+    if (avx512CodeRuns()) codes.push_back(WideCode::Avx512);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_int_distribution<int> kind(0, 5);
+    int turned = 0, still = 0, wide = 0;
+    for (int trial = 0; trial < 300; ++trial) {
+        // Bodies that do not turn (w = 0, also -0), turn a little, or turn past the series' range (0.2 rad in h).
+        const std::size_t n = 1 + static_cast<std::size_t>(trial % 13);
+        std::vector<SolverBody> start(n);
+        for (SolverBody& s : start) {
+            s.v = {3.0 * u(rng), 3.0 * u(rng)};
+            const int k = kind(rng);
+            s.w = k == 0 ? 0.0 : k == 1 ? -0.0 : k == 5 ? 200.0 * u(rng) : 5.0 * u(rng);
+            s.dAngle = k == 1 ? -0.0 : 0.1 * u(rng);
+            s.dp = {0.01 * u(rng), 0.01 * u(rng)};
+            s.dq = rotationBy(s.dAngle);
+            (s.w == 0.0 ? still : turned) += 1;
+            wide += k == 5 ? 1 : 0;
+        }
+        // Listed in a shuffled order: a pass reaches its bodies through a group's list.
+        std::vector<std::uint32_t> list(n);
+        for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(i);
+        std::shuffle(list.begin(), list.end(), rng);
+        const double h = 1.0 / 480.0;
+        std::vector<SolverBody> expected = start;
+        for (SolverBody& s : expected) integratePosition(s, h);
+        for (WideCode code : codes) {
+            std::vector<SolverBody> got = start;
+            integratePositions(got.data(), list.data(), n, h, code);
+            for (std::size_t i = 0; i < n; ++i)
+                EXPECT_TRUE(sameRecord(got[i], expected[i])) << "trial " << trial << " body " << i << " code "
+                                                             << static_cast<int>(code);
+        }
+    }
+    EXPECT_GT(still, 100);  // every path ran: still lanes beside turning ones, and turns past the series
+    EXPECT_GT(turned, 500);
+    EXPECT_GT(wide, 50);
+}
+
+}  // namespace
+}  // namespace physim
