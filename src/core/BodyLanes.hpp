@@ -10,7 +10,7 @@
 
 namespace physim {
 
-// kLanes bodies' motion, one per lane: what a block's pass reads of its A sides or its B sides.
+// kLanes bodies' motion, one per lane: a block's A sides or B sides, or four bodies of a pass over bodies.
 struct WideSide {
     Wide vx, vy, w, dAngle, dpx, dpy, qc, qs;
 };

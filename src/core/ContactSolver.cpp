@@ -481,10 +481,8 @@ struct Start {
     double before[2] = {0.0, 0.0}, separation[2] = {0.0, 0.0}, delta[2] = {0.0, 0.0}, push[2] = {0.0, 0.0};
 };
 
-// Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
-// Returns the lane's total normal impulse after it.
-// What the start path reads of lane k, field for field as row() gives it: what it needs to record a meeting speed
-// and push-out. completeRow adds the rest, which only a bounce reads.
+// What lane k's motion needs, field for field as row() gives it: enough to apply and record a normal impulse (the
+// start path's meeting speed and push-out, the push records). completeRow adds the rest, which only a bounce reads.
 ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold, int k) {
     const ContactBlockCold::Lane& lane = cold.lanes[k];
     ContactConstraint c;
@@ -538,6 +536,8 @@ void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlock
     c.invDet = b.invDet[k];
 }
 
+// Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
+// Returns the lane's total normal impulse after it.
 double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& wa, WideSide& wb, SolverBody* states,
                  const Start& start, const ContactPass& pass) {
     ContactConstraint c = rowMotion(block, cold, k);  // most starts record a meeting and no bounce
@@ -600,7 +600,7 @@ void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* stat
     for (int k = 0; k < kLanes; ++k) {
         ContactBlockCold::Lane& lane = cold.lanes[k];
         if (lane.push[0] == 0.0 && lane.push[1] == 0.0) continue;
-        const ContactConstraint c = row(block, cold, k);
+        const ContactConstraint c = rowMotion(block, cold, k);
         MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
         for (int i = 0; i < 2; ++i) {
             if (lane.push[i] == 0.0) continue;
@@ -628,7 +628,7 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
             if (started[i][k]) continue;
             const double held = std::min(pushes[i][k], block.points[i].normalImpulse[k]);
             if (held == lane.push[i]) continue;
-            const ContactConstraint c = row(block, cold, k);
+            const ContactConstraint c = rowMotion(block, cold, k);
             recordPush(pass, c, c.points[i], held - lane.push[i]);
             lane.push[i] = held;
             if (held != 0.0) block.holdsPush = true;
