@@ -148,6 +148,14 @@ void WorldImpl::solve() {
     groupIslands(byIsland);
     const std::size_t groups = groupBodyStart.size() - 1;
 
+    // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
+    // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
+    // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
+    auto spread = [&](std::size_t g) {
+        const std::size_t size = groupBodyStart[g + 1] - groupBodyStart[g];
+        return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > n;
+    };
+
     if (rowCount > 0 || !jointConstraints.empty()) {
         StageTimer timer(profile, Stage::Solve);
         // Rows sorted by group, then colour (then the overflow), each in the awake contacts' order.
@@ -172,9 +180,25 @@ void WorldImpl::solve() {
             for (std::uint32_t r = first; r < end; r += lanes) blockRows.push_back({r, std::min(lanes, end - r)});
             blockStart[s + 1] = static_cast<std::uint32_t>(blockRows.size());
         }
-        contactBlocks.resize(blockRows.size());  // each group fills its own (solveGroup), every lane of them
-        contactCold.resize(blockRows.size());
+        // A group's blocks are needed only while it is solved. Each worker solves its groups one after another in
+        // a region of its own, so the blocks the step writes and reads stay in the worker's cache, where one array
+        // of a large scene's blocks (about 400 bytes a row) would be written and read from memory. A spread group is
+        // solved by all workers before the others start: it uses the start of the array, whatever its size.
+        regionBlocks = 0;
+        std::size_t spreadBlocks = 0;
+        for (std::size_t g = 0; g < groups; ++g) {
+            const std::size_t blocks = blockStart[(g + 1) * kSegments] - blockStart[g * kSegments];
+            std::size_t& most = spread(g) ? spreadBlocks : regionBlocks;
+            most = std::max(most, blocks);
+        }
+        const std::size_t size =
+            std::max(spreadBlocks, regionBlocks * static_cast<std::size_t>(executor.workerSlots()));
+        if (contactBlocks.size() < size) {
+            contactBlocks.resize(size);  // each group fills its own (solveGroup), every lane of them
+            contactCold.resize(size);
+        }
         rowImpact.resize(blockRows.size() * kLanes);  // each group sets its rows' lanes
+        rowImpactSpeed.resize(blockRows.size() * kLanes);
         // Joint rows sorted by group, each group's in the joints' order.
         groupJointStart.assign(groups + 1, 0);
         auto groupOfJoint = [&](const JointConstraint& row) {
@@ -201,37 +225,28 @@ void WorldImpl::solve() {
     pushVelocities.assign(n, PushVelocity{});
     rowsBase.resize(n);
     warmStarts.resize(n);
-    // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
-    // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
-    // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
-    auto spread = [&](std::size_t g) {
-        const std::size_t size = groupBodyStart[g + 1] - groupBodyStart[g];
-        return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > n;
-    };
     std::atomic<std::size_t> turningRows{0};
     for (std::size_t g = 0; g < groups; ++g)
-        if (spread(g)) turningRows += solveGroup(g, true);
+        if (spread(g)) turningRows += solveGroup(g, true, 0);
     if (groups > 1) {
         StageTimer timer(profile, Stage::Solve);
-        executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int) {
+        executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int worker) {
             for (std::size_t g = begin; g < end; ++g)
-                if (!spread(g)) turningRows += solveGroup(g, false);
+                if (!spread(g)) turningRows += solveGroup(g, false, worker);
         });
     }
     profile.turningRows = turningRows.load();
 
-    const ContactBlockCold* const cold = contactCold.data();
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
         // Impacts, in row order (deterministic); each group's store pass found its rows' points (impactPoint).
-        for (std::size_t b = 0; b < contactBlocks.size(); ++b)
+        for (std::size_t b = 0; b < blockRows.size(); ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
                 const int point = rowImpact[b * kLanes + lane];
                 if (point < 0) continue;
-                const ContactBlockCold::Lane& c = cold[b].lanes[lane];
-                const Manifold& m = contacts[c.contact].manifold;
+                const Manifold& m = contacts[rowContacts[blockRows[b].first + lane].contact].manifold;
                 events.impacts.push_back(
-                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, -c.relativeVelocity[point]});
+                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, rowImpactSpeed[b * kLanes + lane]});
             }
     }
 
@@ -362,12 +377,7 @@ void WorldImpl::finishBody(std::size_t i) {
         (proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.proxy != kNullIndex && travel > 0.5 * b.coreRadius ? 2 : 0));
 }
 
-PreparedRows WorldImpl::prepareBlocks(std::size_t begin, std::size_t end) {
-    return prepareContacts(contactBlocks.data() + begin, contactCold.data() + begin, blockRows.data() + begin,
-                           end - begin, rowContacts.data(), contacts.data(), sims.data(), bodies.data());
-}
-
-std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
+std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     const int substeps = settings.substeps;
     const double h = dt / substeps;
     const std::uint32_t* const bodyList = groupBodies.data() + groupBodyStart[g];
@@ -375,8 +385,10 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     const std::uint32_t* const segments = blockStart.data() + g * kSegments;
     const bool anyRows = segments[kSegments] > segments[0] || groupJointStart[g + 1] > groupJointStart[g];
     SolverBody* const st = states;
-    ContactBlock* const blocks = contactBlocks.data();
-    ContactBlockCold* const cold = contactCold.data();
+    // Block b of the group (numbered as blockRows) is blocks[b - firstBlock], in the worker's region.
+    const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
+    ContactBlock* const blocks = contactBlocks.data() + static_cast<std::size_t>(worker) * regionBlocks;
+    ContactBlockCold* const cold = contactCold.data() + static_cast<std::size_t>(worker) * regionBlocks;
     // On the calling thread's share of the step: a stage's time counts only where one group runs at a time.
     auto stage = [&](Stage s) { return timed ? std::optional<StageTimer>(std::in_place, profile, s) : std::nullopt; };
     auto forBodies = [&](auto&& f) {
@@ -415,16 +427,18 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     // A block is prepared in the step's first pass over the rows, just before its warm start, and its impulses
     // stored in the last, just after its relax: the thread that solves it in every pass (Team.hpp) writes it first
     // and reads it last, so it never moves to another core's cache for that.
-    const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
     std::atomic<std::size_t> turningRows{0};
     std::atomic<bool> bounces{false};  // some row can bounce: only then is what the warm start gave kept (bounces)
     const double impactSpeed = settings.impactSpeedThreshold;
     auto storeBlocks = [&](std::size_t begin, std::size_t end) {
         for (std::size_t b = begin; b < end; ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
-                const ContactBlockCold::Lane& row = cold[b].lanes[lane];
-                storeImpulses(blocks[b], cold[b], static_cast<int>(lane), contacts[row.contact]);
-                rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(impactPoint(row, impactSpeed));
+                const std::size_t local = b - firstBlock;
+                const ContactBlockCold::Lane& row = cold[local].lanes[lane];
+                storeImpulses(blocks[local], cold[local], static_cast<int>(lane), contacts[row.contact]);
+                const int point = impactPoint(row, impactSpeed);
+                rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(point);
+                if (point >= 0) rowImpactSpeed[b * kLanes + lane] = -row.relativeVelocity[point];
             }
     };
     const bool storeInRelax = settings.relaxIterations > 0;
@@ -444,7 +458,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
     auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
         pass([&](std::size_t b, std::size_t e) {
-                 solveContacts(blocks + b, blocks + e, cold + b, st, contactPass);
+                 solveContacts(blocks + (b - firstBlock), blocks + (e - firstBlock), cold + (b - firstBlock), st,
+                               contactPass);
                  if (store) storeBlocks(b, e);
              },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
@@ -467,12 +482,15 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed) {
             auto timer = stage(Stage::Solve);
             if (sub == 0 || !bodiesWarmStart) {
                 pass([&](std::size_t b, std::size_t e) {
+                         ContactBlock* const first = blocks + (b - firstBlock);
                          if (sub == 0) {
-                             const PreparedRows prepared = prepareBlocks(b, e);
+                             const PreparedRows prepared =
+                                 prepareContacts(first, cold + (b - firstBlock), blockRows.data() + b, e - b,
+                                                 rowContacts.data(), contacts.data(), sims.data(), bodies.data());
                              turningRows += prepared.turning;  // one add per chunk
                              if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
                          }
-                         warmStartContacts(blocks + b, blocks + e, st);
+                         warmStartContacts(first, first + (e - b), st);
                      },
                      [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
                 if (bounces.load(std::memory_order_relaxed))

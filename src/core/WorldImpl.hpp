@@ -95,11 +95,15 @@ struct WorldImpl {
     std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise
     std::vector<RowRef> rowContacts;             // the contact of each row, segment by segment
     std::vector<std::uint32_t> segmentStart;     // rows of segment s: [segmentStart[s], segmentStart[s + 1])
-    std::vector<ContactBlock> contactBlocks;     // the rows, kLanes to a block (an overflow row alone)
-    std::vector<ContactBlockCold> contactCold;   // the rest of each block's rows
+    // The rows, kLanes to a block (an overflow row alone), and the rest of each block's rows: a group's blocks live
+    // only while it is solved, in a region of `regionBlocks` blocks per worker (Solver.cpp), reused group after group.
+    std::vector<ContactBlock> contactBlocks;
+    std::vector<ContactBlockCold> contactCold;
+    std::size_t regionBlocks = 0;
     std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
     std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
+    std::vector<double> rowImpactSpeed;          // per block lane with an impact: how fast it met, m/s
     std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
     ContactPass contactPassSettings;             // this step's pass constants
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
@@ -172,8 +176,8 @@ struct WorldImpl {
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record
     void finishBody(std::size_t i);  // its record from the solver's state: pose, box, sleep timer, enlarged
-    PreparedRows prepareBlocks(std::size_t begin, std::size_t end);  // fills blocks
-    std::size_t solveGroup(std::size_t g, bool timed);  // a group's rows, substeps, impulses; its turning rows
+    /// A group's rows, substeps and impulses, its blocks in `worker`'s region; returns its turning rows.
+    std::size_t solveGroup(std::size_t g, bool timed, int worker);
     void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
 };
 
