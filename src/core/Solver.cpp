@@ -385,10 +385,11 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     const std::uint32_t* const segments = blockStart.data() + g * kSegments;
     const bool anyRows = segments[kSegments] > segments[0] || groupJointStart[g + 1] > groupJointStart[g];
     SolverBody* const st = states;
-    // Block b of the group (numbered as blockRows) is blocks[b - firstBlock], in the worker's region.
+    // Block b of the group (numbered as blockRows) lies at blockAt(b) and coldAt(b), in the worker's region.
     const std::size_t firstBlock = segments[0], blockCount = segments[kSegments] - firstBlock;
-    ContactBlock* const blocks = contactBlocks.data() + static_cast<std::size_t>(worker) * regionBlocks;
-    ContactBlockCold* const cold = contactCold.data() + static_cast<std::size_t>(worker) * regionBlocks;
+    const std::size_t region = static_cast<std::size_t>(worker) * regionBlocks;
+    auto blockAt = [&](std::size_t b) { return contactBlocks.data() + region + (b - firstBlock); };
+    auto coldAt = [&](std::size_t b) { return contactCold.data() + region + (b - firstBlock); };
     // On the calling thread's share of the step: a stage's time counts only where one group runs at a time.
     auto stage = [&](Stage s) { return timed ? std::optional<StageTimer>(std::in_place, profile, s) : std::nullopt; };
     auto forBodies = [&](auto&& f) {
@@ -433,9 +434,8 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     auto storeBlocks = [&](std::size_t begin, std::size_t end) {
         for (std::size_t b = begin; b < end; ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
-                const std::size_t local = b - firstBlock;
-                const ContactBlockCold::Lane& row = cold[local].lanes[lane];
-                storeImpulses(blocks[local], cold[local], static_cast<int>(lane), contacts[row.contact]);
+                const ContactBlockCold::Lane& row = coldAt(b)->lanes[lane];
+                storeImpulses(*blockAt(b), *coldAt(b), static_cast<int>(lane), contacts[row.contact]);
                 const int point = impactPoint(row, impactSpeed);
                 rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(point);
                 if (point >= 0) rowImpactSpeed[b * kLanes + lane] = -row.relativeVelocity[point];
@@ -458,8 +458,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
         pass([&](std::size_t b, std::size_t e) {
-                 solveContacts(blocks + (b - firstBlock), blocks + (e - firstBlock), cold + (b - firstBlock), st,
-                               contactPass);
+                 solveContacts(blockAt(b), blockAt(e), coldAt(b), st, contactPass);
                  if (store) storeBlocks(b, e);
              },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
@@ -482,15 +481,14 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
             auto timer = stage(Stage::Solve);
             if (sub == 0 || !bodiesWarmStart) {
                 pass([&](std::size_t b, std::size_t e) {
-                         ContactBlock* const first = blocks + (b - firstBlock);
                          if (sub == 0) {
                              const PreparedRows prepared =
-                                 prepareContacts(first, cold + (b - firstBlock), blockRows.data() + b, e - b,
+                                 prepareContacts(blockAt(b), coldAt(b), blockRows.data() + b, e - b,
                                                  rowContacts.data(), contacts.data(), sims.data(), bodies.data());
                              turningRows += prepared.turning;  // one add per chunk
                              if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
                          }
-                         warmStartContacts(first, first + (e - b), st);
+                         warmStartContacts(blockAt(b), blockAt(e), st);
                      },
                      [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
                 if (bounces.load(std::memory_order_relaxed))

@@ -158,6 +158,7 @@ std::vector<double> crowdScene(int threads) {
     ids.push_back(world.createBody(paddle));
     // The impact events too (each group's store pass finds its rows' impacts, on whichever worker solves it):
     // bodies, point and speed, step by step.
+    constexpr std::size_t kImpactFields = 8;  // per event, as below
     std::vector<double> impacts;
     for (int i = 0; i < 90; ++i) {
         world.step(kDt);
@@ -167,7 +168,7 @@ std::vector<double> crowdScene(int threads) {
                 impacts.push_back(v);
     }
     std::vector<double> out = poses(world, ids);
-    out.push_back(static_cast<double>(impacts.size() / 8));
+    out.push_back(static_cast<double>(impacts.size() / kImpactFields));
     out.insert(out.end(), impacts.begin(), impacts.end());
     return out;
 }
