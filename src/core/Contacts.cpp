@@ -8,6 +8,7 @@
 #include "physim/core/ContinuousKernel.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace physim {
@@ -209,6 +210,7 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
 void WorldImpl::addAwakeContact(std::uint32_t index) {
     contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
     awakeContacts.push_back(index);
+    rowsStale = true;
 }
 
 void WorldImpl::removeAwakeContact(std::uint32_t index) {
@@ -218,6 +220,7 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
     contacts[last].awakeIndex = at;
     awakeContacts.pop_back();
     contacts[index].awakeIndex = kNullIndex;
+    rowsStale = true;
 }
 
 void WorldImpl::updatePairs() {
@@ -244,6 +247,7 @@ void WorldImpl::updateContacts() {
     // scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
     constexpr std::size_t kAhead = 4, kPrefetchFromContacts = 8192;
     const bool prefetch = n >= kPrefetchFromContacts;
+    std::atomic<bool> pointsChanged{false};  // a contact gained its first point or lost its last: it has a row or not
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t i = begin; i < end; ++i) {
             if (prefetch && i + 2 * kAhead < end)
@@ -264,11 +268,15 @@ void WorldImpl::updateContacts() {
                 contactFlags[i] = kDeferred;
                 continue;
             }
+            const bool hadPoints = c.manifold.pointCount > 0;
             const bool touching = refreshManifold(c, A, B, speculative, reuseTolerance, dt);
+            if (hadPoints != (c.manifold.pointCount > 0)) pointsChanged.store(true, std::memory_order_relaxed);
             if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
             c.touching = touching;
         }
     });
+
+    if (pointsChanged.load()) rowsStale = true;
 
     // Changes in a fixed order (the awake list's), serially: they link islands, wake sleepers and destroy.
     changedContacts.clear();

@@ -108,6 +108,7 @@ void WorldImpl::addAwakeBody(std::uint32_t slot) {
     if (b.awake() || b.type == BodyType::Static) return;
     b.awakeIndex = static_cast<std::int32_t>(awake.size());
     awake.push_back(slot);
+    rowsStale = true;
 }
 
 void WorldImpl::removeAwakeBody(std::uint32_t slot) {
@@ -118,6 +119,7 @@ void WorldImpl::removeAwakeBody(std::uint32_t slot) {
     bodies[last].awakeIndex = b.awakeIndex;
     awake.pop_back();
     b.awakeIndex = kNullIndex;
+    rowsStale = true;
 }
 
 void WorldImpl::wakeBody(std::uint32_t slot) {

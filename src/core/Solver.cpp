@@ -67,7 +67,6 @@ void WorldImpl::solve() {
     const int substeps = settings.substeps;
     const double h = dt / substeps, invH = 1.0 / h;
     const Softness contactSoftness = makeSoftness(settings.contactHertz, settings.contactDampingRatio, h);
-    const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
 
     {
         StageTimer timer(profile, Stage::Forces);
@@ -78,13 +77,70 @@ void WorldImpl::solve() {
         enlarged.assign(n, 0);
     }
 
+    // The rows' layout is the last step's while nothing that decides it has changed (WorldImpl::rowsStale). Joints
+    // are prepared with it, so a scene with joint rows lays its rows out every step.
+    const bool byIsland = !effects.perSubstep();  // a per-substep effect may couple any bodies
+    const bool keep = !rowsStale && byIsland == rowsByIsland && rowJointCount == 0 && jointConstraints.empty();
+    const std::size_t rowCount = keep ? rowContacts.size() : layOutRows(byIsland, h);
+    rowsStale = false;
+    rowsByIsland = byIsland;
+    profile.rowsLaidOut = !keep && (rowCount > 0 || !jointConstraints.empty());
+    const std::size_t groups = groupBodyStart.size() - 1;
+
+    contactPassSettings.h = h;
+    contactPassSettings.invH = invH;
+    contactPassSettings.softness = contactSoftness;
+    contactPassSettings.maxPushVelocity = settings.contactPushMaxVelocity;
+    contactPassSettings.restitutionThreshold = settings.restitutionThreshold;
+    contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
+    pushVelocities.assign(n, PushVelocity{});
+    rowsBase.resize(n);
+    warmStarts.resize(n);
+    std::atomic<std::size_t> turningRows{0};
+    for (std::size_t g = 0; g < groups; ++g)
+        if (spreads(g)) turningRows += solveGroup(g, true, 0);
+    if (groups > 1) {
+        StageTimer timer(profile, Stage::Solve);
+        executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int worker) {
+            for (std::size_t g = begin; g < end; ++g)
+                if (!spreads(g)) turningRows += solveGroup(g, false, worker);
+        });
+    }
+    profile.turningRows = turningRows.load();
+
+    if (rowCount > 0) {
+        StageTimer timer(profile, Stage::Solve);
+        // Impacts, in row order (deterministic); each group's store pass found its rows' points (impactPoint).
+        for (std::size_t b = 0; b < blockRows.size(); ++b)
+            for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
+                const int point = rowImpact[b * kLanes + lane];
+                if (point < 0) continue;
+                const Manifold& m = contacts[rowContacts[blockRows[b].first + lane].contact].manifold;
+                events.impacts.push_back(
+                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, rowImpactSpeed[b * kLanes + lane]});
+            }
+    }
+
+    StageTimer timer(profile, Stage::Integrate);
+    fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(enlarged[i] & 1)) continue;
+        const BodyData& b = bodies[sims[i].body];
+        // The Continuous stage may put this body back: its proxy moves after that stage, once (bit 2).
+        if ((enlarged[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged[i] |= 4;
+        else moveProxy(b);
+    }
+}
+
+std::size_t WorldImpl::layOutRows(bool byIsland, double h) {
+    const std::size_t n = awake.size();
+    const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
     // Colour the rows: greedy, in the awake list's order (deterministic), each dynamic body's colours as bits.
     // Meanwhile join the bodies each row couples (union-find over awake indices) to solve islands apart.
     std::size_t rowCount = 0;
     rowContacts.clear();
     blockRows.clear();
     jointConstraints.clear();
-    const bool byIsland = !effects.perSubstep();  // a per-substep effect may couple any bodies
     bodyRoot.resize(n);
     for (std::size_t i = 0; i < n; ++i) bodyRoot[i] = static_cast<std::int32_t>(i);
     rowsWarmStart.assign(n, 0);
@@ -148,14 +204,6 @@ void WorldImpl::solve() {
     groupIslands(byIsland);
     const std::size_t groups = groupBodyStart.size() - 1;
 
-    // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all
-    // of its passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its
-    // loops over the threads; the others go to the threads whole. Either way a group gives the same bits.
-    auto spread = [&](std::size_t g) {
-        const std::size_t size = groupBodyStart[g + 1] - groupBodyStart[g];
-        return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > n;
-    };
-
     if (rowCount > 0 || !jointConstraints.empty()) {
         StageTimer timer(profile, Stage::Solve);
         // Rows sorted by group, then colour (then the overflow), each in the awake contacts' order.
@@ -188,7 +236,7 @@ void WorldImpl::solve() {
         std::size_t spreadBlocks = 0;
         for (std::size_t g = 0; g < groups; ++g) {
             const std::size_t blocks = blockStart[(g + 1) * kSegments] - blockStart[g * kSegments];
-            std::size_t& most = spread(g) ? spreadBlocks : regionBlocks;
+            std::size_t& most = spreads(g) ? spreadBlocks : regionBlocks;
             most = std::max(most, blocks);
         }
         const std::size_t size =
@@ -216,49 +264,15 @@ void WorldImpl::solve() {
         groupJointStart.assign(groups + 1, 0);
     }
 
-    contactPassSettings.h = h;
-    contactPassSettings.invH = invH;
-    contactPassSettings.softness = contactSoftness;
-    contactPassSettings.maxPushVelocity = settings.contactPushMaxVelocity;
-    contactPassSettings.restitutionThreshold = settings.restitutionThreshold;
-    contactPassSettings.slipSpeed = 0.1 * settings.linearSlop / dt;
-    pushVelocities.assign(n, PushVelocity{});
-    rowsBase.resize(n);
-    warmStarts.resize(n);
-    std::atomic<std::size_t> turningRows{0};
-    for (std::size_t g = 0; g < groups; ++g)
-        if (spread(g)) turningRows += solveGroup(g, true, 0);
-    if (groups > 1) {
-        StageTimer timer(profile, Stage::Solve);
-        executor.parallelFor(groups, 1, [&](std::size_t begin, std::size_t end, int worker) {
-            for (std::size_t g = begin; g < end; ++g)
-                if (!spread(g)) turningRows += solveGroup(g, false, worker);
-        });
-    }
-    profile.turningRows = turningRows.load();
+    return rowCount;
+}
 
-    if (rowCount > 0) {
-        StageTimer timer(profile, Stage::Solve);
-        // Impacts, in row order (deterministic); each group's store pass found its rows' points (impactPoint).
-        for (std::size_t b = 0; b < blockRows.size(); ++b)
-            for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
-                const int point = rowImpact[b * kLanes + lane];
-                if (point < 0) continue;
-                const Manifold& m = contacts[rowContacts[blockRows[b].first + lane].contact].manifold;
-                events.impacts.push_back(
-                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, rowImpactSpeed[b * kLanes + lane]});
-            }
-    }
-
-    StageTimer timer(profile, Stage::Integrate);
-    fastBodies = std::any_of(enlarged.begin(), enlarged.end(), [](std::uint8_t f) { return (f & 2) != 0; });
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!(enlarged[i] & 1)) continue;
-        const BodyData& b = bodies[sims[i].body];
-        // The Continuous stage may put this body back: its proxy moves after that stage, once (bit 2).
-        if ((enlarged[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged[i] |= 4;
-        else moveProxy(b);
-    }
+// Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all of its
+// passes. A large group (or one holding more than a thread's share of the bodies) spreads each of its loops over the
+// threads; the others go to the threads whole. Either way a group gives the same bits.
+bool WorldImpl::spreads(std::size_t g) const {
+    const std::size_t groups = groupBodyStart.size() - 1, size = groupBodyStart[g + 1] - groupBodyStart[g];
+    return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > awake.size();
 }
 
 void WorldImpl::joinBodies(std::int32_t a, std::int32_t b) {

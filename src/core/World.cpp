@@ -160,6 +160,7 @@ void World::setSettings(const WorldSettings& settings) {
     const bool sleepWasOn = impl_->settings.enableSleep;
     impl_->settings = settings;
     impl_->executor.setThreads(settings.threads);
+    impl_->rowsStale = true;  // the rows' groups depend on the thread count
     if (!settings.enableSleep) {
         for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
             if (impl_->bodies[i].alive) impl_->wakeBody(i);
@@ -384,6 +385,7 @@ void World::setType(BodyId id, BodyType type) {
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
     const bool wasStatic = b.type == BodyType::Static;
     b.type = type;
+    w.rowsStale = true;
     b.mass = trial.mass;
     b.density = trial.density;
     b.invMass = trial.invMass;
@@ -449,6 +451,7 @@ void World::setCollisionDetection(BodyId id, CollisionDetection mode, double pre
     if (mode != CollisionDetection::Discrete) ++impl_->continuousCount;
     b.detection = mode;
     b.precision = precision;
+    impl_->rowsStale = true;  // an exact-continuous body's island keeps the warm start on its rows
 }
 
 CollisionDetection World::collisionDetection(BodyId id) const { return at(id).detection; }

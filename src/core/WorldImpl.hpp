@@ -110,6 +110,11 @@ struct WorldImpl {
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
     std::vector<JointConstraint> jointConstraints;  // group by group
+    // The rows' layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their
+    // order, the bodies' types and detection, which contacts have points) and on joints: while none of that changes,
+    // a step keeps the last one's (layOutRows). Whatever changes it sets rowsStale.
+    bool rowsStale = true;
+    bool rowsByIsland = true;  // the layout's byIsland
     std::vector<JointConstraint> groupedJoints;
     std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
     std::vector<Aabb> deferredBoxes;
@@ -172,6 +177,9 @@ struct WorldImpl {
 
     // Solver.cpp
     void solve();            // the Forces, Solve and Integrate stages
+    /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
+    std::size_t layOutRows(bool byIsland, double h);
+    bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record

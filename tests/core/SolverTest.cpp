@@ -181,5 +181,91 @@ TEST(Solver, ManyIslandsGiveTheSameBitsOnAnyThreadCount) {
     for (const int threads : {2, 0}) EXPECT_TRUE(sameBits(one, crowdScene(threads))) << threads << " threads";
 }
 
+// A step keeps the last step's row layout (colours, groups, blocks) while nothing that decides it changed. Two
+// worlds run the same script of changes, with sleep on; before each step one of them changes the static ground's
+// detection to what it already is, which changes nothing physical but makes the step lay its rows out again. Both
+// must end with the same bits, and each with a mix of laid-out and kept steps, or the comparison proves nothing.
+struct LayoutRun {
+    std::vector<double> poses;
+    int laidOut = 0, kept = 0;  // steps with rows that laid them out again, and that kept the last layout
+};
+
+LayoutRun layoutScript(bool layOutEveryStep) {
+    WorldSettings settings = crowdSettings();
+    settings.enableSleep = true;
+    World world(settings);
+    BodyDef g;
+    g.type = BodyType::Static;
+    g.shape = makeBox(60.0, 0.5);
+    g.position = {0.0, -0.5};
+    const BodyId ground = world.createBody(g);
+    std::vector<BodyId> ids = addPile(world, 0.0, 4);
+    const std::vector<BodyId> other = addPile(world, kPileSpacing, 2);
+    ids.insert(ids.end(), other.begin(), other.end());
+    LayoutRun run;
+    for (int i = 0; i < 400; ++i) {
+        if (i == 120) world.setCollisionDetection(ids[20], CollisionDetection::ContinuousExact);
+        if (i == 160) world.setCollisionDetection(ids[20], CollisionDetection::Discrete);
+        if (i == 200) world.setType(ids[27], BodyType::Kinematic);  // the pile's top box
+        if (i == 240) world.setType(ids[27], BodyType::Dynamic);
+        if (i == 260) world.destroyBody(ids[30]);  // in the second pile's bottom row
+        if (i == 300) {
+            BodyDef ball;
+            ball.shape = makeCircle(0.2);
+            ball.position = {0.3, 5.0};
+            ids.push_back(world.createBody(ball));
+        }
+        if (layOutEveryStep) world.setCollisionDetection(ground, CollisionDetection::Discrete);
+        world.step(kDt);
+        if (world.profile().manifolds == 0) continue;  // nothing to solve (everything asleep)
+        ++(world.profile().rowsLaidOut ? run.laidOut : run.kept);
+    }
+    ids.erase(ids.begin() + 30);
+    run.poses = poses(world, ids);
+    return run;
+}
+
+TEST(Solver, AKeptRowLayoutGivesTheBitsOfOneLaidOutAgain) {
+    const LayoutRun kept = layoutScript(false), again = layoutScript(true);
+    EXPECT_TRUE(sameBits(kept.poses, again.poses));
+    EXPECT_EQ(again.kept, 0) << "the forcing change lays the rows out every step";
+    EXPECT_GE(again.laidOut, 200);
+    EXPECT_GE(kept.kept, 100) << "settled piles keep their layout";
+    EXPECT_GE(kept.laidOut, 20) << "bounces, the changes, sleeping and waking lay the rows out again";
+}
+
+// Each change that decides the layout lays the rows out again in the next step, and the step after keeps it.
+TEST(Solver, ChangesThatDecideTheRowLayoutLayItOutAgain) {
+    World world(crowdSettings());
+    addGround(world, 60.0);
+    const std::vector<BodyId> ids = addPile(world, 0.0, 4);
+    for (int i = 0; i < 240; ++i) world.step(kDt);  // the ball has bounced off and the pile settled
+    world.step(kDt);
+    ASSERT_GT(world.profile().manifolds, 0u);
+    ASSERT_FALSE(world.profile().rowsLaidOut) << "a settled pile keeps its layout";
+    auto next = [&](const char* change) {
+        world.step(kDt);
+        EXPECT_TRUE(world.profile().rowsLaidOut) << change;
+        world.step(kDt);
+        EXPECT_FALSE(world.profile().rowsLaidOut) << change << ", the step after";
+    };
+    world.setType(ids[0], BodyType::Kinematic);
+    next("setType");
+    world.setType(ids[0], BodyType::Dynamic);
+    next("setType back");
+    world.setCollisionDetection(ids[3], CollisionDetection::ContinuousExact);
+    next("setCollisionDetection");
+    WorldSettings settings = world.settings();
+    settings.threads = 2;
+    world.setSettings(settings);
+    next("setSettings");
+    BodyDef far;
+    far.position = {40.0, 10.0};
+    const BodyId farBody = world.createBody(far);
+    next("createBody");
+    world.destroyBody(farBody);
+    next("destroyBody");
+}
+
 }  // namespace
 }  // namespace physim

@@ -46,6 +46,11 @@ struct StepProfile {
     /// Contact rows solved with angular terms: those with a body that can turn. Rows between bodies whose rotation
     /// is locked (or immovable and not spinning) skip them, so a scene with every rotation locked has none.
     std::size_t turningRows = 0;
+    /// The step coloured its constraint rows and sorted them into groups anew. A step whose awake bodies and
+    /// contacts are those of the step before (the same ones, in the same order, each contact with points or without
+    /// as before), with no joint rows and no type, detection or settings change, keeps that step's layout instead:
+    /// the same layout, so the same results, without the work.
+    bool rowsLaidOut = false;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
     double secondsOf(Stage s) const { return seconds[static_cast<std::size_t>(s)]; }
