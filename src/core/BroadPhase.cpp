@@ -9,6 +9,7 @@ std::int32_t BroadPhase::createProxy(const Aabb& fatBox, std::uint32_t body, boo
     const std::int32_t id = tree_[isStatic ? 1 : 0].createProxy(fatBox, body);
     const std::int32_t k = key(id, isStatic);
     markMoved(k);
+    ++boxRevision_;
     return k;
 }
 
@@ -20,11 +21,13 @@ void BroadPhase::destroyProxy(std::int32_t k) {
         flags[id] = 0;
     }
     treeOf(k).destroyProxy(id);
+    ++boxRevision_;
 }
 
 void BroadPhase::moveProxy(std::int32_t k, const Aabb& fatBox) {
     treeOf(k).moveProxy(k >> 1, fatBox);
     markMoved(k);
+    ++boxRevision_;
 }
 
 void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes) {
@@ -35,6 +38,7 @@ void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::v
     }
     tree_[0].moveProxies(movedIds_, fatBoxes);
     for (const std::int32_t k : keys) markMoved(k);
+    if (!keys.empty()) ++boxRevision_;
 }
 
 const Aabb& BroadPhase::fatBox(std::int32_t k) const { return treeOf(k).fatAabb(k >> 1); }

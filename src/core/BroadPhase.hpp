@@ -44,6 +44,8 @@ public:
     void requery(std::int32_t key) { markMoved(key); }
 
     std::size_t moveCount() const { return moved_.size(); }
+    /// Changes whenever a proxy is created, destroyed or given a new box: while it stays the same, so do all boxes.
+    std::uint64_t boxRevision() const { return boxRevision_; }
     /// Bodies whose boxes overlap `box`, for users and tests (both trees).
     template <class Callback>
     void query(const Aabb& box, Callback&& callback) const {
@@ -61,6 +63,7 @@ private:
 
     DynamicTree tree_[2];                 // [0] movable bodies, [1] static bodies
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
+    std::uint64_t boxRevision_ = 0;
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
     std::vector<std::vector<BodyPair>> perTask_;

@@ -210,7 +210,7 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
 void WorldImpl::addAwakeContact(std::uint32_t index) {
     contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
     awakeContacts.push_back(index);
-    rowsStale = true;
+    rowsStale = awakeContactsChanged = true;
 }
 
 void WorldImpl::removeAwakeContact(std::uint32_t index) {
@@ -220,7 +220,7 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
     contacts[last].awakeIndex = at;
     awakeContacts.pop_back();
     contacts[index].awakeIndex = kNullIndex;
-    rowsStale = true;
+    rowsStale = awakeContactsChanged = true;
 }
 
 void WorldImpl::updatePairs() {
@@ -248,6 +248,11 @@ void WorldImpl::updateContacts() {
     constexpr std::size_t kAhead = 4, kPrefetchFromContacts = 8192;
     const bool prefetch = n >= kPrefetchFromContacts;
     std::atomic<bool> pointsChanged{false};  // a contact gained its first point or lost its last: it has a row or not
+    // No box and no awake contact changed since the last narrow phase, which found every awake contact's proxies
+    // overlapping (else it destroyed the contact): they still overlap, and the test would only miss the cache.
+    const bool overlapsKnown = !awakeContactsChanged && broadPhase.boxRevision() == checkedBoxRevision;
+    awakeContactsChanged = false;
+    checkedBoxRevision = broadPhase.boxRevision();
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) {
         for (std::size_t i = begin; i < end; ++i) {
             if (prefetch && i + 2 * kAhead < end)
@@ -260,7 +265,7 @@ void WorldImpl::updateContacts() {
             ContactData& c = contacts[awakeContacts[i]];
             const BodyData& A = bodies[c.a];
             const BodyData& B = bodies[c.b];
-            if (!broadPhase.fatBox(A.proxy).overlaps(broadPhase.fatBox(B.proxy))) {
+            if (!overlapsKnown && !broadPhase.fatBox(A.proxy).overlaps(broadPhase.fatBox(B.proxy))) {
                 contactFlags[i] = kParted;
                 continue;
             }

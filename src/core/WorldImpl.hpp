@@ -115,6 +115,10 @@ struct WorldImpl {
     // a step keeps the last one's (layOutRows). Whatever changes it sets rowsStale.
     bool rowsStale = true;
     bool rowsByIsland = true;  // the layout's byIsland
+    // The narrow phase tests each awake contact's proxies for overlap only when a box or the awake contacts changed
+    // since it last did (Contacts.cpp): every contact it then kept overlapped, and still does.
+    bool awakeContactsChanged = true;
+    std::uint64_t checkedBoxRevision = 0;
     std::vector<JointConstraint> groupedJoints;
     std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
     std::vector<Aabb> deferredBoxes;

@@ -89,5 +89,27 @@ TEST(Contacts, AKeptManifoldMatchesAFreshCollisionAtThePresentPoses) {
     EXPECT_LE(worstSeparation, 1e-5);
 }
 
+// A contact lives while its bodies' proxies overlap. After a step in which nothing moved, the narrow phase takes
+// the overlap as known; a ball that then leaves slowly (its proxy moved by the step, not by a call) must still lose
+// its contact once its proxy no longer overlaps the ground's.
+TEST(Contacts, AContactEndsWhenItsProxiesPartAfterRestingSteps) {
+    WorldSettings settings;
+    settings.gravity = {0.0, 0.0};  // the ball stays where it is put, at rest, then drifts off at a set speed
+    settings.enableSleep = false;
+    World world(settings);
+    add(world, BodyType::Static, makeBox(5.0, 0.5), {0.0, -0.5});
+    const BodyId ball = add(world, BodyType::Dynamic, makeCircle(0.25), {0.0, 0.25});
+    for (int i = 0; i < 30; ++i) world.step(kDt);
+    ASSERT_EQ(world.profile().candidatePairs, 1u) << "the resting ball's contact";
+    world.setVelocity(ball, {0.0, 1.0});  // 1 m/s up: the proxy (a 0.1 m margin) is outgrown within a few steps
+    int parted = -1;
+    for (int i = 0; i < 120 && parted < 0; ++i) {
+        world.step(kDt);
+        if (world.profile().candidatePairs == 0) parted = i;
+    }
+    EXPECT_GE(parted, 0) << "the contact ended";
+    EXPECT_LT(world.position(ball).y(), 2.5) << "within two metres of leaving";
+}
+
 }  // namespace
 }  // namespace physim
