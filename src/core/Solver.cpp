@@ -77,10 +77,15 @@ void WorldImpl::solve() {
         enlarged.assign(n, 0);
     }
 
-    // The rows' layout is the last step's while nothing that decides it has changed (WorldImpl::rowsStale). Joints
-    // are prepared with it, so a scene with joint rows lays its rows out every step.
+    // The rows' layout is the last step's while nothing that decides it has changed (WorldImpl::rowsStale); a kept
+    // layout's joint rows are prepared again for this step, in their places.
     const bool byIsland = !effects.perSubstep();  // a per-substep effect may couple any bodies
-    const bool keep = !rowsStale && byIsland == rowsByIsland && rowJointCount == 0 && jointConstraints.empty();
+    const bool keep = !rowsStale && byIsland == rowsByIsland;
+    if (keep && !jointConstraints.empty()) {
+        StageTimer timer(profile, Stage::Solve);
+        const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
+        for (JointConstraint& row : jointConstraints) row = jointRow(row.joint, h, rodSoftness);
+    }
     const std::size_t rowCount = keep ? rowContacts.size() : layOutRows(byIsland, h);
     rowsStale = false;
     rowsByIsland = byIsland;
@@ -130,6 +135,13 @@ void WorldImpl::solve() {
         if ((enlarged[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged[i] |= 4;
         else moveProxy(b);
     }
+}
+
+JointConstraint WorldImpl::jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const {
+    JointConstraint row;
+    row.joint = joint;
+    prepareJoint(row, joints[joint], bodies, h, rodSoftness);
+    return row;
 }
 
 std::size_t WorldImpl::layOutRows(bool byIsland, double h) {
@@ -192,9 +204,7 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h) {
             if (!joint.alive || !joint.isRow()) continue;
             const bool active = bodies[joint.b].awake() || (joint.twoBodies() && bodies[joint.a].awake());
             if (!active) continue;
-            JointConstraint row;
-            row.joint = j;
-            prepareJoint(row, joint, bodies, h, rodSoftness);
+            const JointConstraint row = jointRow(j, h, rodSoftness);
             jointConstraints.push_back(row);
             keepRowsWarmStart(row.indexA);
             keepRowsWarmStart(row.indexB);

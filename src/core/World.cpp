@@ -533,6 +533,7 @@ std::uint32_t WorldImpl::addJoint(const JointData& data) {
     linkJoint(*this, index);
     ++jointCount;
     if (j.isRow()) ++rowJointCount;
+    rowsStale = true;
     wakeBody(j.b);
     if (j.twoBodies()) {
         wakeBody(j.a);
@@ -626,6 +627,7 @@ void World::destroyJoint(JointId id) {
     unlinkJoint(w, id.index);
     if (j.isRow()) --w.rowJointCount;
     else w.effects.springs.remove(id.index);
+    w.rowsStale = true;
     w.joints[id.index].alive = false;
     w.freeJoints.push_back(id.index);
     --w.jointCount;

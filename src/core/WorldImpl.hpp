@@ -111,8 +111,8 @@ struct WorldImpl {
     std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
     std::vector<JointConstraint> jointConstraints;  // group by group
     // The rows' layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their
-    // order, the bodies' types and detection, which contacts have points) and on joints: while none of that changes,
-    // a step keeps the last one's (layOutRows). Whatever changes it sets rowsStale.
+    // order, the bodies' types and detection, which contacts have points), the joints and the thread count: while
+    // none of that changes, a step keeps the last one's (layOutRows). Whatever changes it sets rowsStale.
     bool rowsStale = true;
     bool rowsByIsland = true;  // the layout's byIsland
     // The narrow phase tests each awake contact's proxies for overlap only when a box or the awake contacts changed
@@ -183,7 +183,8 @@ struct WorldImpl {
     void solve();            // the Forces, Solve and Integrate stages
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
     std::size_t layOutRows(bool byIsland, double h);
-    bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
+    bool spreads(std::size_t g) const;
+    JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;  // for this step  // group g's loops are spread over the threads (else it goes to one whole)
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record

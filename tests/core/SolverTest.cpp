@@ -203,7 +203,24 @@ LayoutRun layoutScript(bool layOutEveryStep) {
     const std::vector<BodyId> other = addPile(world, kPileSpacing, 2);
     ids.insert(ids.end(), other.begin(), other.end());
     LayoutRun run;
+    JointId mouse;
     for (int i = 0; i < 400; ++i) {
+        if (i == 60) {  // the first pile's top two boxes pinned together: their joint row is prepared every step
+            RevoluteJointDef pin;
+            pin.bodyA = ids[25];
+            pin.bodyB = ids[27];
+            pin.anchor = world.position(ids[27]);
+            world.createRevoluteJoint(pin);
+        }
+        if (i == 80) {
+            MouseJointDef grab;
+            grab.body = ids[29 + 27];  // the second pile's top box, pulled up and sideways
+            grab.target = world.position(grab.body);
+            grab.maxForce = 50.0;
+            mouse = world.createMouseJoint(grab);
+        }
+        if (i > 80 && i < 110) world.setMouseJointTarget(mouse, {kPileSpacing + 0.01 * (i - 80), 3.0 + 0.02 * (i - 80)});
+        if (i == 110) world.destroyJoint(mouse);
         if (i == 120) world.setCollisionDetection(ids[20], CollisionDetection::ContinuousExact);
         if (i == 160) world.setCollisionDetection(ids[20], CollisionDetection::Discrete);
         if (i == 200) world.setType(ids[27], BodyType::Kinematic);  // the pile's top box
@@ -259,6 +276,13 @@ TEST(Solver, ChangesThatDecideTheRowLayoutLayItOutAgain) {
     settings.threads = 2;
     world.setSettings(settings);
     next("setSettings");
+    DistanceJointDef rod;
+    rod.bodyA = ids[0];
+    rod.bodyB = ids[1];
+    const JointId joint = world.createDistanceJoint(rod);
+    next("createDistanceJoint");
+    world.destroyJoint(joint);
+    next("destroyJoint");
     BodyDef far;
     far.position = {40.0, 10.0};
     const BodyId farBody = world.createBody(far);

@@ -48,8 +48,8 @@ struct StepProfile {
     std::size_t turningRows = 0;
     /// The step coloured its constraint rows and sorted them into groups anew. A step whose awake bodies and
     /// contacts are those of the step before (the same ones, in the same order, each contact with points or without
-    /// as before), with no joint rows and no type, detection or settings change, keeps that step's layout instead:
-    /// the same layout, so the same results, without the work.
+    /// as before), with no joint created or destroyed and no type, detection or settings change, keeps that step's
+    /// layout instead: the same layout, so the same results, without the work.
     bool rowsLaidOut = false;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
