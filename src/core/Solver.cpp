@@ -67,6 +67,7 @@ void WorldImpl::solve() {
     const int substeps = settings.substeps;
     const double h = dt / substeps, invH = 1.0 / h;
     const Softness contactSoftness = makeSoftness(settings.contactHertz, settings.contactDampingRatio, h);
+    const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
 
     {
         StageTimer timer(profile, Stage::Forces);
@@ -83,10 +84,9 @@ void WorldImpl::solve() {
     const bool keep = !rowsStale && byIsland == rowsByIsland;
     if (keep && !jointConstraints.empty()) {
         StageTimer timer(profile, Stage::Solve);
-        const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
         for (JointConstraint& row : jointConstraints) row = jointRow(row.joint, h, rodSoftness);
     }
-    const std::size_t rowCount = keep ? rowContacts.size() : layOutRows(byIsland, h);
+    const std::size_t rowCount = keep ? rowContacts.size() : layOutRows(byIsland, h, rodSoftness);
     rowsStale = false;
     rowsByIsland = byIsland;
     profile.rowsLaidOut = !keep && (rowCount > 0 || !jointConstraints.empty());
@@ -144,9 +144,8 @@ JointConstraint WorldImpl::jointRow(std::uint32_t joint, double h, const Softnes
     return row;
 }
 
-std::size_t WorldImpl::layOutRows(bool byIsland, double h) {
+std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSoftness) {
     const std::size_t n = awake.size();
-    const Softness rodSoftness = makeSoftness(settings.jointHertz, settings.jointDampingRatio, h);
     // Colour the rows: greedy, in the awake list's order (deterministic), each dynamic body's colours as bits.
     // Meanwhile join the bodies each row couples (union-find over awake indices) to solve islands apart.
     std::size_t rowCount = 0;

@@ -182,7 +182,7 @@ struct WorldImpl {
     // Solver.cpp
     void solve();            // the Forces, Solve and Integrate stages
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
-    std::size_t layOutRows(bool byIsland, double h);
+    std::size_t layOutRows(bool byIsland, double h, const Softness& rodSoftness);
     bool spreads(std::size_t g) const;
     JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;  // for this step  // group g's loops are spread over the threads (else it goes to one whole)
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
