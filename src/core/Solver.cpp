@@ -281,7 +281,8 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSo
 // threads; the others go to the threads whole. Either way a group gives the same bits.
 bool WorldImpl::spreads(std::size_t g) const {
     const std::size_t groups = groupBodyStart.size() - 1, size = groupBodyStart[g + 1] - groupBodyStart[g];
-    return groups == 1 || size >= 4 * kGroupBodies || size * static_cast<std::size_t>(executor.threads()) > awake.size();
+    const std::size_t threads = static_cast<std::size_t>(executor.threads());
+    return groups == 1 || size >= 4 * kGroupBodies || size * threads > awake.size();
 }
 
 void WorldImpl::joinBodies(std::int32_t a, std::int32_t b) {

@@ -183,8 +183,9 @@ struct WorldImpl {
     void solve();            // the Forces, Solve and Integrate stages
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
     std::size_t layOutRows(bool byIsland, double h, const Softness& rodSoftness);
-    bool spreads(std::size_t g) const;
-    JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;  // for this step  // group g's loops are spread over the threads (else it goes to one whole)
+    bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
+    /// Joint `joint`'s row for this step (substep h).
+    JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
     void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
     void startBody(std::size_t i);   // awake body i's solver state and sims from its record

@@ -205,7 +205,7 @@ LayoutRun layoutScript(bool layOutEveryStep) {
     LayoutRun run;
     JointId mouse;
     for (int i = 0; i < 400; ++i) {
-        if (i == 60) {  // the first pile's top two boxes pinned together: their joint row is prepared every step
+        if (i == 60) {  // the first pile's top box pinned to one below it: a joint row in a kept layout
             RevoluteJointDef pin;
             pin.bodyA = ids[25];
             pin.bodyB = ids[27];
@@ -219,7 +219,8 @@ LayoutRun layoutScript(bool layOutEveryStep) {
             grab.maxForce = 50.0;
             mouse = world.createMouseJoint(grab);
         }
-        if (i > 80 && i < 110) world.setMouseJointTarget(mouse, {kPileSpacing + 0.01 * (i - 80), 3.0 + 0.02 * (i - 80)});
+        if (i > 80 && i < 110)
+            world.setMouseJointTarget(mouse, {kPileSpacing + 0.01 * (i - 80), 3.0 + 0.02 * (i - 80)});
         if (i == 110) world.destroyJoint(mouse);
         if (i == 120) world.setCollisionDetection(ids[20], CollisionDetection::ContinuousExact);
         if (i == 160) world.setCollisionDetection(ids[20], CollisionDetection::Discrete);
