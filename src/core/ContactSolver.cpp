@@ -693,9 +693,9 @@ template <bool Turns, bool Bias>
         const Wide b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
         const Wide both1 = -(c.k22 * b1 - c.k12 * b2) * c.invDet;
         const Wide both2 = -(c.k11 * b2 - c.k12 * b1) * c.invDet;
-        const Wide k11 = block ? c.k11 : one, k22 = block ? c.k22 : one;  // no division by zero off the block lanes
-        const Wide first = -b1 / k11;   // only point 1 pushes; point 2 must then separate
-        const Wide second = -b2 / k22;  // only point 2 pushes
+        // Each point's normal mass is 1 / k_ii: the one-point cases need no division.
+        const Wide first = -b1 * c.points[0].normalMass;   // only point 1 pushes; point 2 must then separate
+        const Wide second = -b2 * c.points[1].normalMass;  // only point 2 pushes
         const WideMask bothPush = (both1 >= 0.0) & (both2 >= 0.0);
         const WideMask firstOnly = (first >= 0.0) & (c.k12 * first + b2 >= 0.0);
         const WideMask secondOnly = (second >= 0.0) & (c.k12 * second + b1 >= 0.0);
