@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -112,19 +111,19 @@ TEST(FallingBoxCli, TheFolderHoldsThisRunsFilesAndOneLineSaysWhich) {
 }
 
 TEST(FallingBoxCli, LongHeadlessRunsReportProgress) {
-    // Progress shows after Progress::kQuietFor (2 s) of wall time; the box sleeps, so a simulated second costs
-    // little and a machine's speed decides how many make 2 s. Four times longer runs until one lasts 2.5 s
-    // (20 000 s took 0.6 to 1.6 s here). stderr is a pipe: plain lines.
-    double seconds = 20000.0, wall = 0.0;
+    // Progress shows after Progress::kQuietFor (2 s) of the program's wall time (ProgressTest checks the rule with
+    // a test clock); the box sleeps, so a simulated second costs little and a machine's speed decides how many make
+    // 2 s. Four times longer runs until one reports (20 000 s took 0.6 to 1.6 s here). Not the test's own timing:
+    // on a loaded machine the program's start alone can take a second, which its progress clock does not count.
+    // stderr is a pipe: plain lines.
+    double seconds = 20000.0;
     Result r;
     for (; seconds <= 1e7; seconds *= 4.0) {
-        const auto t0 = std::chrono::steady_clock::now();
         r = run("--headless --seconds " + std::to_string(seconds));
-        wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ASSERT_EQ(r.exitCode, 0) << r.output;
-        if (wall >= 2.5) break;
+        if (r.output.rfind("physim: ", 0) == 0) break;
     }
-    ASSERT_GE(wall, 2.5) << "even --seconds 1e7 ran in under 2.5 s";
+    ASSERT_LE(seconds, 1e7) << "even --seconds 1e7 reported no progress\n" << r.output;
     char total[32];
     std::snprintf(total, sizeof total, " of %.1f s  ", seconds);
     EXPECT_EQ(r.output.rfind("physim: ", 0), 0u) << r.output;
