@@ -443,35 +443,36 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
 
 // B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
 // the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
-// Both are written for a short dependency chain, which bounds a block's time more than its operation count: the
-// speed sums its linear and angular parts apart, and the impulse's factors that do not wait for d (mass times
-// direction) are multiplied first, so d reaches a velocity in one multiply and one add.
-template <bool Turns>
+// V: the build runs mulAdd as one instruction (the AVX builds; the bits are the same either way). Both are written
+// for few operations and a short dependency chain: the speed sums its linear and angular parts apart, and the
+// impulse's factors that do not wait for d (mass times direction) are multiplied first, so d reaches a velocity in
+// one fused multiply-add.
+template <bool V, bool Turns>
 [[gnu::always_inline]] inline Wide speedAlong(const WideSide& A, const WideSide& B, const Wide& dx, const Wide& dy,
                                               const Wide& armA, const Wide& armB) {
-    if constexpr (Turns) return (dx * (B.vx - A.vx) + dy * (B.vy - A.vy)) + (B.w * armB - A.w * armA);
-    else return dx * (B.vx - A.vx) + dy * (B.vy - A.vy);
+    if constexpr (Turns) return mulAdd<V>(dx, B.vx - A.vx, dy * (B.vy - A.vy)) + mulAdd<V>(B.w, armB, -(A.w * armA));
+    else return mulAdd<V>(dx, B.vx - A.vx, dy * (B.vy - A.vy));
 }
 
-template <bool Turns>
+template <bool V, bool Turns>
 [[gnu::always_inline]] inline void applyAlong(const ContactBlock& c, WideSide& A, WideSide& B, const Wide& d,
                                               const Wide& dx, const Wide& dy, const Wide& armA, const Wide& armB) {
-    A.vx -= d * (c.invMassA * dx);
-    A.vy -= d * (c.invMassA * dy);
-    B.vx += d * (c.invMassB * dx);
-    B.vy += d * (c.invMassB * dy);
+    A.vx = mulAdd<V>(d, -(c.invMassA * dx), A.vx);
+    A.vy = mulAdd<V>(d, -(c.invMassA * dy), A.vy);
+    B.vx = mulAdd<V>(d, c.invMassB * dx, B.vx);
+    B.vy = mulAdd<V>(d, c.invMassB * dy, B.vy);
     if constexpr (Turns) {
-        A.w -= d * (c.invIA * armA);
-        B.w += d * (c.invIB * armB);
+        A.w = mulAdd<V>(d, -(c.invIA * armA), A.w);
+        B.w = mulAdd<V>(d, c.invIB * armB, B.w);
     }
 }
 
-template <bool Turns>
+template <bool V, bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
     WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
     for (const ContactBlock::Point& cp : c.points)
-        applyAlong<Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
-    applyAlong<Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
+        applyAlong<V, Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
+    applyAlong<V, Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
 }
@@ -651,7 +652,7 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
 // immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
 // pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
-template <bool Turns, bool Bias>
+template <bool V, bool Turns, bool Bias>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
                                               const ContactPass& pass) {
     if constexpr (!Bias)
@@ -659,7 +660,7 @@ template <bool Turns, bool Bias>
     WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
     const Wide zero{}, one = splat(1.0);
     const Wide nx = c.nx, ny = c.ny;
-    const Wide normalShift = nx * (B.dpx - A.dpx) + ny * (B.dpy - A.dpy);
+    const Wide normalShift = mulAdd<V>(nx, B.dpx - A.dpx, ny * (B.dpy - A.dpy));
     Wide separation[2], bias[2], massScale[2], leak[2], keep[2], before[2];
     for (int i = 0; i < 2; ++i) {
         const ContactBlock::Point& cp = c.points[i];
@@ -667,7 +668,8 @@ template <bool Turns, bool Bias>
         // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
         Wide s;
         if constexpr (Turns)
-            s = normalShift + (B.qc * cp.ndB + B.qs * cp.rnB) - (A.qc * cp.ndA + A.qs * cp.rnA) + cp.baseSeparation;
+            s = normalShift + mulAdd<V>(B.qc, cp.ndB, B.qs * cp.rnB) - mulAdd<V>(A.qc, cp.ndA, A.qs * cp.rnA) +
+                cp.baseSeparation;
         else
             s = normalShift + cp.ndB - cp.ndA + cp.baseSeparation;
         separation[i] = s;
@@ -684,7 +686,7 @@ template <bool Turns, bool Bias>
             massScale[i] = one;
             leak[i] = zero;
         }
-        before[i] = speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
     }
     // Two-point rows with a regular mass matrix solve both points at once: the 2x2 complementarity problem on the
     // accumulated impulses (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per
@@ -693,23 +695,23 @@ template <bool Turns, bool Bias>
     const Wide x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
     Wide blockDelta[2] = {zero, zero};
     if (c.pairs) {
-        const Wide b1 = before[0] + bias[0] - (c.k11 * x1 + c.k12 * x2);
-        const Wide b2 = before[1] + bias[1] - (c.k12 * x1 + c.k22 * x2);
-        const Wide both1 = (c.k12 * b2 - c.k22 * b1) * c.invDet;
-        const Wide both2 = (c.k12 * b1 - c.k11 * b2) * c.invDet;
+        const Wide b1 = before[0] + bias[0] - mulAdd<V>(c.k11, x1, c.k12 * x2);
+        const Wide b2 = before[1] + bias[1] - mulAdd<V>(c.k12, x1, c.k22 * x2);
+        const Wide both1 = mulAdd<V>(c.k12, b2, -(c.k22 * b1)) * c.invDet;
+        const Wide both2 = mulAdd<V>(c.k12, b1, -(c.k11 * b2)) * c.invDet;
         // Each point's normal mass is 1 / k_ii: the one-point cases need no division.
         const Wide first = -b1 * c.points[0].normalMass;   // only point 1 pushes; point 2 must then separate
         const Wide second = -b2 * c.points[1].normalMass;  // only point 2 pushes
         const WideMask bothPush = (both1 >= 0.0) & (both2 >= 0.0);
-        const WideMask firstOnly = (first >= 0.0) & (c.k12 * first + b2 >= 0.0);
-        const WideMask secondOnly = (second >= 0.0) & (c.k12 * second + b1 >= 0.0);
+        const WideMask firstOnly = (first >= 0.0) & (mulAdd<V>(c.k12, first, b2) >= 0.0);
+        const WideMask secondOnly = (second >= 0.0) & (mulAdd<V>(c.k12, second, b1) >= 0.0);
         const Wide y1 = bothPush ? both1 : (firstOnly ? first : zero);
         const Wide y2 = bothPush ? both2 : (firstOnly ? zero : (secondOnly ? second : zero));
         // The soft step's x + massScale (y - x) - leak x, as x keep + massScale y: x's part does not wait for y.
         // The relax pass's x + (y - x) is y.
         if constexpr (Bias) {
-            blockDelta[0] = max(x1 * keep[0] + massScale[0] * y1, zero) - x1;
-            blockDelta[1] = max(x2 * keep[1] + massScale[1] * y2, zero) - x2;
+            blockDelta[0] = max(mulAdd<V>(massScale[0], y1, x1 * keep[0]), zero) - x1;
+            blockDelta[1] = max(mulAdd<V>(massScale[1], y2, x2 * keep[1]), zero) - x2;
         } else {
             blockDelta[0] = max(y1, zero) - x1;
             blockDelta[1] = max(y2, zero) - x2;
@@ -726,15 +728,16 @@ template <bool Turns, bool Bias>
         const Wide x = cp.normalImpulse;
         Wide delta = blockDelta[i];  // an empty lane's is zero either way
         if (c.singles) {
-            if (i == 1) before[1] = block ? before[1] : speedAlong<Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+            if (i == 1) before[1] = block ? before[1] : speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
             Wide single;
             if constexpr (Bias)
-                single = max(x - cp.normalMass * massScale[i] * (before[i] + bias[i]) - leak[i] * x, zero) - x;
+                single =
+                    max(mulAdd<V>(-(cp.normalMass * massScale[i]), before[i] + bias[i], x - leak[i] * x), zero) - x;
             else
-                single = max(x - cp.normalMass * (before[i] + bias[i]), zero) - x;
+                single = max(mulAdd<V>(-cp.normalMass, before[i] + bias[i], x), zero) - x;
             delta = block ? blockDelta[i] : single;
         }
-        applyAlong<Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
+        applyAlong<V, Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
         deltas[i] = delta;
         cp.normalImpulse = x + delta;
@@ -773,7 +776,7 @@ template <bool Turns, bool Bias>
     // transient of one pass does not break a face loose). A frictionless lane has a zero bound: no impulse.
     if (c.friction) {
         const Wide tx = -ny, ty = nx;
-        const Wide vt = speedAlong<Turns>(A, B, tx, ty, c.rtA, c.rtB);
+        const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.rtA, c.rtB);
         // The push-out a row holds is no load: friction on it would stay when the relax pass takes the push back.
         Wide load = totalNormal;
         if constexpr (Bias)
@@ -781,7 +784,7 @@ template <bool Turns, bool Bias>
         const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * load;
         // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a lane's
         // bits do not depend on whether a neighbour's friction made the block run this path.
-        const Wide tangent = clamp(c.tangentImpulse - c.tangentMass * vt, zero - bound, bound);
+        const Wide tangent = clamp(mulAdd<V>(-c.tangentMass, vt, c.tangentImpulse), zero - bound, bound);
         if constexpr (!Bias) {
             const WideMask hasMass = c.tangentMass > 0.0;
             const Wide mass = hasMass ? c.tangentMass : one;
@@ -789,33 +792,35 @@ template <bool Turns, bool Bias>
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
         }
-        applyAlong<Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
+        applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
         c.tangentImpulse = tangent;
     }
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
 }
 
+template <bool V>
 [[gnu::always_inline]] inline void warmStartLoop(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     for (ContactBlock* c = begin; c != end; ++c) {
-        if (c->turns) warmStartBlock<true>(*c, states);
-        else warmStartBlock<false>(*c, states);
+        if (c->turns) warmStartBlock<V, true>(*c, states);
+        else warmStartBlock<V, false>(*c, states);
     }
 }
 
-template <bool Bias>
+template <bool V, bool Bias>
 [[gnu::always_inline]] inline void solveLoopWith(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                                  SolverBody* states, const ContactPass& pass) {
     for (ContactBlock* c = begin; c != end; ++c, ++cold) {
-        if (c->turns) solveBlock<true, Bias>(*c, *cold, states, pass);
-        else solveBlock<false, Bias>(*c, *cold, states, pass);
+        if (c->turns) solveBlock<V, true, Bias>(*c, *cold, states, pass);
+        else solveBlock<V, false, Bias>(*c, *cold, states, pass);
     }
 }
 
+template <bool V>
 [[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                              SolverBody* states, const ContactPass& pass) {
-    if (pass.useBias) solveLoopWith<true>(begin, end, cold, states, pass);
-    else solveLoopWith<false>(begin, end, cold, states, pass);
+    if (pass.useBias) solveLoopWith<V, true>(begin, end, cold, states, pass);
+    else solveLoopWith<V, false>(begin, end, cold, states, pass);
 }
 
 // The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
@@ -825,11 +830,11 @@ PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const
     return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
 }
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
+    warmStartLoop<false>(begin, end, states);
 }
 void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass) {
-    solveLoop(begin, end, cold, states, pass);
+    solveLoop<false>(begin, end, cold, states, pass);
 }
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
@@ -843,18 +848,18 @@ PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlock
     return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
 }
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
+    warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                                 const ContactPass& pass) {
-    solveLoop(begin, end, cold, states, pass);
+    solveLoop<true>(begin, end, cold, states, pass);
 }
 PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
+    warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                     SolverBody* states, const ContactPass& pass) {
-    solveLoop(begin, end, cold, states, pass);
+    solveLoop<true>(begin, end, cold, states, pass);
 }
 #endif
 

@@ -5,12 +5,14 @@
 // scalar formula gives. The loops that use them are built three times, and the processor picks (WideCode):
 //   - baseline x86-64 (SSE2, which has neither four-double registers nor 64-bit lane compares: the compiler splits
 //     each operation);
-//   - AVX2: one 256-bit register per four lanes;
-//   - AVX-512 (F, VL, DQ): the same four lanes in 256-bit registers, but 32 of them instead of 16, so fewer of a
+//   - AVX2 with FMA: one 256-bit register per four lanes;
+//   - AVX-512 (F, VL, DQ; FMA): the same four lanes in 256-bit registers, but 32 of them instead of 16, so fewer of a
 //     block's values spill to the stack (docs/performance.md, "Ninth measurement"). Eight lanes in 512-bit
 //     registers measured no faster (same place).
-// All give the same bits because the build turns contraction off (-ffp-contract=off): AVX-512 has fused
-// multiply-add instructions, and only that flag keeps the compiler from using them. Internal.
+// All give the same bits because the build turns contraction off (-ffp-contract=off): the compiler never fuses a
+// multiply and an add on its own, which the AVX builds could and the baseline could not. Where a fused
+// multiply-add is wanted it is written (mulAdd): rounded once by IEEE 754's rule, it has the same bits on every
+// build, one instruction on the AVX ones and the C library's fma on the baseline. Internal.
 
 #include <cstdint>
 
@@ -21,20 +23,20 @@ enum class WideCode { Best, Baseline, Avx2, Avx512 };
 
 #if defined(__GNUC__) && defined(__x86_64__)  // GCC and Clang
 #define PHYSIM_HAS_AVX2_CODE 1
-#define PHYSIM_AVX2_CODE __attribute__((target("avx2")))
-#define PHYSIM_AVX512_CODE __attribute__((target("avx2,avx512f,avx512vl,avx512dq")))
+#define PHYSIM_AVX2_CODE __attribute__((target("avx2,fma")))
+#define PHYSIM_AVX512_CODE __attribute__((target("avx2,fma,avx512f,avx512vl,avx512dq")))
 #else
 #define PHYSIM_HAS_AVX2_CODE 0
 #define PHYSIM_AVX2_CODE
 #define PHYSIM_AVX512_CODE
 #endif
 
-/// Whether the AVX2 build exists and this processor runs it.
+/// Whether the AVX2 build (AVX2 with fused multiply-add) exists and this processor runs it.
 inline bool avx2CodeRuns() {
 #if PHYSIM_HAS_AVX2_CODE
     static const bool runs = [] {
         __builtin_cpu_init();
-        return __builtin_cpu_supports("avx2") != 0;
+        return __builtin_cpu_supports("avx2") != 0 && __builtin_cpu_supports("fma") != 0;
     }();
     return runs;
 #else
@@ -67,6 +69,7 @@ inline WideCode pickWideCode(WideCode code) {
 constexpr int kLanes = 4;
 
 using Wide = double __attribute__((vector_size(kLanes * sizeof(double))));
+
 /// A lane-wise comparison's result: all ones (true) or zero per lane; `mask ? a : b` selects lane by lane.
 using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
 
@@ -76,6 +79,23 @@ using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double)
 [[gnu::always_inline]] inline Wide max(Wide a, Wide b) { return a < b ? b : a; }
 [[gnu::always_inline]] inline Wide clamp(Wide v, Wide lo, Wide hi) { return v < lo ? lo : (hi < v ? hi : v); }
 [[gnu::always_inline]] inline Wide abs(Wide v) { return v < 0.0 ? -v : v; }
+
+/// a * b + c rounded once, lane by lane: IEEE 754's fused multiply-add, whose bits are defined exactly, so every
+/// build gives the same. Vector (the AVX builds, which have FMA) runs it as one instruction; otherwise each lane
+/// calls the C library's fma. GCC gets the instruction in inline assembly: an intrinsic cannot be inlined into
+/// these templates, which are compiled for baseline x86-64 before the AVX functions inline them, and GCC 12 made
+/// scalar fmas and shuffles of some of the four lanes' builtins (measured 15-20% slower). Clang takes the builtins.
+template <bool Vector>
+[[gnu::always_inline]] inline Wide mulAdd(Wide a, Wide b, Wide c) {
+#if PHYSIM_HAS_AVX2_CODE && !defined(__clang__)
+    if constexpr (Vector) {
+        asm("vfmadd231pd %2, %1, %0" : "+v"(c) : "v"(a), "vm"(b));  // c = a * b + c
+        return c;
+    }
+#endif
+    return Wide{__builtin_fma(a[0], b[0], c[0]), __builtin_fma(a[1], b[1], c[1]), __builtin_fma(a[2], b[2], c[2]),
+                __builtin_fma(a[3], b[3], c[3])};
+}
 
 [[gnu::always_inline]] inline bool any(WideMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
