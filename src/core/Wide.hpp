@@ -69,7 +69,6 @@ inline WideCode pickWideCode(WideCode code) {
 constexpr int kLanes = 4;
 
 using Wide = double __attribute__((vector_size(kLanes * sizeof(double))));
-
 /// A lane-wise comparison's result: all ones (true) or zero per lane; `mask ? a : b` selects lane by lane.
 using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double))));
 
@@ -84,7 +83,7 @@ using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double)
 /// build gives the same. Vector (the AVX builds, which have FMA) runs it as one instruction; otherwise each lane
 /// calls the C library's fma. GCC gets the instruction in inline assembly: an intrinsic cannot be inlined into
 /// these templates, which are compiled for baseline x86-64 before the AVX functions inline them, and GCC 12 made
-/// scalar fmas and shuffles of some of the four lanes' builtins (measured 15-20% slower). Clang takes the builtins.
+/// scalar fmas and shuffles of some of the four lanes' builtins (measured up to 20% slower). Clang takes the builtins.
 template <bool Vector>
 [[gnu::always_inline]] inline Wide mulAdd(Wide a, Wide b, Wide c) {
 #if PHYSIM_HAS_AVX2_CODE && !defined(__clang__)
