@@ -98,10 +98,7 @@ struct RowBody {
     }
     const WideMask rubs = (b.staticFriction > 0.0) | (b.dynamicFriction > 0.0);
     b.tangentImpulse = rubs ? b.tangentImpulse : zero;
-    const WideMask inUse = count > 0.0;
     b.friction = any(rubs);
-    b.pairs = any(inUse & (b.invDet > 0.0));
-    b.singles = any(inUse & ~(b.invDet > 0.0));
     b.keepsPushes = keepsPushes;
     b.writes = static_cast<std::uint8_t>(writes);
 }
@@ -208,15 +205,21 @@ struct alignas(64) BlockInputs {
             cold.lanes[lane].push[i] = 0.0;
         }
     }
-    // Two points: their 2x2 normal mass matrix, solved as a block unless nearly singular (coincident points).
+    // Two points: their 2x2 normal mass matrix, for a bounce of both at once (the passes take one point at a time);
+    // invDet 0 where nearly singular (coincident points).
     const WideMask two = in.pointCount == 2.0;
     const Wide k11 = kNormal[0], k22 = kNormal[1];
     const Wide k12 = in.invMassA + in.invMassB + in.invIA * rnA[0] * rnA[1] + in.invIB * rnB[0] * rnB[1];
     const Wide det = k11 * k22 - k12 * k12;
-    block.k11 = two ? k11 : zero;
-    block.k22 = two ? k22 : zero;
-    block.k12 = two ? k12 : zero;
-    block.invDet = (two & (k11 * k11 < 1000.0 * det)) ? 1.0 / det : zero;
+    const Wide k11Two = two ? k11 : zero, k12Two = two ? k12 : zero, k22Two = two ? k22 : zero;
+    const Wide invDet = (two & (k11 * k11 < 1000.0 * det)) ? 1.0 / det : zero;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        ContactBlockCold::Lane& l = cold.lanes[lane];
+        l.k11 = k11Two[lane];
+        l.k12 = k12Two[lane];
+        l.k22 = k22Two[lane];
+        l.invDet = invDet[lane];
+    }
     // Friction: one row at the manifold's centre, along the tangent t = perp(n).
     const Wide share = in.pointCount > 0.0 ? 1.0 / in.pointCount : zero;
     const Wide fax = share * sumAx, fay = share * sumAy, fbx = share * sumBx, fby = share * sumBy;
@@ -338,8 +341,8 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // Applies the bounces of a row one of whose points bounces, as one blow on the whole row. First everything this
 // pass gave the row's points is taken back (`delta`, N s per point), so the bodies move as they met (`vn`: each
 // point's normal speed then, m/s, less what the substep gave the bodies provisionally). Then impulses x >= 0, one
-// per point, bring each point to at least its target speed, exactly where x > 0, as the normal rows' 2x2
-// complementarity problem does: a bouncing point's target is its bounce's; any other point may not approach faster
+// per point, bring each point to at least its target speed, exactly where x > 0, a 2x2 complementarity problem
+// on the row's mass matrix: a bouncing point's target is its bounce's; any other point may not approach faster
 // than it separated (target -vn), and one that approached is stopped (target 0). The kinetic energy changes by
 // sum x (vn + v') / 2, so each point's share is zero (a bounce with e = 1, a separating point held at the mirror
 // of its speed) or a loss, whatever the coupling between the points. Both points of a face bounce together (a
@@ -534,10 +537,10 @@ void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlock
         p.baseSeparation = q.baseSeparation[k];
         p.normalMass = q.normalMass[k];
     }
-    c.k11 = b.k11[k];
-    c.k12 = b.k12[k];
-    c.k22 = b.k22[k];
-    c.invDet = b.invDet[k];
+    c.k11 = cold.lanes[k].k11;
+    c.k12 = cold.lanes[k].k12;
+    c.k22 = cold.lanes[k].k22;
+    c.invDet = cold.lanes[k].invDet;
 }
 
 // Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
@@ -640,14 +643,6 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
     }
 }
 
-// Each lane's push-out held, N s (both points). Inlined like every helper that passes a Wide by value: the caller
-// may be built for AVX, where a Wide travels in a register, not in memory as in a baseline-built function.
-[[gnu::always_inline]] inline Wide heldPush(const ContactBlockCold& cold) {
-    Wide held;
-    for (int k = 0; k < kLanes; ++k) held[k] = cold.lanes[k].push[0] + cold.lanes[k].push[1];
-    return held;
-}
-
 // One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
 // immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
@@ -661,7 +656,7 @@ template <bool V, bool Turns, bool Bias>
     const Wide zero{}, one = splat(1.0);
     const Wide nx = c.nx, ny = c.ny;
     const Wide normalShift = mulAdd<V>(nx, B.dpx - A.dpx, ny * (B.dpy - A.dpy));
-    Wide separation[2], bias[2], massScale[2], leak[2], keep[2], before[2];
+    Wide separation[2], bias[2], massScale[2], leak[2], before[2];
     for (int i = 0; i < 2; ++i) {
         const ContactBlock::Point& cp = c.points[i];
         // Separation now: the start's, moved by the bodies' displacement and turn since the step began
@@ -680,7 +675,6 @@ template <bool V, bool Turns, bool Bias>
             bias[i] = apart ? s * pass.invH : max(pass.softness.biasRate * s, splat(-pass.maxPushVelocity));
             massScale[i] = apart ? one : splat(pass.softness.massScale);
             leak[i] = apart ? zero : splat(pass.softness.impulseScale);
-            keep[i] = apart ? zero : splat(1.0 - pass.softness.massScale - pass.softness.impulseScale);  // of x
         } else {
             bias[i] = apart ? s * pass.invH : zero;
             massScale[i] = one;
@@ -688,55 +682,27 @@ template <bool V, bool Turns, bool Bias>
         }
         before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
     }
-    // Two-point rows with a regular mass matrix solve both points at once: the 2x2 complementarity problem on the
-    // accumulated impulses (w = K (y - x) + b >= 0, y >= 0, y . w = 0; four cases), then the soft scaling per
-    // point. The others go one point at a time (Gauss-Seidel): the second sees the first's impulse.
-    const WideMask block = c.invDet > 0.0;
-    const Wide x1 = c.points[0].normalImpulse, x2 = c.points[1].normalImpulse;
-    Wide blockDelta[2] = {zero, zero};
-    if (c.pairs) {
-        const Wide b1 = before[0] + bias[0] - mulAdd<V>(c.k11, x1, c.k12 * x2);
-        const Wide b2 = before[1] + bias[1] - mulAdd<V>(c.k12, x1, c.k22 * x2);
-        const Wide both1 = mulAdd<V>(c.k12, b2, -(c.k22 * b1)) * c.invDet;
-        const Wide both2 = mulAdd<V>(c.k12, b1, -(c.k11 * b2)) * c.invDet;
-        // Each point's normal mass is 1 / k_ii: the one-point cases need no division.
-        const Wide first = -b1 * c.points[0].normalMass;   // only point 1 pushes; point 2 must then separate
-        const Wide second = -b2 * c.points[1].normalMass;  // only point 2 pushes
-        const WideMask bothPush = (both1 >= 0.0) & (both2 >= 0.0);
-        const WideMask firstOnly = (first >= 0.0) & (mulAdd<V>(c.k12, first, b2) >= 0.0);
-        const WideMask secondOnly = (second >= 0.0) & (mulAdd<V>(c.k12, second, b1) >= 0.0);
-        const Wide y1 = bothPush ? both1 : (firstOnly ? first : zero);
-        const Wide y2 = bothPush ? both2 : (firstOnly ? zero : (secondOnly ? second : zero));
-        // The soft step's x + massScale (y - x) - leak x, as x keep + massScale y: x's part does not wait for y.
-        // The relax pass's x + (y - x) is y.
-        if constexpr (Bias) {
-            blockDelta[0] = max(mulAdd<V>(massScale[0], y1, x1 * keep[0]), zero) - x1;
-            blockDelta[1] = max(mulAdd<V>(massScale[1], y2, x2 * keep[1]), zero) - x2;
-        } else {
-            blockDelta[0] = max(y1, zero) - x1;
-            blockDelta[1] = max(y2, zero) - x2;
-        }
-    }
-    // Each point's normal speed before any of this pass's impulses on the row (the one-point-at-a-time path below
-    // measures the second point again after the first's): what a bounce answers, since it takes all of them back.
+    // One point at a time (Gauss-Seidel): the second sees the first's impulse. Odd substeps take the second point
+    // first, so neither leads on average: a lead always to one side would tip a symmetric column over time.
+    const bool secondFirst = (pass.substep & 1) != 0;
+    // Each point's normal speed before any of this pass's impulses on the row: what a bounce answers, since it takes
+    // all of them back.
     const Wide met[2] = {before[0], before[1]};
     WideMask started[2];
     Wide deltas[2];  // each point's impulse change in this pass
     Wide totalNormal = zero;
-    for (int i = 0; i < 2; ++i) {
+    for (int j = 0; j < 2; ++j) {
+        const int i = secondFirst ? 1 - j : j;
         ContactBlock::Point& cp = c.points[i];
         const Wide x = cp.normalImpulse;
-        Wide delta = blockDelta[i];  // an empty lane's is zero either way
-        if (c.singles) {
-            if (i == 1) before[1] = block ? before[1] : speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
-            Wide single;
-            if constexpr (Bias)
-                single =
-                    max(mulAdd<V>(-(cp.normalMass * massScale[i]), before[i] + bias[i], x - leak[i] * x), zero) - x;
-            else
-                single = max(mulAdd<V>(-cp.normalMass, before[i] + bias[i], x), zero) - x;
-            delta = block ? blockDelta[i] : single;
-        }
+        if (j == 1) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        // The soft impulse -massScale m (v + bias) - leak x, clamped so that the accumulated impulse only pushes (the
+        // relax pass's is the rigid one: massScale 1, no leak). An unused point has zero mass and takes none.
+        Wide delta;
+        if constexpr (Bias)
+            delta = max(mulAdd<V>(-(cp.normalMass * massScale[i]), before[i] + bias[i], x - leak[i] * x), zero) - x;
+        else
+            delta = max(mulAdd<V>(-cp.normalMass, before[i] + bias[i], x), zero) - x;
         applyAlong<V, Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
         deltas[i] = delta;
@@ -770,30 +736,28 @@ template <bool V, bool Turns, bool Bias>
             totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);
         }
     }
-    // Friction after the normal rows, so its bound sees this pass's load. A sticking face holds up to mu_s times its
-    // load, a sliding one mu_d times. The relax pass, the substep's last word, decides which it is for the next
-    // substep: sliding when even the bound leaves the faces moving against each other faster than slipSpeed (a
-    // transient of one pass does not break a face loose). A frictionless lane has a zero bound: no impulse.
-    if (c.friction) {
-        const Wide tx = -ny, ty = nx;
-        const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.rtA, c.rtB);
-        // The push-out a row holds is no load: friction on it would stay when the relax pass takes the push back.
-        Wide load = totalNormal;
-        if constexpr (Bias)
-            if (c.holdsPush) load = max(totalNormal - heldPush(cold), zero);  // a lane holding none keeps its bits
-        const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * load;
-        // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a lane's
-        // bits do not depend on whether a neighbour's friction made the block run this path.
-        const Wide tangent = clamp(mulAdd<V>(-c.tangentMass, vt, c.tangentImpulse), zero - bound, bound);
-        if constexpr (!Bias) {
+    // Friction in the relax pass only, after the normal rows, so its bound sees the load without the solve pass's
+    // push-out (friction bounded by a push the relax pass then takes back would hold faces the load does not). A
+    // sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's last
+    // word, also decides which it is for the next substep: sliding when even the bound leaves the faces moving
+    // against each other faster than slipSpeed (a transient of one pass does not break a face loose). A frictionless
+    // lane has a zero bound: no impulse.
+    if constexpr (!Bias) {
+        if (c.friction) {
+            const Wide tx = -ny, ty = nx;
+            const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.rtA, c.rtB);
+            const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+            // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
+            // lane's bits do not depend on whether a neighbour's friction made the block run this path.
+            const Wide tangent = clamp(mulAdd<V>(-c.tangentMass, vt, c.tangentImpulse), zero - bound, bound);
             const WideMask hasMass = c.tangentMass > 0.0;
             const Wide mass = hasMass ? c.tangentMass : one;
             const WideMask slides = hasMass & (abs(vt + (tangent - c.tangentImpulse) / mass) > pass.slipSpeed);
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
+            applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
+            c.tangentImpulse = tangent;
         }
-        applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
-        c.tangentImpulse = tangent;
     }
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
@@ -902,7 +866,7 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
     ContactConstraint empty;
     empty.turns = false;
     for (int k = lanes; k < kLanes; ++k) setRow(block, cold, k, empty);
-    block.turns = block.friction = block.pairs = block.singles = block.keepsPushes = block.holdsPush = false;
+    block.turns = block.friction = block.keepsPushes = block.holdsPush = false;
 }
 
 void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstraint& c) {
@@ -931,10 +895,10 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
         lane.engaged[i] = p.engaged;
         lane.push[i] = 0.0;
     }
-    b.k11[k] = c.k11;
-    b.k12[k] = c.k12;
-    b.k22[k] = c.k22;
-    b.invDet[k] = c.invDet;
+    lane.k11 = c.k11;
+    lane.k12 = c.k12;
+    lane.k22 = c.k22;
+    lane.invDet = c.invDet;
     b.rtA[k] = c.rtA;
     b.rtB[k] = c.rtB;
     b.tangentMass[k] = c.tangentMass;

@@ -9,11 +9,14 @@
 //     overlaps separate smoothly instead of exploding; points still apart are speculative: they act only if the
 //     bodies would close the gap within the substep, and then stop them exactly at contact;
 //   - relaxes it without the bias, removing the velocity the push-out added (so pushing out adds no energy).
+// A row's points are solved one at a time, each as a spring of its own effective mass (stiffer than the 2x2 block
+// where a box straddles two others), the first alternating by substep so that neither side of a face leads.
 // A point that meets its partner faster than the restitution threshold bounces in that substep: its normal speed
 // becomes e times the meeting speed, placed so that an elastic bounce is an exact reflection (ContactSolver.cpp).
 // Friction is one row per manifold at the manifold's centre, bounded by the sum of the points' normal impulses
 // (in 2D the tangential impulses at points of one face all have the same lever arm about the normal, so one row is
-// exact, and the static/dynamic decision sees the whole load, not how it is shared between the points). A face
+// exact, and the static/dynamic decision sees the whole load, not how it is shared between the points), and solved
+// in the relax pass only, where that load holds no push-out (docs/dynamics.md has why both hold pyramids). A face
 // sticks (bound mu_s times the load) until a relax pass leaves it slipping faster than a tenth of the linear slop
 // per step; then it slides (bound mu_d) until a relax pass slows it below that. Deciding on the relax pass, the
 // substep's last word, and on a speed, keeps one pass's transient from breaking a face loose.
@@ -75,7 +78,8 @@ struct ContactConstraint {
     bool keepsPush = false;       // a body can bounce (restitution > 0): the row keeps its push-out apart (holdPushes)
     int pointCount = 0;
     ContactConstraintPoint points[2];
-    double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;  // two points' normal mass matrix; invDet 0: no block
+    // Two points' normal mass matrix, for a bounce of both at once; invDet 0: nearly singular, one at a time.
+    double k11 = 0.0, k12 = 0.0, k22 = 0.0, invDet = 0.0;
 };
 
 /// kLanes rows of one colour (no two share a dynamic body), field by field, so a pass solves them at once: what
@@ -89,15 +93,12 @@ struct alignas(64) ContactBlock {
     Wide nx, ny;
     Wide invMassA, invIA, invMassB, invIB;
     Point points[2];
-    Wide k11, k12, k22, invDet;
     Wide rtA, rtB, tangentMass, tangentImpulse;
     Wide staticFriction, dynamicFriction, sliding;  // sliding: 1 or 0
     std::int32_t indexA[kLanes], indexB[kLanes];
     std::uint8_t writes = 0;  // the sides the rows can move: bit k lane k's A, bit kLanes + k its B
     bool turns = false;       // some lane's body can turn (else the angular terms are skipped for all)
     bool friction = false;    // some lane has friction
-    bool pairs = false;       // some lane solves its two points together (invDet > 0)
-    bool singles = false;     // some lane in use solves its points one at a time
     bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
 };
@@ -112,6 +113,7 @@ struct alignas(64) ContactBlockCold {
         Vec2 anchorA[2], anchorB[2];
         double relativeVelocity[2];
         double push[2];  // N s of this substep's solve-pass push-out a point holds, still in its bodies' record
+        double k11, k12, k22, invDet;  // ContactConstraint's (a bounce of both points at once)
         bool engaged[2];
         bool keepsPush;  // the row's ContactConstraint::keepsPush
     } lanes[kLanes];
