@@ -32,23 +32,21 @@ std::string shortest(double v) {  // for recorded values that std::to_string wou
     return text;
 }
 
-// The pyramid criterion at a 100-box base, default settings: no box moves sideways more than 25 cm (a quarter
-// box) over 500 steps. A pyramid of touching boxes has a static solution with no sideways force, so sideways motion
-// is the solver's error. Measured: 19 cm (docs/stability.md). The top box's drift after 1 s is a known limit at
-// these settings: 5.4 cm, over the 5 cm criterion, as one relax pass per substep leaves the 100-row stack swaying
-// for its first two seconds. Guarded at the stack's whole settling (7 cm): more would mean the pyramid moves beyond
-// its contacts' give.
+// The pyramid criterion at a 100-box base, default settings: the top box drifts under 5 cm after 1 s and no box
+// moves sideways more than 25 cm (a quarter box) over 500 steps. A pyramid of touching boxes has a static solution
+// with no sideways force, so sideways motion is the solver's error. Measured: 3.3 cm and 13 cm
+// (docs/stability.md). The 100-row stack sways at about 1 Hz for its first seconds, so the drift depends on where
+// in the swing step 500 falls.
 TEST(StabilityLong, PyramidWith100BoxBaseHoldsItsShapeAtDefaultSettings) {
     const PyramidRun r = test::runPyramid(100, 500);
     RecordProperty("sideways_m", std::to_string(r.sideways));
     RecordProperty("top_drift_m", std::to_string(r.topDrift));
     EXPECT_LT(r.sideways, 0.25);
-    EXPECT_LT(r.topDrift, 0.07);
+    EXPECT_LT(r.topDrift, 0.05);
 }
 
-// The whole criterion at a 100-box base with two relax passes per substep (WorldSettings::relaxIterations), the
-// setting docs/stability.md gives for towers this tall: the top box drifts under 5 cm after 1 s and no box moves
-// sideways more than 25 cm over 500 steps. Measured: 0.37 cm and 3.2 cm.
+// The same criterion at a 100-box base with two relax passes per substep (WorldSettings::relaxIterations): more
+// passes must not loosen the stack. Measured: 3.6 cm and 5.4 cm.
 TEST(StabilityLong, PyramidWith100BoxBaseStandsWithTwoRelaxPasses) {
     WorldSettings settings = test::awakeSettings();
     settings.relaxIterations = 2;
