@@ -76,7 +76,7 @@ ContactConstraint randomRow(std::mt19937& rng, std::int32_t a, std::int32_t b, b
         const double det = c.k11 * c.k22 - c.k12 * c.k12;
         if (turning && c.k11 * c.k11 < 1000.0 * det) c.invDet = 1.0 / det;
         if (!turning && u(rng) > 0.0) {
-            c.k12 = 0.5 * lin;  // locked bodies make K singular; a regular K reaches the block path too
+            c.k12 = 0.5 * lin;  // locked bodies make K singular; a regular K reaches the two-point bounce too
             c.invDet = 1.0 / (c.k11 * c.k22 - c.k12 * c.k12);
         }
     }
@@ -434,7 +434,7 @@ TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
         }
         if (::testing::Test::HasFailure()) break;
     }
-    EXPECT_GT(pairs, 100);  // the random contacts reached the 2x2 block
+    EXPECT_GT(pairs, 100);  // the random contacts reached a regular 2x2 matrix (a two-point bounce solves it)
     EXPECT_GT(statics, 100);
 }
 
