@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 
 namespace physim {
 
@@ -691,11 +692,12 @@ template <bool V, bool Turns, bool Bias>
     WideMask started[2];
     Wide deltas[2];  // each point's impulse change in this pass
     Wide totalNormal = zero;
-    for (int j = 0; j < 2; ++j) {
-        const int i = secondFirst ? 1 - j : j;
+    // Point i, compile-time (a runtime index would keep these arrays on the stack); `second`: it follows the other.
+    const auto solvePoint = [&](auto index, bool second) __attribute__((always_inline)) {
+        constexpr int i = decltype(index)::value;
         ContactBlock::Point& cp = c.points[i];
         const Wide x = cp.normalImpulse;
-        if (j == 1) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        if (second) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
         // The soft impulse -massScale m (v + bias) - leak x, clamped so that the accumulated impulse only pushes (the
         // relax pass's is the rigid one: massScale 1, no leak). An unused point has zero mass and takes none.
         Wide delta;
@@ -708,6 +710,15 @@ template <bool V, bool Turns, bool Bias>
         deltas[i] = delta;
         cp.normalImpulse = x + delta;
         totalNormal += cp.normalImpulse;
+    };
+    constexpr std::integral_constant<int, 0> first{};
+    constexpr std::integral_constant<int, 1> second{};
+    if (secondFirst) {
+        solvePoint(second, false);
+        solvePoint(first, true);
+    } else {
+        solvePoint(first, false);
+        solvePoint(second, true);
     }
     if constexpr (Bias) {
         if (pass.holdPushes && c.keepsPushes) {
