@@ -692,12 +692,13 @@ template <bool V, bool Turns, bool Bias>
     WideMask started[2];
     Wide deltas[2];  // each point's impulse change in this pass
     Wide totalNormal = zero;
-    // Point i, compile-time (a runtime index would keep these arrays on the stack); `second`: it follows the other.
-    const auto solvePoint = [&](auto index, bool second) __attribute__((always_inline)) {
+    // Point i, compile-time (a runtime index would keep these arrays on the stack); `follows`: the other point went
+    // first in this pass, so its speed is measured again.
+    const auto solvePoint = [&](auto index, bool follows) __attribute__((always_inline)) {
         constexpr int i = decltype(index)::value;
         ContactBlock::Point& cp = c.points[i];
         const Wide x = cp.normalImpulse;
-        if (second) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        if (follows) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
         // The soft impulse -massScale m (v + bias) - leak x, clamped so that the accumulated impulse only pushes (the
         // relax pass's is the rigid one: massScale 1, no leak). An unused point has zero mass and takes none.
         Wide delta;
