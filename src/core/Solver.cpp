@@ -494,11 +494,9 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
         {
             auto timer = stage(Stage::Integrate);
             WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
-            forBodies([&](std::size_t i) {
-                const SolverBodySim& sim = sims[i];
-                if (!sim.dynamic) return;
-                integrateVelocity(st[i], base[i], keepWarm ? &keepWarm[i] : nullptr, h * sim.acceleration,
-                                  h * sim.angularAcceleration, sim.turns, bodiesWarmStart && sub > 0);
+            executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+                integrateVelocities(st, base, keepWarm, sims.data(), bodyList + begin, end - begin, h,
+                                    bodiesWarmStart && sub > 0);
             });
         }
         if (anyRows) {

@@ -39,15 +39,16 @@ struct PushVelocity {
 
 /// A body's velocity as the present substep's rows found it (after integration, before the warm start), plus the
 /// blows of the bounces they dealt: what the body gained beyond it is then the rows' accumulated impulses'
-/// M^-1 J^T lambda, which the next substep's warm start would apply again (m/s, rad/s).
-struct RowsBase {
+/// M^-1 J^T lambda, which the next substep's warm start would apply again (m/s, rad/s). 32 bytes, like the
+/// next: the pass over bodies moves each whole, four bodies' at once (BodyPasses.cpp).
+struct alignas(32) RowsBase {
     Vec2 v = Vec2::Zero();
     double w = 0.0;
 };
 
 /// What the present substep's warm start gave a body (m/s, rad/s): a guess at the substep's impulses, which the
 /// passes then keep or take back, so a bounce leaves it out of the speeds it answers (ContactSolver.cpp).
-struct WarmStartVelocity {
+struct alignas(32) WarmStartVelocity {
     Vec2 v = Vec2::Zero();
     double w = 0.0;
 };
