@@ -4,6 +4,7 @@
 // the processor and on how the threads cut the bodies into chunks.
 
 #include "BodyPasses.hpp"
+#include "support/WideCodes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -29,9 +30,7 @@ bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 }
 
 TEST(BodyPasses, PositionsIntegrateAsTheScalarRuleOnEveryBuildAndChunk) {
-    std::vector<WideCode> codes{WideCode::Baseline, WideCode::Best};
-    if (avx2CodeRuns()) codes.push_back(WideCode::Avx2);
-    if (avx512CodeRuns()) codes.push_back(WideCode::Avx512);
+    const std::vector<WideCode> codes = test::runnableWideCodes();
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_int_distribution<int> kind(0, 5);
@@ -75,9 +74,7 @@ bool sameMotion(const Vec2& v, double w, const Vec2& v2, double w2) {
 }
 
 TEST(BodyPasses, VelocitiesIntegrateAsTheScalarRuleOnEveryBuildAndChunk) {
-    std::vector<WideCode> codes{WideCode::Baseline, WideCode::Best};
-    if (avx2CodeRuns()) codes.push_back(WideCode::Avx2);
-    if (avx512CodeRuns()) codes.push_back(WideCode::Avx512);
+    const std::vector<WideCode> codes = test::runnableWideCodes();
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::uniform_int_distribution<int> kind(0, 3);

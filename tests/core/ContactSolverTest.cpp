@@ -7,6 +7,7 @@
 
 #include "ContactData.hpp"
 #include "ContactSolver.hpp"
+#include "support/WideCodes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -319,9 +320,7 @@ TEST(ContactSolver, TheWarmStartOnTheBodiesIsThePassOverTheRows) {
 // the loops, it gets the same bits), and its fields are what they mean: the lever arms' moments, the separation
 // split into a part fixed for the step and the part the anchors carry, and the effective masses.
 TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
-    std::vector<WideCode> codes{WideCode::Baseline, WideCode::Best};
-    if (avx2CodeRuns()) codes.push_back(WideCode::Avx2);
-    if (avx512CodeRuns()) codes.push_back(WideCode::Avx512);
+    const std::vector<WideCode> codes = test::runnableWideCodes();
     std::mt19937 rng(17);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     int pairs = 0, statics = 0;
