@@ -2,6 +2,8 @@
 
 #include "BodyLanes.hpp"
 
+#include <cstddef>
+
 namespace physim {
 namespace {
 
@@ -55,7 +57,10 @@ namespace {
         integrateVelocity(s, base, warm, h * sim.acceleration, h * sim.angularAcceleration, sim.turns, again);
 }
 
-// A 32-byte record (SolverBody's halves, RowsBase, WarmStartVelocity) moved whole as four lanes.
+// A 32-byte record (RowsBase, WarmStartVelocity: v, then w, then padding) moved whole as four lanes.
+static_assert(sizeof(RowsBase) == sizeof(Wide) && offsetof(RowsBase, w) == 2 * sizeof(double) &&
+                  sizeof(WarmStartVelocity) == sizeof(Wide) && offsetof(WarmStartVelocity, w) == 2 * sizeof(double),
+              "RowsBase and WarmStartVelocity are (vx, vy, w, padding)");
 template <class T>
 [[gnu::always_inline]] inline Wide loadWhole(const T& x) {
     return reinterpret_cast<const RecordHalf*>(&x)->values;
