@@ -57,17 +57,27 @@ namespace {
         integrateVelocity(s, base, warm, h * sim.acceleration, h * sim.angularAcceleration, sim.turns, again);
 }
 
-// A 32-byte record (RowsBase, WarmStartVelocity: v, then w, then padding) moved whole as four lanes.
+// RowsBase and WarmStartVelocity are (vx, vy, w, padding): four lanes' records transposed whole, as SolverBody's
+// halves are (BodyLanes.hpp).
 static_assert(sizeof(RowsBase) == sizeof(Wide) && offsetof(RowsBase, w) == 2 * sizeof(double) &&
                   sizeof(WarmStartVelocity) == sizeof(Wide) && offsetof(WarmStartVelocity, w) == 2 * sizeof(double),
               "RowsBase and WarmStartVelocity are (vx, vy, w, padding)");
-template <class T>
-[[gnu::always_inline]] inline Wide loadWhole(const T& x) {
-    return reinterpret_cast<const RecordHalf*>(&x)->values;
+template <class Record>
+[[gnu::always_inline]] inline void gatherMotions(const Record* records, const std::int32_t (&index)[kLanes], Wide& vx,
+                                                 Wide& vy, Wide& w) {
+    const auto lane = [&](int k) { return reinterpret_cast<const RecordHalf*>(&records[index[k]])->values; };
+    Wide pad = lane(3);
+    vx = lane(0), vy = lane(1), w = lane(2);
+    transpose(vx, vy, w, pad);
 }
-template <class T>
-[[gnu::always_inline]] inline void storeWhole(T& x, const Wide& values) {
-    reinterpret_cast<RecordHalf*>(&x)->values = values;
+template <class Record>
+[[gnu::always_inline]] inline void scatterMotions(Record* records, const std::int32_t (&index)[kLanes], unsigned lanes,
+                                                  Wide vx, Wide vy, Wide w) {
+    Wide pad{};
+    transpose(vx, vy, w, pad);
+    const Wide values[kLanes] = {vx, vy, w, pad};
+    for (int k = 0; k < kLanes; ++k)
+        if (lanes >> k & 1u) reinterpret_cast<RecordHalf*>(&records[index[k]])->values = values[k];
 }
 
 // Four bodies at once: integrateVelocity's operations, lane by lane, on the dynamic lanes; the others are not
@@ -77,7 +87,9 @@ template <class T>
                                                          std::size_t count, double h, bool again) {
     std::size_t k = 0;
     for (; k + kLanes <= count; k += kLanes) {
-        const std::uint32_t index[kLanes] = {list[k], list[k + 1], list[k + 2], list[k + 3]};
+        const std::int32_t index[kLanes] = {static_cast<std::int32_t>(list[k]), static_cast<std::int32_t>(list[k + 1]),
+                                            static_cast<std::int32_t>(list[k + 2]),
+                                            static_cast<std::int32_t>(list[k + 3])};
         Wide ax, ay, alpha;
         WideMask turns;
         unsigned dynamic = 0;
@@ -90,41 +102,27 @@ template <class T>
             dynamic |= sim.dynamic ? 1u << lane : 0u;
         }
         if (dynamic == 0) continue;
-        Wide vx = loadHalf(states[index[0]], 0), vy = loadHalf(states[index[1]], 0);
-        Wide w = loadHalf(states[index[2]], 0), dAngle = loadHalf(states[index[3]], 0);
-        transpose(vx, vy, w, dAngle);
+        WideSide g = gather<false>(index, states);
         const Wide zero{};
         Wide rowsX = zero, rowsY = zero, rowsW = zero;
         if (again) {  // what the rows gave the bodies over the last substep
-            Wide bx = loadWhole(base[index[0]]), by = loadWhole(base[index[1]]);
-            Wide bw = loadWhole(base[index[2]]), pad = loadWhole(base[index[3]]);
-            transpose(bx, by, bw, pad);
-            rowsX = vx - bx;
-            rowsY = vy - by;
-            rowsW = w - bw;
+            Wide bx, by, bw;
+            gatherMotions(base, index, bx, by, bw);
+            rowsX = g.vx - bx;
+            rowsY = g.vy - by;
+            rowsW = g.w - bw;
         }
-        vx = vx + h * ax;
-        vy = vy + h * ay;
-        w = turns ? w + h * alpha : w;
-        Wide bx = vx, by = vy, bw = w, pad = zero;
-        transpose(bx, by, bw, pad);
-        const Wide bases[kLanes] = {bx, by, bw, pad};
+        g.vx = g.vx + h * ax;
+        g.vy = g.vy + h * ay;
+        g.w = turns ? g.w + h * alpha : g.w;
+        scatterMotions(base, index, dynamic, g.vx, g.vy, g.w);
         if (again) {
-            vx = vx + rowsX;
-            vy = vy + rowsY;
-            w = w + rowsW;
+            g.vx = g.vx + rowsX;
+            g.vy = g.vy + rowsY;
+            g.w = g.w + rowsW;
+            if (warm) scatterMotions(warm, index, dynamic, rowsX, rowsY, rowsW);
         }
-        transpose(vx, vy, w, dAngle);
-        const Wide halves[kLanes] = {vx, vy, w, dAngle};
-        Wide wx = rowsX, wy = rowsY, ww = rowsW, wpad = zero;
-        if (again && warm) transpose(wx, wy, ww, wpad);
-        const Wide warms[kLanes] = {wx, wy, ww, wpad};
-        for (int lane = 0; lane < kLanes; ++lane) {
-            if (!(dynamic >> lane & 1u)) continue;
-            storeHalf(states[index[lane]], 0, halves[lane]);
-            storeWhole(base[index[lane]], bases[lane]);
-            if (again && warm) storeWhole(warm[index[lane]], warms[lane]);
-        }
+        scatter(index, dynamic, g, states);
     }
     for (; k < count; ++k)
         integrateVelocityOne(states[list[k]], base[list[k]], warm ? &warm[list[k]] : nullptr, sims[list[k]], h, again);
