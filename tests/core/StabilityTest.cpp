@@ -43,12 +43,6 @@ TEST(Stability, PyramidsWith20And40BoxBasesStand) {
     }
 }
 
-// A box resting on a face touches at two points, and the solver holds each one alone as a soft spring: a point
-// carrying impulse x overlaps K_ii x / w^2 (K_ii its inverse effective mass), not the pair's (K_11 + K_12) x / w^2
-// that would sink the box as its bare mass. For two points at the face's ends (half width a, half height b) the
-// ratio K_ii / (K_11 + K_12) is (1 + m a^2 / I) / 2 = (1 + 3 a^2 / (a^2 + b^2)) / 2: 1.25 for a square box.
-double pointCompliance(double a, double b) { return (1.0 + 3.0 * a * a / (a * a + b * b)) / 2.0; }
-
 // 20 boxes in a column for 30 s. A column has no sideways force either: the top stays within 1 mm of x = 0 and
 // upright, does not move after the first second (1 cm, the existing 10-box test's bound), and sinks by the soft
 // contacts' static compression: N^2 g / (2 pi f)^2 for boxes sunk as bare masses (WorldSettings::contactHertz;
@@ -69,7 +63,7 @@ TEST(Stability, TwentyBoxColumnStandsThirtySeconds) {
         tilt = std::max(tilt, std::abs(world.angle(top)));
     }
     const double omega = 2.0 * M_PI * world.settings().contactHertz;
-    const double predictedSink = pointCompliance(0.5, 0.5) * n * n * kG / (omega * omega);
+    const double predictedSink = test::pointCompliance(0.5, 0.5) * n * n * kG / (omega * omega);
     const double sink = n - 0.5 - world.position(top).y();
     RecordProperty("top_drift_m", std::to_string(drift));
     RecordProperty("sink_m", std::to_string(sink));
@@ -116,7 +110,7 @@ TEST(Stability, HeavyOnLightStackAtMassRatio1000SinksNoDeeperThanTwiceTheSoftCon
     const double sink = heavyOnLightSink(1000.0);
     RecordProperty("ratio1000_sink_m", std::to_string(sink));
     const double w = 2 * M_PI * 120.0;
-    EXPECT_LT(sink, 2.0 * pointCompliance(0.5, 0.5) * (2 * 1000.0 * kG / (w * w)));
+    EXPECT_LT(sink, 2.0 * test::pointCompliance(0.5, 0.5) * (2 * 1000.0 * kG / (w * w)));
 }
 
 struct DropRun {

@@ -3,6 +3,7 @@
 // promises: a dragged body follows the cursor, O runs exactly one step, the time scale sets how many steps a
 // real second runs, zoom keeps the point under the cursor, a pan drags the scene with the cursor.
 
+#include "support/Scenes.hpp"
 #include "support/SfmlEvents.hpp"
 
 #include <physim/core/RectangleShape.hpp>
@@ -99,9 +100,8 @@ TEST(Controls, DragMovesTheBodyToTheCursor) {
 // The pull is a force, so contacts stay in charge: dragged towards a point 2.5 m inside the floor, the box stops
 // on it. Resting there, the floor's soft contact (a spring of w_c = 2 pi contactHertz, capped at a quarter of the
 // substep rate) holds the drag's spring k_d (2.5 m - overlap): the overlap is 2.5 k_d / (k_c + k_d) with
-// k_d = m w_d^2 and k_c = 0.8 m w_c^2 (each of the square box's two points a spring of its own: 1 / 0.8 is the
-// point compliance of StabilityTest.cpp; 12.15 mm at 40 Hz, measured to 1e-5 m). 1 mm more is allowed for the
-// settling.
+// k_d = m w_d^2 and k_c = m w_c^2 / 1.25 (each of the square box's two points a spring of its own:
+// test::pointCompliance; 12.15 mm at 40 Hz, measured to 1e-5 m). 1 mm more is allowed for the settling.
 TEST(Controls, DraggedBodyStopsOnTheFloor) {
     Runner runner = makeRunner();
     runner.restart();
@@ -114,7 +114,8 @@ TEST(Controls, DraggedBodyStopsOnTheFloor) {
     const WorldSettings& s = sim.world().settings();
     const double contactW = 2 * M_PI * std::min(s.contactHertz, s.substeps * sim.physicsRate() / 4.0);
     const double dragW = 2 * M_PI * Controls::dragHertz;
-    const double overlap = 2.5 * dragW * dragW / (0.8 * contactW * contactW + dragW * dragW);
+    const double contactK = contactW * contactW / test::pointCompliance(0.5, 0.5);  // per kg, the 1 m box
+    const double overlap = 2.5 * dragW * dragW / (contactK + dragW * dragW);
     EXPECT_GT(scene(runner).box->getPosition().y(), -2.5 - overlap - 1e-3);
 }
 

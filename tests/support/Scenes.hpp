@@ -22,6 +22,15 @@ inline WorldSettings awakeSettings(const Vec2& gravity = {0.0, -9.81}) {
     return s;
 }
 
+/// How much deeper a box resting on a face sinks into soft contacts than its bare mass would. The solver holds each of
+/// the face's two points alone as a spring: a point carrying impulse x overlaps K_ii x / w^2 (K_ii its inverse
+/// effective mass), not the pair's (K_11 + K_12) x / w^2. For points at the face's ends of a box of half width a and
+/// half height b, K_ii / (K_11 + K_12) = (1 + m a^2 / I) / 2 = (1 + 3 a^2 / (a^2 + b^2)) / 2: 1.25 for a square.
+inline double pointCompliance(double halfWidth, double halfHeight) {
+    const double a2 = halfWidth * halfWidth, b2 = halfHeight * halfHeight;
+    return (1.0 + 3.0 * a2 / (a2 + b2)) / 2.0;
+}
+
 /// A static slab whose top face is the line y = 0, `halfWidth` m each side of x = 0.
 inline BodyId addGround(World& world, double halfWidth = 200.0) {
     BodyDef ground;
