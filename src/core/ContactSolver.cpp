@@ -84,22 +84,22 @@ struct RowBody {
     for (int k = 0; k < kLanes; ++k) {
         count[k] = cold.lanes[k].pointCount;
         keepsPushes = keepsPushes || cold.lanes[k].keepsPush;
-        writes |= (b.invMassA[k] != 0.0 ? 1u << k : 0u) | (b.invMassB[k] != 0.0 ? 1u << (k + kLanes) : 0u);
+        writes |= (b.negInvMassA[k] != 0.0 ? 1u << k : 0u) | (b.invMassB[k] != 0.0 ? 1u << (k + kLanes) : 0u);
     }
     for (int i = 0; i < 2; ++i) {
         const WideMask used = count > static_cast<double>(i);
         ContactBlock::Point& q = b.points[i];
-        q.rnA = used ? q.rnA : zero;
+        q.negRnA = used ? q.negRnA : -zero;
         q.rnB = used ? q.rnB : zero;
-        q.ndA = used ? q.ndA : zero;
+        q.negNdA = used ? q.negNdA : -zero;
         q.ndB = used ? q.ndB : zero;
         q.baseSeparation = used ? q.baseSeparation : zero;
         q.normalImpulse = used ? q.normalImpulse : zero;
-        q.normalMass = used ? q.normalMass : zero;
+        q.negNormalMass = used ? q.negNormalMass : -zero;
     }
     const WideMask rubs = (b.staticFriction > 0.0) | (b.dynamicFriction > 0.0);
     b.tangentImpulse = rubs ? b.tangentImpulse : zero;
-    b.friction = any(rubs);
+    b.friction = any<false>(rubs);
     b.keepsPushes = keepsPushes;
     b.writes = static_cast<std::uint8_t>(writes);
 }
@@ -172,7 +172,7 @@ struct alignas(64) BlockInputs {
     const Wide nx = in.nx, ny = in.ny;
     block.nx = nx;
     block.ny = ny;
-    block.invMassA = in.invMassA;
+    block.negInvMassA = -in.invMassA;
     block.invIA = in.invIA;
     block.invMassB = in.invMassB;
     block.invIB = in.invIB;
@@ -185,14 +185,14 @@ struct alignas(64) BlockInputs {
         rnA[i] = ax * ny - ay * nx;  // anchor x n
         rnB[i] = bx * ny - by * nx;
         ContactBlock::Point& q = block.points[i];
-        q.rnA = rnA[i];
+        q.negRnA = -rnA[i];
         q.rnB = rnB[i];
-        q.ndA = nx * ax + ny * ay;
+        q.negNdA = -(nx * ax + ny * ay);
         q.ndB = nx * bx + ny * by;
         q.baseSeparation = in.separation[i] - (nx * (bx - ax) + ny * (by - ay));
         q.normalImpulse = in.normalImpulse[i];
         kNormal[i] = inverseMass(in, rnA[i], rnB[i]);
-        q.normalMass = inverseOrZero(kNormal[i]);
+        q.negNormalMass = -inverseOrZero(kNormal[i]);
         tangentImpulse = used ? tangentImpulse + in.tangentImpulse[i] : tangentImpulse;
         sumAx = used ? sumAx + ax : sumAx;
         sumAy = used ? sumAy + ay : sumAy;
@@ -226,7 +226,7 @@ struct alignas(64) BlockInputs {
     const Wide fax = share * sumAx, fay = share * sumAy, fbx = share * sumBx, fby = share * sumBy;
     const Wide tx = -ny, ty = nx;
     const Wide rtA = fax * ty - fay * tx, rtB = fbx * ty - fby * tx;
-    block.rtA = rtA;
+    block.negRtA = -rtA;
     block.rtB = rtB;
     block.tangentMass = inverseOrZero(inverseMass(in, rtA, rtB));
     // The paper's combination rules: restitution min, friction coefficients averaged.
@@ -445,28 +445,28 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
     if (rowMoves(c.indexB, c.invMassB)) pass.pushes[c.indexB] = {B.v, B.w, pass.substep};
 }
 
-// B's speed relative to A along (dx, dy) at lever-arm moments armA, armB, and an impulse d along it (B +, A -):
-// the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
+// B's speed relative to A along (dx, dy) at lever-arm moments -negArmA, armB (A's kept negated, as in the block),
+// and an impulse d along it (B +, A -): the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
 // V: the build runs mulAdd as one instruction (the AVX builds; the bits are the same either way). Both are written
 // for few operations and a short dependency chain: the speed sums its linear and angular parts apart, and the
 // impulse's factors that do not wait for d (mass times direction) are multiplied first, so d reaches a velocity in
 // one fused multiply-add.
 template <bool V, bool Turns>
 [[gnu::always_inline]] inline Wide speedAlong(const WideSide& A, const WideSide& B, const Wide& dx, const Wide& dy,
-                                              const Wide& armA, const Wide& armB) {
-    if constexpr (Turns) return mulAdd<V>(dx, B.vx - A.vx, dy * (B.vy - A.vy)) + mulAdd<V>(B.w, armB, -(A.w * armA));
+                                              const Wide& negArmA, const Wide& armB) {
+    if constexpr (Turns) return mulAdd<V>(dx, B.vx - A.vx, dy * (B.vy - A.vy)) + mulAdd<V>(B.w, armB, A.w * negArmA);
     else return mulAdd<V>(dx, B.vx - A.vx, dy * (B.vy - A.vy));
 }
 
 template <bool V, bool Turns>
 [[gnu::always_inline]] inline void applyAlong(const ContactBlock& c, WideSide& A, WideSide& B, const Wide& d,
-                                              const Wide& dx, const Wide& dy, const Wide& armA, const Wide& armB) {
-    A.vx = mulAdd<V>(d, -(c.invMassA * dx), A.vx);
-    A.vy = mulAdd<V>(d, -(c.invMassA * dy), A.vy);
+                                              const Wide& dx, const Wide& dy, const Wide& negArmA, const Wide& armB) {
+    A.vx = mulAdd<V>(d, c.negInvMassA * dx, A.vx);
+    A.vy = mulAdd<V>(d, c.negInvMassA * dy, A.vy);
     B.vx = mulAdd<V>(d, c.invMassB * dx, B.vx);
     B.vy = mulAdd<V>(d, c.invMassB * dy, B.vy);
     if constexpr (Turns) {
-        A.w = mulAdd<V>(d, -(c.invIA * armA), A.w);
+        A.w = mulAdd<V>(d, c.invIA * negArmA, A.w);
         B.w = mulAdd<V>(d, c.invIB * armB, B.w);
     }
 }
@@ -475,8 +475,8 @@ template <bool V, bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
     WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
     for (const ContactBlock::Point& cp : c.points)
-        applyAlong<V, Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.rnA, cp.rnB);
-    applyAlong<V, Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.rtA, c.rtB);
+        applyAlong<V, Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.negRnA, cp.rnB);
+    applyAlong<V, Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.negRtA, c.rtB);
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
 }
@@ -498,7 +498,7 @@ ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold,
     c.indexA = b.indexA[k];
     c.indexB = b.indexB[k];
     c.normal = {b.nx[k], b.ny[k]};
-    c.invMassA = b.invMassA[k];
+    c.invMassA = -b.negInvMassA[k];
     c.invIA = b.invIA[k];
     c.invMassB = b.invMassB[k];
     c.invIB = b.invIB[k];
@@ -510,7 +510,7 @@ ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold,
     for (int i = 0; i < 2; ++i) {
         const ContactBlock::Point& q = b.points[i];
         ContactConstraintPoint& p = c.points[i];
-        p.rnA = q.rnA[k];
+        p.rnA = -q.negRnA[k];
         p.rnB = q.rnB[k];
         p.normalImpulse = q.normalImpulse[k];
         p.relativeVelocity = lane.relativeVelocity[i];
@@ -523,7 +523,7 @@ void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlock
     const ContactBlockCold::Lane& lane = cold.lanes[k];
     c.staticFriction = b.staticFriction[k];
     c.dynamicFriction = b.dynamicFriction[k];
-    c.rtA = b.rtA[k];
+    c.rtA = -b.negRtA[k];
     c.rtB = b.rtB[k];
     c.tangentMass = b.tangentMass[k];
     c.tangentImpulse = b.tangentImpulse[k];
@@ -533,10 +533,10 @@ void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlock
         ContactConstraintPoint& p = c.points[i];
         p.anchorA = lane.anchorA[i];
         p.anchorB = lane.anchorB[i];
-        p.ndA = q.ndA[k];
+        p.ndA = -q.negNdA[k];
         p.ndB = q.ndB[k];
         p.baseSeparation = q.baseSeparation[k];
-        p.normalMass = q.normalMass[k];
+        p.normalMass = -q.negNormalMass[k];
     }
     c.k11 = cold.lanes[k].k11;
     c.k12 = cold.lanes[k].k12;
@@ -664,10 +664,10 @@ template <bool V, bool Turns, bool Bias>
         // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
         Wide s;
         if constexpr (Turns)
-            s = normalShift + mulAdd<V>(B.qc, cp.ndB, B.qs * cp.rnB) - mulAdd<V>(A.qc, cp.ndA, A.qs * cp.rnA) +
+            s = normalShift + mulAdd<V>(B.qc, cp.ndB, B.qs * cp.rnB) + mulAdd<V>(A.qc, cp.negNdA, A.qs * cp.negRnA) +
                 cp.baseSeparation;
         else
-            s = normalShift + cp.ndB - cp.ndA + cp.baseSeparation;
+            s = normalShift + cp.ndB + cp.negNdA + cp.baseSeparation;
         separation[i] = s;
         // Speculative (apart): close the gap in this substep, no further. Overlapping: the solve pass pushes out
         // softly, the relax pass not at all.
@@ -681,7 +681,7 @@ template <bool V, bool Turns, bool Bias>
             massScale[i] = one;
             leak[i] = zero;
         }
-        before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.negRnA, cp.rnB);
     }
     // One point at a time (Gauss-Seidel): the second sees the first's impulse. Odd substeps take the second point
     // first, so neither leads on average: a lead always to one side would tip a symmetric column over time.
@@ -698,15 +698,15 @@ template <bool V, bool Turns, bool Bias>
         constexpr int i = decltype(index)::value;
         ContactBlock::Point& cp = c.points[i];
         const Wide x = cp.normalImpulse;
-        if (follows) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.rnA, cp.rnB);
+        if (follows) before[i] = speedAlong<V, Turns>(A, B, nx, ny, cp.negRnA, cp.rnB);
         // The soft impulse -massScale m (v + bias) - leak x, clamped so that the accumulated impulse only pushes (the
         // relax pass's is the rigid one: massScale 1, no leak). An unused point has zero mass and takes none.
         Wide delta;
         if constexpr (Bias)
-            delta = max(mulAdd<V>(-(cp.normalMass * massScale[i]), before[i] + bias[i], x - leak[i] * x), zero) - x;
+            delta = max(mulAdd<V>(cp.negNormalMass * massScale[i], before[i] + bias[i], x - leak[i] * x), zero) - x;
         else
-            delta = max(mulAdd<V>(-cp.normalMass, before[i] + bias[i], x), zero) - x;
-        applyAlong<V, Turns>(c, A, B, delta, nx, ny, cp.rnA, cp.rnB);
+            delta = max(mulAdd<V>(cp.negNormalMass, before[i] + bias[i], x), zero) - x;
+        applyAlong<V, Turns>(c, A, B, delta, nx, ny, cp.negRnA, cp.rnB);
         started[i] = (x == 0.0) & (delta > 0.0);
         deltas[i] = delta;
         cp.normalImpulse = x + delta;
@@ -725,15 +725,15 @@ template <bool V, bool Turns, bool Bias>
         if (pass.holdPushes && c.keepsPushes) {
             Wide pushes[2];
             for (int i = 0; i < 2; ++i)
-                pushes[i] = bias[i] < 0.0 ? -c.points[i].normalMass * massScale[i] * bias[i] : zero;
+                pushes[i] = bias[i] < 0.0 ? c.points[i].negNormalMass * massScale[i] * bias[i] : zero;
             updateHeldPushes(c, cold, pass, pushes, started);
         }
     }
-    if (any(started[0] | started[1])) {
+    if (any<V>(started[0] | started[1])) {
         Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
         for (int i = 0; i < 2; ++i)
             push[i] = (started[i] & (bias[i] < 0.0))
-                          ? clamp(-c.points[i].normalMass * massScale[i] * bias[i], zero, deltas[i])
+                          ? clamp(c.points[i].negNormalMass * massScale[i] * bias[i], zero, deltas[i])
                           : zero;
         for (int k = 0; k < kLanes; ++k) {
             if (!started[0][k] && !started[1][k]) continue;
@@ -757,7 +757,7 @@ template <bool V, bool Turns, bool Bias>
     if constexpr (!Bias) {
         if (c.friction) {
             const Wide tx = -ny, ty = nx;
-            const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.rtA, c.rtB);
+            const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
             const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
             // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
             // lane's bits do not depend on whether a neighbour's friction made the block run this path.
@@ -767,7 +767,7 @@ template <bool V, bool Turns, bool Bias>
             const WideMask slides = hasMass & (abs(vt + (tangent - c.tangentImpulse) / mass) > pass.slipSpeed);
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
-            applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.rtA, c.rtB);
+            applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.negRtA, c.rtB);
             c.tangentImpulse = tangent;
         }
     }
@@ -887,20 +887,20 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     b.indexB[k] = c.indexB;
     b.nx[k] = c.normal.x();
     b.ny[k] = c.normal.y();
-    b.invMassA[k] = c.invMassA;
+    b.negInvMassA[k] = -c.invMassA;
     b.invIA[k] = c.invIA;
     b.invMassB[k] = c.invMassB;
     b.invIB[k] = c.invIB;
     for (int i = 0; i < 2; ++i) {
         const ContactConstraintPoint& p = c.points[i];
         ContactBlock::Point& q = b.points[i];
-        q.rnA[k] = p.rnA;
+        q.negRnA[k] = -p.rnA;
         q.rnB[k] = p.rnB;
-        q.ndA[k] = p.ndA;
+        q.negNdA[k] = -p.ndA;
         q.ndB[k] = p.ndB;
         q.baseSeparation[k] = p.baseSeparation;
         q.normalImpulse[k] = p.normalImpulse;
-        q.normalMass[k] = p.normalMass;
+        q.negNormalMass[k] = -p.normalMass;
         lane.anchorA[i] = p.anchorA;
         lane.anchorB[i] = p.anchorB;
         lane.relativeVelocity[i] = p.relativeVelocity;
@@ -911,7 +911,7 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     lane.k12 = c.k12;
     lane.k22 = c.k22;
     lane.invDet = c.invDet;
-    b.rtA[k] = c.rtA;
+    b.negRtA[k] = -c.rtA;
     b.rtB[k] = c.rtB;
     b.tangentMass[k] = c.tangentMass;
     b.tangentImpulse[k] = c.tangentImpulse;

@@ -87,13 +87,16 @@ struct ContactConstraint {
 /// it is. A one-point row has a second point with zero mass, which never takes an impulse. Line-aligned: threads
 /// solve neighbouring blocks, and a line holding the ends of two would pass between their cores on every write.
 struct alignas(64) ContactBlock {
+    // A's inverse mass and lever-arm moments, and the points' normal masses, are kept negated (-x, exactly): an
+    // impulse acts on A with the opposite sign, and opposes the approach; the passes' hottest products then need no
+    // negation.
     struct Point {
-        Wide rnA, rnB, ndA, ndB, baseSeparation, normalImpulse, normalMass;
+        Wide negRnA, rnB, negNdA, ndB, baseSeparation, normalImpulse, negNormalMass;
     };
     Wide nx, ny;
-    Wide invMassA, invIA, invMassB, invIB;
+    Wide negInvMassA, invIA, invMassB, invIB;
     Point points[2];
-    Wide rtA, rtB, tangentMass, tangentImpulse;
+    Wide negRtA, rtB, tangentMass, tangentImpulse;
     Wide staticFriction, dynamicFriction, sliding;  // sliding: 1 or 0
     std::int32_t indexA[kLanes], indexB[kLanes];
     std::uint8_t writes = 0;  // the sides the rows can move: bit k lane k's A, bit kLanes + k its B
