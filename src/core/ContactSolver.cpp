@@ -198,13 +198,13 @@ struct alignas(64) BlockInputs {
         sumAy = used ? sumAy + ay : sumAy;
         sumBx = used ? sumBx + bx : sumBx;
         sumBy = used ? sumBy + by : sumBy;
-        for (int lane = 0; lane < kLanes; ++lane) {
-            cold.lanes[lane].anchorA[i] = {ax[lane], ay[lane]};
-            cold.lanes[lane].anchorB[i] = {bx[lane], by[lane]};
-            cold.lanes[lane].relativeVelocity[i] = 0.0;
-            cold.lanes[lane].engaged[i] = false;
-            cold.lanes[lane].push[i] = 0.0;
-        }
+        cold.anchorAx[i] = ax;
+        cold.anchorAy[i] = ay;
+        cold.anchorBx[i] = bx;
+        cold.anchorBy[i] = by;
+        cold.relativeVelocity[i] = zero;
+        cold.push[i] = zero;
+        for (int lane = 0; lane < kLanes; ++lane) cold.lanes[lane].engaged[i] = false;
     }
     // Two points: their 2x2 normal mass matrix, for a bounce of both at once (the passes take one point at a time);
     // invDet 0 where nearly singular (coincident points).
@@ -214,13 +214,10 @@ struct alignas(64) BlockInputs {
     const Wide det = k11 * k22 - k12 * k12;
     const Wide k11Two = two ? k11 : zero, k12Two = two ? k12 : zero, k22Two = two ? k22 : zero;
     const Wide invDet = (two & (k11 * k11 < 1000.0 * det)) ? 1.0 / det : zero;
-    for (int lane = 0; lane < kLanes; ++lane) {
-        ContactBlockCold::Lane& l = cold.lanes[lane];
-        l.k11 = k11Two[lane];
-        l.k12 = k12Two[lane];
-        l.k22 = k22Two[lane];
-        l.invDet = invDet[lane];
-    }
+    cold.k11 = k11Two;
+    cold.k12 = k12Two;
+    cold.k22 = k22Two;
+    cold.invDet = invDet;
     // Friction: one row at the manifold's centre, along the tangent t = perp(n).
     const Wide share = in.pointCount > 0.0 ? 1.0 / in.pointCount : zero;
     const Wide fax = share * sumAx, fay = share * sumAy, fbx = share * sumBx, fby = share * sumBy;
@@ -237,10 +234,8 @@ struct alignas(64) BlockInputs {
     block.dynamicFriction = dynamicFriction;
     block.sliding = in.sliding;
     const Wide restitution = in.restitutionB < in.restitutionA ? in.restitutionB : in.restitutionA;  // std::min
-    for (int lane = 0; lane < kLanes; ++lane) {
-        cold.lanes[lane].restitution = restitution[lane];
-        cold.lanes[lane].normalAcceleration = in.accelerationNormal[lane];
-    }
+    cold.restitution = restitution;
+    cold.normalAcceleration = in.accelerationNormal;
     markBlock(block, cold);
 }
 
@@ -283,7 +278,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
             prepared.turning += turns ? 1 : 0;
         }
         prepareLanes(in, block, cold[j]);
-        for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].lanes[k].restitution > 0.0;
+        for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
     return prepared;
 }
@@ -502,8 +497,8 @@ ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold,
     c.invIA = b.invIA[k];
     c.invMassB = b.invMassB[k];
     c.invIB = b.invIB[k];
-    c.restitution = lane.restitution;
-    c.normalAcceleration = lane.normalAcceleration;
+    c.restitution = cold.restitution[k];
+    c.normalAcceleration = cold.normalAcceleration[k];
     c.turns = b.turns;
     c.keepsPush = lane.keepsPush;
     c.pointCount = lane.pointCount;
@@ -513,14 +508,13 @@ ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold,
         p.rnA = -q.negRnA[k];
         p.rnB = q.rnB[k];
         p.normalImpulse = q.normalImpulse[k];
-        p.relativeVelocity = lane.relativeVelocity[i];
+        p.relativeVelocity = cold.relativeVelocity[i][k];
         p.engaged = lane.engaged[i];
     }
     return c;
 }
 
 void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlockCold& cold, int k) {
-    const ContactBlockCold::Lane& lane = cold.lanes[k];
     c.staticFriction = b.staticFriction[k];
     c.dynamicFriction = b.dynamicFriction[k];
     c.rtA = -b.negRtA[k];
@@ -531,17 +525,17 @@ void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlock
     for (int i = 0; i < 2; ++i) {
         const ContactBlock::Point& q = b.points[i];
         ContactConstraintPoint& p = c.points[i];
-        p.anchorA = lane.anchorA[i];
-        p.anchorB = lane.anchorB[i];
+        p.anchorA = {cold.anchorAx[i][k], cold.anchorAy[i][k]};
+        p.anchorB = {cold.anchorBx[i][k], cold.anchorBy[i][k]};
         p.ndA = -q.negNdA[k];
         p.ndB = q.ndB[k];
         p.baseSeparation = q.baseSeparation[k];
         p.normalMass = -q.negNormalMass[k];
     }
-    c.k11 = cold.lanes[k].k11;
-    c.k12 = cold.lanes[k].k12;
-    c.k22 = cold.lanes[k].k22;
-    c.invDet = cold.lanes[k].invDet;
+    c.k11 = cold.k11[k];
+    c.k12 = cold.k12[k];
+    c.k22 = cold.k22[k];
+    c.invDet = cold.invDet[k];
 }
 
 // Lane k, one of whose points started to push (it had no impulse): the bounce path, on the lane as a scalar row.
@@ -567,7 +561,7 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
             if (start.push[i] > 0.0) {
                 recordPush(pass, c, c.points[i], start.push[i]);
                 if (pass.holdPushes && c.keepsPush) {
-                    cold.lanes[k].push[i] += start.push[i];
+                    cold.push[i][k] += start.push[i];
                     block.holdsPush = true;
                 }
             }
@@ -595,7 +589,7 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
     }
     for (int i = 0; i < count; ++i) {
         block.points[i].normalImpulse[k] = c.points[i].normalImpulse;
-        cold.lanes[k].relativeVelocity[i] = c.points[i].relativeVelocity;
+        cold.relativeVelocity[i][k] = c.points[i].relativeVelocity;
         cold.lanes[k].engaged[i] = c.points[i].engaged;
     }
     return c.points[0].normalImpulse + (count == 2 ? c.points[1].normalImpulse : 0.0);
@@ -606,18 +600,18 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
 // longer on the bodies when another row bounces off them later in this pass, nor in their push record.
 void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* states, const ContactPass& pass) {
     for (int k = 0; k < kLanes; ++k) {
-        ContactBlockCold::Lane& lane = cold.lanes[k];
-        if (lane.push[0] == 0.0 && lane.push[1] == 0.0) continue;
+        if (cold.push[0][k] == 0.0 && cold.push[1][k] == 0.0) continue;
         const ContactConstraint c = rowMotion(block, cold, k);
         MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
         for (int i = 0; i < 2; ++i) {
-            if (lane.push[i] == 0.0) continue;
+            const double held = cold.push[i][k];
+            if (held == 0.0) continue;
             const double impulse = block.points[i].normalImpulse[k];  // clang binds no reference to a lane
-            const double back = std::min(lane.push[i], impulse);
+            const double back = std::min(held, impulse);
             pushNormal(c, A, B, c.points[i], -back);
             block.points[i].normalImpulse[k] = impulse - back;
-            recordPush(pass, c, c.points[i], -lane.push[i]);
-            lane.push[i] = 0.0;
+            recordPush(pass, c, c.points[i], -held);
+            cold.push[i][k] = 0.0;
         }
         storeSide(states, c.indexA, c.invMassA, A);
         storeSide(states, c.indexB, c.invMassB, B);
@@ -630,15 +624,14 @@ void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* stat
 void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const ContactPass& pass, const Wide (&pushes)[2],
                       const WideMask (&started)[2]) {
     for (int k = 0; k < kLanes; ++k) {
-        ContactBlockCold::Lane& lane = cold.lanes[k];
-        if (!lane.keepsPush) continue;
+        if (!cold.lanes[k].keepsPush) continue;
         for (int i = 0; i < 2; ++i) {
             if (started[i][k]) continue;
             const double held = std::min(pushes[i][k], block.points[i].normalImpulse[k]);
-            if (held == lane.push[i]) continue;
+            if (held == cold.push[i][k]) continue;
             const ContactConstraint c = rowMotion(block, cold, k);
-            recordPush(pass, c, c.points[i], held - lane.push[i]);
-            lane.push[i] = held;
+            recordPush(pass, c, c.points[i], held - cold.push[i][k]);
+            cold.push[i][k] = held;
             if (held != 0.0) block.holdsPush = true;
         }
     }
@@ -901,16 +894,18 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
         q.baseSeparation[k] = p.baseSeparation;
         q.normalImpulse[k] = p.normalImpulse;
         q.negNormalMass[k] = -p.normalMass;
-        lane.anchorA[i] = p.anchorA;
-        lane.anchorB[i] = p.anchorB;
-        lane.relativeVelocity[i] = p.relativeVelocity;
+        cold.anchorAx[i][k] = p.anchorA.x();
+        cold.anchorAy[i][k] = p.anchorA.y();
+        cold.anchorBx[i][k] = p.anchorB.x();
+        cold.anchorBy[i][k] = p.anchorB.y();
+        cold.relativeVelocity[i][k] = p.relativeVelocity;
         lane.engaged[i] = p.engaged;
-        lane.push[i] = 0.0;
+        cold.push[i][k] = 0.0;
     }
-    lane.k11 = c.k11;
-    lane.k12 = c.k12;
-    lane.k22 = c.k22;
-    lane.invDet = c.invDet;
+    cold.k11[k] = c.k11;
+    cold.k12[k] = c.k12;
+    cold.k22[k] = c.k22;
+    cold.invDet[k] = c.invDet;
     b.negRtA[k] = -c.rtA;
     b.rtB[k] = c.rtB;
     b.tangentMass[k] = c.tangentMass;
@@ -920,8 +915,8 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
     b.sliding[k] = c.sliding ? 1.0 : 0.0;
     b.turns = b.turns || c.turns;
     lane.keepsPush = c.keepsPush;
-    lane.restitution = c.restitution;
-    lane.normalAcceleration = c.normalAcceleration;
+    cold.restitution[k] = c.restitution;
+    cold.normalAcceleration[k] = c.normalAcceleration;
     lane.contact = c.contact;
     lane.pointCount = c.pointCount;
     markBlock(b, cold);

@@ -107,18 +107,19 @@ struct alignas(64) ContactBlock {
 };
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
-/// stream less memory). Line-aligned, like the blocks.
+/// stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
+/// vector store each, where a lane at a time took an extraction and a store per value). Line-aligned, like the blocks.
 struct alignas(64) ContactBlockCold {
+    Wide anchorAx[2], anchorAy[2], anchorBx[2], anchorBy[2];  // per point: lever arms from the centres of mass, m
+    Wide k11, k12, k22, invDet;  // ContactConstraint's (a bounce of both points at once)
+    Wide restitution, normalAcceleration;
+    Wide relativeVelocity[2];  // per point
+    Wide push[2];  // per point: N s of this substep's solve-pass push-out it holds, still in its bodies' record
     struct Lane {
         std::uint32_t contact = 0;
         int pointCount = 0;
-        double restitution = 0.0, normalAcceleration = 0.0;
-        Vec2 anchorA[2], anchorB[2];
-        double relativeVelocity[2];
-        double push[2];  // N s of this substep's solve-pass push-out a point holds, still in its bodies' record
-        double k11, k12, k22, invDet;  // ContactConstraint's (a bounce of both points at once)
-        bool engaged[2];
-        bool keepsPush;  // the row's ContactConstraint::keepsPush
+        bool engaged[2] = {false, false};
+        bool keepsPush = false;  // the row's ContactConstraint::keepsPush
     } lanes[kLanes];
 };
 

@@ -36,12 +36,17 @@ constexpr std::size_t kPrefetchBodies = 4;
 constexpr std::size_t kGroupBodies = 256;
 
 // The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
-int impactPoint(const ContactBlockCold::Lane& row, double threshold) {
+int impactPoint(const ContactBlockCold& cold, int lane, double threshold) {
+    const ContactBlockCold::Lane& row = cold.lanes[lane];
     int fastest = -1;
-    for (int p = 0; p < row.pointCount; ++p)
-        if (row.engaged[p] && -row.relativeVelocity[p] > threshold &&
-            (fastest < 0 || row.relativeVelocity[p] < row.relativeVelocity[fastest]))
+    double fastestSpeed = 0.0;
+    for (int p = 0; p < row.pointCount; ++p) {
+        const double speed = cold.relativeVelocity[p][lane];
+        if (row.engaged[p] && -speed > threshold && (fastest < 0 || speed < fastestSpeed)) {
             fastest = p;
+            fastestSpeed = speed;
+        }
+    }
     return fastest;
 }
 
@@ -458,11 +463,12 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     auto storeBlocks = [&](std::size_t begin, std::size_t end) {
         for (std::size_t b = begin; b < end; ++b)
             for (std::uint32_t lane = 0; lane < blockRows[b].count; ++lane) {
-                const ContactBlockCold::Lane& row = coldAt(b)->lanes[lane];
-                storeImpulses(*blockAt(b), *coldAt(b), static_cast<int>(lane), contacts[row.contact]);
-                const int point = impactPoint(row, impactSpeed);
+                const ContactBlockCold& cold = *coldAt(b);
+                const int k = static_cast<int>(lane);
+                storeImpulses(*blockAt(b), cold, k, contacts[cold.lanes[k].contact]);
+                const int point = impactPoint(cold, k, impactSpeed);
                 rowImpact[b * kLanes + lane] = static_cast<std::int8_t>(point);
-                if (point >= 0) rowImpactSpeed[b * kLanes + lane] = -row.relativeVelocity[point];
+                if (point >= 0) rowImpactSpeed[b * kLanes + lane] = -cold.relativeVelocity[point][k];
             }
     };
     const bool storeInRelax = settings.relaxIterations > 0;
