@@ -43,34 +43,22 @@ inline double normalSpeed(const ContactConstraint& c, const MotionSide& A, const
 
 namespace {
 
-// What a row needs of one of its bodies for a step.
-struct RowBody {
-    RowSide side;
-    Vec2 center = Vec2::Zero();        // centre of mass, m
-    Vec2 acceleration = Vec2::Zero();  // m/s^2 from gravity and forces; 0 unless it moves
-    double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
-};
-
-// From the solver's copy of an awake body (index >= 0) or, for a static or sleeping one, from its record.
-// Inlined into the preparation, so the fields go to registers, not through memory.
-[[gnu::always_inline]] inline RowBody rowBody(std::int32_t index, const SolverBodySim* sims, const BodyData& record) {
-    RowBody out;
-    if (index == kNullIndex) {  // static or asleep: immovable, no acceleration
-        out.side = rowSide(record);
-        out.center = record.center;
-        out.restitution = record.restitution;
-        out.staticFriction = record.staticFriction;
-        out.dynamicFriction = record.dynamicFriction;
-        return out;
-    }
-    const SolverBodySim& s = sims[index];
-    out.side = {index, s.dynamic, s.turns, s.invMass, s.invInertia};  // rowSide(record), as at the step's start
-    out.center = s.center0;
-    out.acceleration = s.acceleration;
-    out.restitution = s.restitution;
-    out.staticFriction = s.staticFriction;
-    out.dynamicFriction = s.dynamicFriction;
-    return out;
+// What preparation reads of a side: the solver's copy of an awake body (index >= 0), or, for a static or sleeping
+// one, `still` filled from its record in the same shape: immovable (rowSide), no acceleration.
+[[gnu::always_inline]] inline const SolverBodySim* rowBody(std::int32_t index, const SolverBodySim* sims,
+                                                           const BodyData& record, SolverBodySim& still) {
+    if (index != kNullIndex) return &sims[index];
+    const RowSide side = rowSide(record);
+    still.dynamic = side.moves;
+    still.turns = side.turns;
+    still.invMass = side.invMass;
+    still.invInertia = side.invI;
+    still.center0 = record.center;
+    still.acceleration = Vec2::Zero();
+    still.restitution = record.restitution;
+    still.staticFriction = record.staticFriction;
+    still.dynamicFriction = record.dynamicFriction;
+    return &still;
 }
 
 // The rules every lane of a block keeps, and the block's marks, from its lanes' fields: a point past its row's
@@ -115,45 +103,55 @@ struct alignas(64) BlockInputs {
     Wide pointCount, sliding;
 };
 
-// Gathers lane k's contact and bodies (the scalar part of preparation) and writes what needs no arithmetic.
-[[gnu::always_inline]] inline bool gatherLane(BlockInputs& in, ContactBlock& block, ContactBlockCold& cold, int k,
-                                              const RowRef& ref, const ContactData& contact, const RowBody& A,
-                                              const RowBody& B) {
-    const Manifold& m = contact.manifold;
-    block.indexA[k] = A.side.index;
-    block.indexB[k] = B.side.index;
-    in.nx[k] = m.normal.x();
-    in.ny[k] = m.normal.y();
-    in.centerAx[k] = A.center.x();
-    in.centerAy[k] = A.center.y();
-    in.centerBx[k] = B.center.x();
-    in.centerBy[k] = B.center.y();
-    in.accelerationNormal[k] = m.normal.dot(B.acceleration - A.acceleration);
-    in.invMassA[k] = A.side.invMass;
-    in.invIA[k] = A.side.invI;
-    in.invMassB[k] = B.side.invMass;
-    in.invIB[k] = B.side.invI;
-    in.restitutionA[k] = A.restitution;
-    in.restitutionB[k] = B.restitution;
-    in.staticFrictionA[k] = A.staticFriction;
-    in.staticFrictionB[k] = B.staticFriction;
-    in.dynamicFrictionA[k] = A.dynamicFriction;
-    in.dynamicFrictionB[k] = B.dynamicFriction;
+// A field of the four lanes, from lane k's value f(k), each read from its record straight into the vector.
+template <class Field>
+[[gnu::always_inline]] inline Wide lanesOf(const Field& f) {
+    return Wide{f(0), f(1), f(2), f(3)};
+}
+
+// Gathers a block's contacts and their sides (the scalar part of preparation) field by field, and writes what needs
+// no arithmetic. Lane k's contact is contact[k], its sides A[k] and B[k]. Returns the lanes whose bodies turn.
+[[gnu::always_inline]] inline int gatherLanes(BlockInputs& in, ContactBlock& block, ContactBlockCold& cold,
+                                              const ContactData* const (&contact)[kLanes],
+                                              const SolverBodySim* const (&A)[kLanes],
+                                              const SolverBodySim* const (&B)[kLanes]) {
+    auto manifold = [&](int k) -> const Manifold& { return contact[k]->manifold; };
+    in.nx = lanesOf([&](int k) { return manifold(k).normal.x(); });
+    in.ny = lanesOf([&](int k) { return manifold(k).normal.y(); });
+    in.centerAx = lanesOf([&](int k) { return A[k]->center0.x(); });
+    in.centerAy = lanesOf([&](int k) { return A[k]->center0.y(); });
+    in.centerBx = lanesOf([&](int k) { return B[k]->center0.x(); });
+    in.centerBy = lanesOf([&](int k) { return B[k]->center0.y(); });
+    in.accelerationNormal =
+        lanesOf([&](int k) { return manifold(k).normal.dot(B[k]->acceleration - A[k]->acceleration); });
+    in.invMassA = lanesOf([&](int k) { return A[k]->invMass; });
+    in.invIA = lanesOf([&](int k) { return A[k]->invInertia; });
+    in.invMassB = lanesOf([&](int k) { return B[k]->invMass; });
+    in.invIB = lanesOf([&](int k) { return B[k]->invInertia; });
+    in.restitutionA = lanesOf([&](int k) { return A[k]->restitution; });
+    in.restitutionB = lanesOf([&](int k) { return B[k]->restitution; });
+    in.staticFrictionA = lanesOf([&](int k) { return A[k]->staticFriction; });
+    in.staticFrictionB = lanesOf([&](int k) { return B[k]->staticFriction; });
+    in.dynamicFrictionA = lanesOf([&](int k) { return A[k]->dynamicFriction; });
+    in.dynamicFrictionB = lanesOf([&](int k) { return B[k]->dynamicFriction; });
     for (int i = 0; i < 2; ++i) {  // an unused point's values are stale: prepareLanes and markBlock keep them out
-        const ContactPoint& mp = m.points[i];
-        in.pointX[i][k] = mp.point.x();
-        in.pointY[i][k] = mp.point.y();
-        in.separation[i][k] = mp.separation;
-        in.normalImpulse[i][k] = mp.normalImpulse;
-        in.tangentImpulse[i][k] = mp.tangentImpulse;
+        in.pointX[i] = lanesOf([&](int k) { return manifold(k).points[i].point.x(); });
+        in.pointY[i] = lanesOf([&](int k) { return manifold(k).points[i].point.y(); });
+        in.separation[i] = lanesOf([&](int k) { return manifold(k).points[i].separation; });
+        in.normalImpulse[i] = lanesOf([&](int k) { return manifold(k).points[i].normalImpulse; });
+        in.tangentImpulse[i] = lanesOf([&](int k) { return manifold(k).points[i].tangentImpulse; });
     }
-    in.pointCount[k] = m.pointCount;
-    in.sliding[k] = contact.sliding ? 1.0 : 0.0;
-    ContactBlockCold::Lane& lane = cold.lanes[k];
-    lane.contact = ref.contact;
-    lane.pointCount = m.pointCount;
-    lane.keepsPush = A.restitution > 0.0 || B.restitution > 0.0;
-    return A.side.turns || B.side.turns;
+    in.pointCount = lanesOf([&](int k) { return static_cast<double>(manifold(k).pointCount); });
+    in.sliding = lanesOf([&](int k) { return contact[k]->sliding ? 1.0 : 0.0; });
+    int turning = 0;
+    for (int k = 0; k < kLanes; ++k) {
+        ContactBlockCold::Lane& lane = cold.lanes[k];
+        lane.pointCount = manifold(k).pointCount;
+        lane.keepsPush = A[k]->restitution > 0.0 || B[k]->restitution > 0.0;
+        turning += A[k]->turns || B[k]->turns ? 1 : 0;
+    }
+    block.turns = turning > 0;
+    return turning;
 }
 
 // A row's inverse effective mass along a direction at moments ra, rb (lever arm x direction), lane by lane:
@@ -239,8 +237,9 @@ struct alignas(64) BlockInputs {
     markBlock(block, cold);
 }
 
-// What an empty lane is prepared from: no points, no bodies.
+// What an empty lane is prepared from: no points, no bodies (immovable sides that do not turn).
 const ContactData kEmptyContact{};
+const SolverBodySim kNoBody{};
 
 // Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
 constexpr std::size_t kPrefetchBlocks = 2;
@@ -253,6 +252,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
                                                        const ContactData* contacts, const SolverBodySim* sims,
                                                        const BodyData* bodies) {
     PreparedRows prepared;
+    SolverBodySim still[2][kLanes];  // the lanes' static or sleeping sides, A and B (rowBody)
     for (std::size_t j = 0; j < count; ++j) {
         // Rows visit contacts in colour order, which no hardware prefetcher follows, and a large scene's contacts
         // are no longer in the cache by now: ask for the part preparation reads, a few blocks ahead.
@@ -261,22 +261,30 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
                 prefetchLines(&contacts[refs[rows[j + kPrefetchBlocks].first + r].contact],
                               offsetof(ContactData, cache));
         ContactBlock& block = blocks[j];
-        BlockInputs in;  // every lane written below (zeroing the whole at once took a quarter of the time)
-        block.turns = block.holdsPush = false;
+        block.holdsPush = false;
         const int lanes = static_cast<int>(rows[j].count);
+        const ContactData* contact[kLanes];
+        const SolverBodySim *A[kLanes], *B[kLanes];
         for (int k = 0; k < kLanes; ++k) {
             if (k >= lanes) {  // an empty row: no bodies, no points
-                gatherLane(in, block, cold[j], k, RowRef{}, kEmptyContact, RowBody{}, RowBody{});
+                contact[k] = &kEmptyContact;
+                A[k] = B[k] = &kNoBody;
+                block.indexA[k] = block.indexB[k] = kNullIndex;
+                cold[j].lanes[k].contact = 0;
                 continue;
             }
             const RowRef& ref = refs[rows[j].first + static_cast<std::uint32_t>(k)];
-            const ContactData& contact = contacts[ref.contact];
-            const bool turns = gatherLane(in, block, cold[j], k, ref, contact,
-                                          rowBody(ref.indexA, sims, bodies[contact.a]),
-                                          rowBody(ref.indexB, sims, bodies[contact.b]));
-            block.turns = block.turns || turns;
-            prepared.turning += turns ? 1 : 0;
+            const ContactData& c = contacts[ref.contact];
+            const BodyData &a = bodies[c.a], &b = bodies[c.b];
+            contact[k] = &c;
+            A[k] = rowBody(ref.indexA, sims, a, still[0][k]);
+            B[k] = rowBody(ref.indexB, sims, b, still[1][k]);
+            block.indexA[k] = ref.indexA != kNullIndex ? ref.indexA : a.awakeIndex;  // rowSide's index
+            block.indexB[k] = ref.indexB != kNullIndex ? ref.indexB : b.awakeIndex;
+            cold[j].lanes[k].contact = ref.contact;
         }
+        BlockInputs in;  // every field written by gatherLanes
+        prepared.turning += static_cast<std::size_t>(gatherLanes(in, block, cold[j], contact, A, B));
         prepareLanes(in, block, cold[j]);
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
