@@ -1,6 +1,7 @@
 // Persistent contacts: created from the broad phase's new pairs, updated once per step by the narrow phase,
 // destroyed when their bodies' enlarged boxes part (or the pair is deferred: see `deferred`).
 
+#include "Contacts.hpp"
 #include "Manifolds.hpp"
 #include "Prefetch.hpp"
 #include "Slots.hpp"
@@ -14,7 +15,6 @@
 namespace physim {
 namespace {
 
-enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4, kDeferred = 8 };
 
 // At least one body must be able to respond; two immovable bodies never make a contact.
 bool shouldCollide(const BodyData& a, const BodyData& b) {
@@ -23,7 +23,7 @@ bool shouldCollide(const BodyData& a, const BodyData& b) {
 
 // How far (m) the pair can close in a step at its present velocities, plus what gravity or forces add: the
 // manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact.
-double reach(const BodyData& A, const BodyData& B, double dt) {
+[[gnu::always_inline]] inline double reach(const BodyData& A, const BodyData& B, double dt) {
     const double turn = std::abs(A.w) * A.extent + std::abs(B.w) * B.extent;
     return ((B.v - A.v).norm() + turn) * dt;
 }
@@ -34,7 +34,7 @@ double reach(const BodyData& A, const BodyData& B, double dt) {
 // only stop bodies that pass each other. A continuous body's enlarged box covers its whole sweep, so in a crowd
 // most pairs are such. Should a velocity change in the step make them meet after all, the Continuous stage
 // stops the continuous body at the impact. Discrete pairs keep their points: nothing else would catch them.
-bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
+[[gnu::always_inline]] inline bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
     if (A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete) return true;
     // The centre's straight path over the step (the turn does not matter to a circle about the centre).
     auto path = [dt](const BodyData& b) {
@@ -44,19 +44,21 @@ bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
     return !kernel::boundsStayApart(path(A), A.extent, path(B), B.extent, gap);
 }
 
-bool moving(const BodyData& b) { return b.awake() && (b.v.squaredNorm() > 0.0 || b.w != 0.0); }
+[[gnu::always_inline]] inline bool moving(const BodyData& b) {
+    return b.awake() && (b.v.squaredNorm() > 0.0 || b.w != 0.0);
+}
 
 // A pair that needs no points while one of its bodies moves has no contact record: the broad phase offers it
 // again next step (BroadPhase::requery), so it gets one the step it may meet. In a crowd of bullets, whose
 // enlarged boxes overlap nearly all others, this keeps the contacts to the pairs that can touch. A pair at rest
 // keeps its (empty) record instead of being asked every step.
-bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
+[[gnu::always_inline]] inline bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
     return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
 // How far (m) any point of B can have moved in A's frame since the cache was made: the shift of B's centre plus
 // the turn times B's extent.
-double motionSinceCache(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
+[[gnu::always_inline]] inline double motionSinceCache(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
     const Vec2 offset = A.xf.q.applyInverse(B.center - A.center);
     return (offset - k.offset).norm() + std::abs(B.angle - A.angle - k.angle) * B.extent;
 }
@@ -78,7 +80,7 @@ void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData
 
 // The manifold at the present poses from the cache: each surface point moves with its body, the separation is
 // their distance along the normal, which turns with A.
-void rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B, Manifold& m) {
+[[gnu::always_inline]] inline void rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B, Manifold& m) {
     m.normal = A.xf.q.apply(k.normal);
     m.pointCount = k.pointCount;
     for (int p = 0; p < k.pointCount; ++p) {
@@ -95,8 +97,8 @@ void rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B, Manif
 // collided again only when B has moved more than `tolerance` (m) in A's frame since the last collision, or when
 // the margin grew past what that collision covered; they are collided with 2 tolerances to spare, so a pair at
 // rest keeps its cache though its closing speed, and so its margin, jitters.
-void collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance,
-                    Manifold& m) {
+[[gnu::always_inline]] inline void collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B,
+                                                  double margin, double tolerance, Manifold& m) {
     if (k.margin >= 0.0) {
         const double motion = motionSinceCache(k, A, B);
         if (motion <= tolerance && margin + motion <= k.margin) return rebuild(k, A, B, m);
@@ -115,8 +117,8 @@ void collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B, doub
 
 // The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
 // only where the pair closes on it fast enough to touch this step. Returns whether the pair touches.
-bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B, double speculative, double tolerance,
-                     double dt) {
+[[gnu::always_inline]] inline bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B,
+                                                   double speculative, double tolerance, double dt) {
     Manifold& m = c.manifold;
     if (!needsPoints(A, B, speculative, dt)) {
         m.pointCount = 0;
@@ -152,7 +154,57 @@ bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B, doubl
     return touching;
 }
 
+// The narrow phase's loop over awake contacts [begin, end), built twice (refreshContacts picks): for baseline
+// x86-64, and for AVX2 without FMA, whose three-operand VEX forms spare the copies SSE2's two-operand forms need.
+// With no fused multiply-add in either build, each operation is the same IEEE one: the same bits.
+[[gnu::always_inline]] inline void refreshLoop(const RefreshPass& p, std::size_t begin, std::size_t end) {
+    // A large scene's contacts and bodies are no longer in the cache, and the contacts name their bodies in no order
+    // a hardware prefetcher follows: ask for a contact's record twice as far ahead as its bodies' records. A small
+    // scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
+    constexpr std::size_t kAhead = 4;
+    for (std::size_t i = begin; i < end; ++i) {
+        if (p.prefetch && i + 2 * kAhead < end)
+            prefetchLines(&p.contacts[p.awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
+        if (p.prefetch && i + kAhead < end) {
+            const ContactData& ahead = p.contacts[p.awakeContacts[i + kAhead]];
+            prefetchLines(&p.bodies[ahead.a], sizeof(BodyData));
+            prefetchLines(&p.bodies[ahead.b], sizeof(BodyData));
+        }
+        ContactData& c = p.contacts[p.awakeContacts[i]];
+        const BodyData& A = p.bodies[c.a];
+        const BodyData& B = p.bodies[c.b];
+        if (!p.overlapsKnown && !p.broadPhase->fatBox(A.proxy).overlaps(p.broadPhase->fatBox(B.proxy))) {
+            p.flags[i] = kParted;
+            continue;
+        }
+        if (deferred(A, B, p.speculative, p.dt)) {
+            p.flags[i] = kDeferred;
+            continue;
+        }
+        const bool hadPoints = c.manifold.pointCount > 0;
+        const bool touching = refreshManifold(c, A, B, p.speculative, p.tolerance, p.dt);
+        if (hadPoints != (c.manifold.pointCount > 0)) p.pointsChanged->store(true, std::memory_order_relaxed);
+        if (touching != c.touching) p.flags[i] = touching ? kBegan : kEnded;
+        c.touching = touching;
+    }
+}
+
+void refreshBaseline(const RefreshPass& p, std::size_t begin, std::size_t end) { refreshLoop(p, begin, end); }
+#if PHYSIM_HAS_AVX2_CODE
+__attribute__((target("avx2"))) void refreshAvx2(const RefreshPass& p, std::size_t begin, std::size_t end) {
+    refreshLoop(p, begin, end);
+}
+#endif
+
 }  // namespace
+
+void refreshContacts(const RefreshPass& pass, std::size_t begin, std::size_t end, WideCode code) {
+#if PHYSIM_HAS_AVX2_CODE
+    if (code == WideCode::Avx2 || code == WideCode::Avx512 || (code == WideCode::Best && avx2CodeRuns()))
+        return refreshAvx2(pass, begin, end);
+#endif
+    refreshBaseline(pass, begin, end);
+}
 
 bool WorldImpl::contactExists(std::uint32_t a, std::uint32_t b) const {
     return contactPairs.contains(PairSet::key(a, b));
@@ -242,44 +294,17 @@ void WorldImpl::updateContacts() {
     const double reuseTolerance = 0.1 * settings.linearSlop;
     const std::size_t n = awakeContacts.size();
     contactFlags.assign(n, kNone);
-    // A large scene's contacts and bodies are no longer in the cache, and the contacts name their bodies in no order
-    // a hardware prefetcher follows: ask for a contact's record twice as far ahead as its bodies' records. A small
-    // scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
-    constexpr std::size_t kAhead = 4, kPrefetchFromContacts = 8192;
-    const bool prefetch = n >= kPrefetchFromContacts;
     std::atomic<bool> pointsChanged{false};  // a contact gained its first point or lost its last: it has a row or not
     // No box and no awake contact changed since the last narrow phase, which found every awake contact's proxies
     // overlapping (else it destroyed the contact): they still overlap, and the test would only miss the cache.
     const bool overlapsKnown = !awakeContactsChanged && broadPhase.boxRevision() == checkedBoxRevision;
     awakeContactsChanged = false;
     checkedBoxRevision = broadPhase.boxRevision();
-    executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t i = begin; i < end; ++i) {
-            if (prefetch && i + 2 * kAhead < end)
-                prefetchLines(&contacts[awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
-            if (prefetch && i + kAhead < end) {
-                const ContactData& ahead = contacts[awakeContacts[i + kAhead]];
-                prefetchLines(&bodies[ahead.a], sizeof(BodyData));
-                prefetchLines(&bodies[ahead.b], sizeof(BodyData));
-            }
-            ContactData& c = contacts[awakeContacts[i]];
-            const BodyData& A = bodies[c.a];
-            const BodyData& B = bodies[c.b];
-            if (!overlapsKnown && !broadPhase.fatBox(A.proxy).overlaps(broadPhase.fatBox(B.proxy))) {
-                contactFlags[i] = kParted;
-                continue;
-            }
-            if (deferred(A, B, speculative, dt)) {
-                contactFlags[i] = kDeferred;
-                continue;
-            }
-            const bool hadPoints = c.manifold.pointCount > 0;
-            const bool touching = refreshManifold(c, A, B, speculative, reuseTolerance, dt);
-            if (hadPoints != (c.manifold.pointCount > 0)) pointsChanged.store(true, std::memory_order_relaxed);
-            if (touching != c.touching) contactFlags[i] = touching ? kBegan : kEnded;
-            c.touching = touching;
-        }
-    });
+    constexpr std::size_t kPrefetchFromContacts = 8192;
+    const RefreshPass pass{contacts.data(), awakeContacts.data(), bodies.data(), &broadPhase, contactFlags.data(),
+                           speculative, reuseTolerance, dt, overlapsKnown, n >= kPrefetchFromContacts,
+                           &pointsChanged};
+    executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) { refreshContacts(pass, begin, end); });
 
     if (pointsChanged.load()) rowsStale = true;
 
