@@ -449,7 +449,8 @@ void recordPush(const ContactPass& pass, const ContactConstraint& c, const Conta
 }
 
 // B's speed relative to A along (dx, dy) at lever-arm moments -negArmA, armB (A's kept negated, as in the block),
-// and an impulse d along it (B +, A -): the rule every pass applies, in the lanes. Turns false leaves the angular terms out (no body of the block turns).
+// and an impulse d along it (B +, A -): the rule every pass applies, in the lanes. Turns false leaves the angular
+// terms out (no body of the block turns).
 // V: the build runs mulAdd as one instruction (the AVX builds; the bits are the same either way). Both are written
 // for few operations and a short dependency chain: the speed sums its linear and angular parts apart, and the
 // impulse's factors that do not wait for d (mass times direction) are multiplied first, so d reaches a velocity in

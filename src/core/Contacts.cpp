@@ -15,7 +15,6 @@
 namespace physim {
 namespace {
 
-
 // At least one body must be able to respond; two immovable bodies never make a contact.
 bool shouldCollide(const BodyData& a, const BodyData& b) {
     return a.type == BodyType::Dynamic || b.type == BodyType::Dynamic;
