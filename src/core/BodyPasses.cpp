@@ -25,13 +25,13 @@ namespace {
         WideSide g = gather<true>(index, states);
         const Wide turn = h * g.w;
         const WideMask turning = g.w != 0.0;
-        if (any<false>(turning & ~(abs(turn) <= 0.2))) {
+        if (any(turning & ~(abs(turn) <= 0.2))) {
             for (int lane = 0; lane < kLanes; ++lane) integrateOne(states[index[lane]], h);
             continue;
         }
         g.dpx = g.dpx + h * g.vx;
         g.dpy = g.dpy + h * g.vy;
-        if (any<false>(turning)) {
+        if (any(turning)) {
             Wide c, s, qc, qs;
             rotationSeries(turn, c, s);
             composeParts(c, s, g.qc, g.qs, qc, qs);

@@ -87,7 +87,7 @@ namespace {
     }
     const WideMask rubs = (b.staticFriction > 0.0) | (b.dynamicFriction > 0.0);
     b.tangentImpulse = rubs ? b.tangentImpulse : zero;
-    b.friction = any<false>(rubs);
+    b.friction = any(rubs);
     b.keepsPushes = keepsPushes;
     b.writes = static_cast<std::uint8_t>(writes);
 }
@@ -731,7 +731,7 @@ template <bool V, bool Turns, bool Bias>
             updateHeldPushes(c, cold, pass, pushes, started);
         }
     }
-    if (any<V>(started[0] | started[1])) {
+    if (any(started[0] | started[1])) {
         Wide push[2];  // of a starting point's impulse, what pushes an overlap apart (bias < 0)
         for (int i = 0; i < 2; ++i)
             push[i] = (started[i] & (bias[i] < 0.0))

@@ -96,19 +96,6 @@ template <bool Vector>
                 __builtin_fma(a[3], b[3], c[3])};
 }
 
-/// Whether some lane of a comparison's mask is true. Vector (GCC's AVX builds) takes the lanes' sign bits in one
-/// instruction (VEX-encoded: the operand is kept in the first 16 registers), where GCC extracted and or-ed the four
-/// lanes. Clang rejects a four-lane operand for that constraint and or-s the lanes.
-template <bool Vector>
-[[gnu::always_inline]] inline bool any(WideMask m) {
-#if PHYSIM_HAS_AVX2_CODE && !defined(__clang__)
-    if constexpr (Vector) {
-        int signs;
-        asm("vmovmskpd %1, %0" : "=r"(signs) : "x"(m));
-        return signs != 0;
-    }
-#endif
-    return (m[0] | m[1] | m[2] | m[3]) != 0;
-}
+[[gnu::always_inline]] inline bool any(WideMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
 }  // namespace physim
