@@ -224,7 +224,8 @@ def family_effect(points, family, order):
     if max(errors) <= 1.1 * min(errors):
         return f"{family}: no effect (error within 10 % over {fam[0]['setting']} to {fam[-1]['setting']})"
     for i, p in enumerate(fam[:-1]):
-        if min(errors[i + 1:]) > 0.9 * p["error"]:
+        # An error at rounding (a bullet count of 0, say) has nothing left to cut.
+        if p["error"] < 1e-12 or min(errors[i + 1:]) > 0.9 * p["error"]:
             best = min(fam, key=lambda q: q["error"])
             return (f"{family}: stops paying past {p['setting']} (error {p['error']:.3g}; best in the family "
                     f"{best['error']:.3g} at {best['setting']})")
