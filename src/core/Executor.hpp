@@ -64,6 +64,23 @@ public:
         });
     }
 
+    /// Whether forLoopsInOrder runs its two shares on two threads: inside run(), on a team of two, outside a loop.
+    /// Elsewhere the caller does better with parallelFor per loop (more threads) or it makes no difference (one).
+    bool ordersLoops() const { return inRun_ && team_ && team_->ordersLoops(); }
+
+    /// fn(loop, share, head) for every part of `loops` loops of two shares (Team::forLoopsInOrder): on run()'s
+    /// team of two side by side, elsewhere one after another.
+    template <class Fn>
+    void forLoopsInOrder(std::size_t loops, Fn&& fn) {
+        if (inRun_ && team_) {
+            team_->forLoopsInOrder(loops, fn);
+            return;
+        }
+        for (std::size_t loop = 0; loop < loops; ++loop)
+            for (const int share : {0, 1})
+                for (const bool head : {true, false}) fn(loop, share, head);
+    }
+
     /// Runs fn() on the calling thread with the arena's other threads standing by as a Team for the loops fn
     /// starts with parallelFor: the solver's many short loops (a few per colour per substep) then cost a
     /// handful of atomic operations each instead of a task launch and a join.

@@ -11,6 +11,7 @@
 #include "WorldImpl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -259,6 +260,8 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSo
             contactBlocks.resize(size);  // each group fills its own (solveGroup), every lane of them
             contactCold.resize(size);
         }
+        if (executor.threads() == 2) markShareHeads();
+        else shareHeads.clear();
         rowImpact.resize(blockRows.size() * kLanes);  // each group sets its rows' lanes
         rowImpactSpeed.resize(blockRows.size() * kLanes);
         // Joint rows sorted by group, each group's in the joints' order.
@@ -273,12 +276,55 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSo
         for (const JointConstraint& row : jointConstraints) groupedJoints[segmentFill[groupOfJoint(row)]++] = row;
         jointConstraints.swap(groupedJoints);
     } else {
+        shareHeads.clear();
         segmentStart.assign(groups * kSegments + 1, 0);
         blockStart.assign(groups * kSegments + 1, 0);
         groupJointStart.assign(groups + 1, 0);
     }
 
     return rowCount;
+}
+
+// Two threads take each colour's blocks in halves, split at the middle (Team::forLoopsInOrder). A block that touches
+// a body the other half also touches, in any colour, must run before the other half's next colour: those blocks
+// are the half's head, [cut, mid) of the first half and [mid, cut) of the second, and run first; the rest touch
+// bodies that only their own thread touches in the pass. The blocks lie in about their bodies' order, so the heads
+// are the few blocks on either side of the middle.
+void WorldImpl::markShareHeads() {
+    const std::size_t groups = groupBodyStart.size() - 1;
+    shareHeads.assign(groups * kColours * 2, 0);
+    bodyShares.assign(awake.size(), 0);
+    auto forBodies = [&](std::size_t b, auto&& f) {
+        for (std::uint32_t r = blockRows[b].first; r < blockRows[b].first + blockRows[b].count; ++r) {
+            if (rowContacts[r].indexA != kNullIndex) f(static_cast<std::size_t>(rowContacts[r].indexA));
+            if (rowContacts[r].indexB != kNullIndex) f(static_cast<std::size_t>(rowContacts[r].indexB));
+        }
+    };
+    auto forHalves = [&](auto&& f) {  // f(group, colour, first, mid, end) for every colour of every group
+        for (std::size_t g = 0; g < groups; ++g)
+            for (std::size_t col = 0; col < kColours; ++col) {
+                const std::size_t first = blockStart[g * kSegments + col], end = blockStart[g * kSegments + col + 1];
+                f(g, col, first, first + (end - first) / 2, end);
+            }
+    };
+    forHalves([&](std::size_t, std::size_t, std::size_t first, std::size_t mid, std::size_t end) {
+        for (std::size_t b = first; b < end; ++b)
+            forBodies(b, [&](std::size_t i) { bodyShares[i] |= b < mid ? 1 : 2; });
+    });
+    auto touchesBoth = [&](std::size_t b) {
+        bool both = false;
+        forBodies(b, [&](std::size_t i) { both = both || bodyShares[i] == 3; });
+        return both;
+    };
+    forHalves([&](std::size_t g, std::size_t col, std::size_t first, std::size_t mid, std::size_t end) {
+        std::size_t low = mid, high = mid;
+        for (std::size_t b = first; b < mid && low == mid; ++b)
+            if (touchesBoth(b)) low = b;
+        for (std::size_t b = end; b > mid && high == mid; --b)
+            if (touchesBoth(b - 1)) high = b;
+        shareHeads[(g * kColours + col) * 2] = static_cast<std::uint32_t>(low);
+        shareHeads[(g * kColours + col) * 2 + 1] = static_cast<std::uint32_t>(high);
+    });
 }
 
 // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all of its
@@ -439,14 +485,31 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     };
     // One pass over the group's rows: joints, then colour by colour (in parallel within a colour), then the
     // overflow. rowsWork(begin, end) over blocks; jointWork(row, joint) for each joint.
+    // On a team of two the colours run as one sequence (Executor::forLoopsInOrder): each thread takes its half of
+    // every colour, and waits only for the blocks of the other half that touch its bodies (markShareHeads).
+    std::array<std::uint8_t, kColours> colours{};  // the group's colours that hold rows
+    std::size_t colourCount = 0;
+    for (std::size_t col = 0; col < kColours; ++col)
+        if (segments[col + 1] > segments[col]) colours[colourCount++] = static_cast<std::uint8_t>(col);
+    const bool ordered = executor.ordersLoops() && !shareHeads.empty();
     auto pass = [&](auto&& rowsWork, auto&& jointWork) {
         for (std::uint32_t j = groupJointStart[g]; j < groupJointStart[g + 1]; ++j)
             jointWork(jointConstraints[j], joints[jointConstraints[j].joint]);
-        for (std::size_t col = 0; col < kColours; ++col) {
-            const std::size_t first = segments[col], count = segments[col + 1] - first;
-            executor.parallelFor(count, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
-                rowsWork(first + begin, first + end);
+        if (ordered) {
+            executor.forLoopsInOrder(colourCount, [&](std::size_t loop, int share, bool head) {
+                const std::size_t col = colours[loop], first = segments[col], end = segments[col + 1];
+                const std::size_t mid = first + (end - first) / 2, cut = shareHeads[(g * kColours + col) * 2 + share];
+                const std::size_t begin = share == 0 ? (head ? cut : first) : (head ? mid : cut);
+                const std::size_t stop = share == 0 ? (head ? mid : cut) : (head ? cut : end);
+                if (begin < stop) rowsWork(begin, stop);
             });
+        } else {
+            for (std::size_t k = 0; k < colourCount; ++k) {
+                const std::size_t first = segments[colours[k]], count = segments[colours[k] + 1] - first;
+                executor.parallelFor(count, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
+                    rowsWork(first + begin, first + end);
+                });
+            }
         }
         rowsWork(segments[kColours], segments[kSegments]);
     };

@@ -10,6 +10,10 @@
 // of each split them at about the same body. A member that is done takes what is left of the others' runs, so a
 // thread the system holds back delays a loop by at most the chunk it holds.
 //
+// A team of two can also run a sequence of loops as one stage (forLoopsInOrder: a pass's colours). Each member keeps
+// its half of every loop and waits only for the part of the other's half of the loop before that it depends on,
+// instead of for the whole loop: the two run side by side through the colours, one wait per pass.
+//
 // Nothing ever waits for a particular helper: the driver can take every chunk itself. A helper that starts late
 // joins whatever stage is current, and one that starts after the end returns at once. Which thread runs a chunk
 // never changes what the chunk computes (the loops write only their own items), so results stay bit-identical.
@@ -27,6 +31,7 @@
 // with that stage and used up, or with a newer one.
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -69,10 +74,43 @@ public:
         work(0, stage, d);
         for (unsigned spins = 0; done_.load(std::memory_order_acquire) != doneTarget_; ++spins) pause(spins);
         inStage_ = false;
-        if (failed_.load(std::memory_order_acquire)) {
-            failed_.store(false, std::memory_order_relaxed);
-            std::rethrow_exception(error_);
+        rethrowFailure();
+    }
+
+    /// Whether forLoopsInOrder runs on two threads here: a team of exactly two, called by its driver outside a
+    /// stage. Elsewhere it runs its parts one after another on the calling thread.
+    bool ordersLoops() const {
+        return members() == 2 && !inStage_ && std::this_thread::get_id() == driver_;
+    }
+
+    /// Driver: `loops` loops in order, each cut into two fixed shares (share 0 the driver's, share 1 the
+    /// helper's), each share into a head and a rest: fn(loop, share, head) runs every part once. A share's part
+    /// of loop l starts once the other share's head of loop l - 1 is done, and its own parts of loop l - 1, never
+    /// waiting for the other's rest: the caller puts into a share's head every item that touches anything the
+    /// other share touches in any loop, so the two run side by side and wait only where they meet. One wait for
+    /// the whole sequence instead of one per loop. If the helper has not claimed its share when the driver has
+    /// done its loop 0, the driver claims it and runs both (the pool may never give the thread). Same results
+    /// whoever runs a share, as long as each part writes only its own items and what no part of the other share
+    /// in the same loop touches.
+    template <class Fn>
+    void forLoopsInOrder(std::size_t loops, Fn& fn) {
+        if (loops == 0) return;
+        if (!ordersLoops()) {
+            for (std::size_t loop = 0; loop < loops; ++loop)
+                for (const int share : {0, 1})
+                    for (const bool head : {true, false}) fn(loop, share, head);
+            return;
         }
+        inStage_ = true;
+        const std::uint64_t stage = ++stageCount_;
+        doneTarget_ += 2;  // the two shares
+        const Description d{const_cast<void*>(static_cast<const void*>(&fn)), nullptr, loops, 0,
+                            &callPart<Fn>};
+        publish(stage, d);
+        runShares(0, stage, d);
+        for (unsigned spins = 0; done_.load(std::memory_order_acquire) != doneTarget_; ++spins) pause(spins);
+        inStage_ = false;
+        rethrowFailure();
     }
 
     /// Helper `member` (1 .. members - 1): takes chunks of each stage until finish().
@@ -86,7 +124,8 @@ public:
                 pause(spins);
             }
             seen = stage;
-            work(member, stage, d);
+            if (d.part != nullptr) runShares(member, stage, d);
+            else work(member, stage, d);
         }
     }
 
@@ -98,6 +137,8 @@ public:
         doneTarget_ = 0;
         done_.store(0, std::memory_order_relaxed);
         for (Counter& c : counters_) c.next.store(0, std::memory_order_relaxed);
+        for (Counter& c : progress_) c.next.store(0, std::memory_order_relaxed);
+        helperShare_.store(0, std::memory_order_relaxed);
         sequence_.store(0, std::memory_order_relaxed);
         finished_.store(false, std::memory_order_release);
     }
@@ -108,16 +149,51 @@ public:
 private:
     using Call = void (*)(void* context, std::size_t begin, std::size_t end, int member);
 
+    using PartCall = void (*)(void* context, std::size_t loop, int share, bool head);
+
     template <class Fn>
     static void callChunk(void* context, std::size_t begin, std::size_t end, int member) {
         (*static_cast<Fn*>(context))(begin, end, member);
     }
+    template <class Fn>
+    static void callPart(void* context, std::size_t loop, int share, bool head) {
+        (*static_cast<Fn*>(context))(loop, share, head);
+    }
 
+    // A stage: forEach's (call, items, grain) or forLoopsInOrder's (part, items = loops).
     struct Description {
         void* context = nullptr;
         Call call = nullptr;
         std::size_t items = 0, grain = 0;
+        PartCall part = nullptr;
     };
+
+    void rethrowFailure() {
+        if (failed_.load(std::memory_order_acquire)) {
+            failed_.store(false, std::memory_order_relaxed);
+            std::rethrow_exception(error_);
+        }
+    }
+
+    void recordFailure() noexcept {
+        std::lock_guard<std::mutex> lock(errorMutex_);
+        if (!failed_.load(std::memory_order_relaxed)) error_ = std::current_exception();
+        failed_.store(true, std::memory_order_relaxed);
+    }
+
+    // How far a share of an ordered stage has come: 2 l + 1 once its head of loop l is done, 2 l + 2 once all of
+    // loop l is; tagged with the stage, so an older stage's count reads as nothing done.
+    static std::uint64_t progressMark(std::uint64_t stage, std::size_t parts) { return stage << 16 | parts; }
+
+    void runPart(const Description& d, std::uint64_t stage, std::size_t loop, int share, bool head) noexcept {
+        try {
+            d.part(d.context, loop, share, head);
+        } catch (...) {
+            recordFailure();
+        }
+        const std::size_t parts = 2 * loop + (head ? 1 : 2);
+        progress_[static_cast<std::size_t>(share)].next.store(progressMark(stage, parts), std::memory_order_release);
+    }
 
     // The first item of member's run (members() gives n).
     std::size_t runBegin(int member, std::size_t n) const {
@@ -135,6 +211,7 @@ private:
         call_.store(d.call, std::memory_order_relaxed);
         items_.store(d.items, std::memory_order_relaxed);
         grain_.store(d.grain, std::memory_order_relaxed);
+        part_.store(d.part, std::memory_order_relaxed);
         sequence_.store(2 * stage, std::memory_order_release);
     }
 
@@ -144,7 +221,8 @@ private:
         const std::uint64_t before = sequence_.load(std::memory_order_acquire);
         if (before & 1 || before / 2 == seen) return false;
         d = {context_.load(std::memory_order_relaxed), call_.load(std::memory_order_relaxed),
-             items_.load(std::memory_order_relaxed), grain_.load(std::memory_order_relaxed)};
+             items_.load(std::memory_order_relaxed), grain_.load(std::memory_order_relaxed),
+             part_.load(std::memory_order_relaxed)};
         std::atomic_thread_fence(std::memory_order_acquire);
         if (sequence_.load(std::memory_order_relaxed) != before) return false;
         stage = before / 2;
@@ -171,15 +249,52 @@ private:
                 try {
                     d.call(d.context, begin, std::min(last, begin + d.grain), member);
                 } catch (...) {
-                    std::lock_guard<std::mutex> lock(errorMutex_);
-                    if (!failed_.load(std::memory_order_relaxed)) error_ = std::current_exception();
-                    failed_.store(true, std::memory_order_relaxed);
+                    recordFailure();
                 }
                 ++finished;
                 taken = next.load(std::memory_order_relaxed);
             }
         }
         if (finished > 0) done_.fetch_add(finished, std::memory_order_release);
+    }
+
+    // An ordered stage (forLoopsInOrder) on member 0 (the driver, share 0) or 1 (share 1, if it claims it first).
+    void runShares(int member, std::uint64_t stage, const Description& d) noexcept {
+        if (member == 1 && !claimHelperShare(stage)) return;  // the driver took it: nothing left here
+        const int other = 1 - member;
+        bool both = false;  // the driver runs share 1 too
+        // The driver takes share 1 if the helper has not claimed it when loop 0 is done: the only point where
+        // running it from its start keeps the order (share 0 has done loop 0 alone, which shares no item with
+        // share 1's loop 0, and nothing later).
+        auto takeShare1 = [&] {
+            if (member != 0 || !claimHelperShare(stage)) return;
+            runPart(d, stage, 0, 1, true);
+            runPart(d, stage, 0, 1, false);
+            both = true;
+        };
+        for (std::size_t loop = 0; loop < d.items; ++loop) {
+            if (loop == 1) takeShare1();
+            if (loop > 0 && !both) {
+                // The other share's head of the loop before: everything of it this share's next loop may touch.
+                const std::uint64_t needed = progressMark(stage, 2 * loop - 1);
+                const std::atomic<std::uint64_t>& theirs = progress_[static_cast<std::size_t>(other)].next;
+                for (unsigned spins = 0; theirs.load(std::memory_order_acquire) < needed; ++spins) pause(spins);
+            }
+            runPart(d, stage, loop, member, true);
+            if (both) runPart(d, stage, loop, other, true);
+            runPart(d, stage, loop, member, false);
+            if (both) runPart(d, stage, loop, other, false);
+        }
+        if (d.items == 1) takeShare1();
+        done_.fetch_add(both ? 2 : 1, std::memory_order_release);
+    }
+
+    // Share 1 of `stage` goes to whoever asks first; false if it is taken (or the stage is over).
+    bool claimHelperShare(std::uint64_t stage) {
+        std::uint64_t last = helperShare_.load(std::memory_order_relaxed);
+        while (last < stage)
+            if (helperShare_.compare_exchange_weak(last, stage, std::memory_order_relaxed)) return true;
+        return false;
     }
 
     // Waiting: spin briefly (stages are microseconds apart), then give the core away (a 2-core machine may have
@@ -198,6 +313,8 @@ private:
         std::atomic<std::uint64_t> next{0};  // stage << 32 | the next chunk of this member's run (0 its first)
     };
     std::vector<Counter> counters_;
+    std::array<Counter, 2> progress_;  // an ordered stage's progress per share (progressMark)
+    alignas(64) std::atomic<std::uint64_t> helperShare_{0};  // the last ordered stage whose share 1 was claimed
     // The driver's own state.
     std::thread::id driver_;  // set by start(); no thread drives before it
     bool inStage_ = false;  // the driver is inside forEach (a nested call runs inline)
@@ -208,6 +325,7 @@ private:
     std::atomic<void*> context_{nullptr};
     std::atomic<Call> call_{nullptr};
     std::atomic<std::size_t> items_{0}, grain_{0};
+    std::atomic<PartCall> part_{nullptr};
     alignas(64) std::atomic<std::size_t> done_{0};  // chunks finished in this run
     alignas(64) std::atomic<bool> finished_{false};
     std::atomic<bool> failed_{false};

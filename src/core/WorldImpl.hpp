@@ -102,6 +102,8 @@ struct WorldImpl {
     std::size_t regionBlocks = 0;
     std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
+    std::vector<std::uint32_t> shareHeads;       // on two threads, per group and colour: where the halves' heads end
+    std::vector<std::uint8_t> bodyShares;        // markShareHeads: which halves touch each awake body (bits)
     std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed;          // per block lane with an impact: how fast it met, m/s
     std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
@@ -183,6 +185,7 @@ struct WorldImpl {
     void solve();            // the Forces, Solve and Integrate stages
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
     std::size_t layOutRows(bool byIsland, double h, const Softness& rodSoftness);
+    void markShareHeads();
     bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
     /// Joint `joint`'s row for this step (substep h).
     JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;

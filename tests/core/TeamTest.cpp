@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <string>
 #include <atomic>
 #include <chrono>
 #include <cstddef>
@@ -166,6 +169,113 @@ TEST(Team, AChunksExceptionReachesTheDriverAndTheTeamGoesOn) {
         });
     });
     for (const int h : hits) EXPECT_EQ(h, 1);
+}
+
+
+// Loops of items that each update two cells, as a colour's rows update two bodies: no two items of a loop share a
+// cell, and each loop's items are listed by their lower cell, as the solver lists its blocks about in body order.
+struct PairedLoops {
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> items;  // per loop
+    std::vector<std::array<std::size_t, 2>> cuts;  // per loop: where share 0's head starts, share 1's ends
+
+    std::size_t mid(std::size_t loop) const { return items[loop].size() / 2; }
+};
+
+PairedLoops pairedLoops(std::size_t cells, std::size_t loops, std::uint64_t seed) {
+    PairedLoops p;
+    std::vector<std::size_t> order(cells);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    for (std::size_t l = 0; l < loops; ++l) {
+        for (std::size_t i = cells - 1; i > 0; --i) {  // a fixed shuffle: a different matching per loop
+            seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+            std::swap(order[i], order[(seed >> 33) % (i + 1)]);
+        }
+        std::vector<std::pair<std::size_t, std::size_t>> loopItems;
+        for (std::size_t i = 0; i + 1 < cells; i += 2)
+            loopItems.emplace_back(std::min(order[i], order[i + 1]), std::max(order[i], order[i + 1]));
+        std::sort(loopItems.begin(), loopItems.end());
+        p.items.push_back(loopItems);
+    }
+    // The heads, by their definition: an item that touches a cell the other share touches in any loop.
+    std::vector<int> shares(cells, 0);
+    for (std::size_t l = 0; l < loops; ++l)
+        for (std::size_t k = 0; k < p.items[l].size(); ++k) {
+            const int bit = k < p.mid(l) ? 1 : 2;
+            shares[p.items[l][k].first] |= bit;
+            shares[p.items[l][k].second] |= bit;
+        }
+    for (std::size_t l = 0; l < loops; ++l) {
+        auto both = [&](std::size_t k) {
+            return shares[p.items[l][k].first] == 3 || shares[p.items[l][k].second] == 3;
+        };
+        std::size_t low = p.mid(l), high = p.mid(l);
+        for (std::size_t k = 0; k < p.mid(l); ++k)
+            if (both(k)) low = std::min(low, k);
+        for (std::size_t k = p.mid(l); k < p.items[l].size(); ++k)
+            if (both(k)) high = k + 1;
+        p.cuts.push_back({low, high});
+    }
+    return p;
+}
+
+// Each item mixes its two cells in an order-dependent way: any cell whose items run out of loop order ends
+// different.
+void mix(std::vector<std::uint64_t>& cell, std::pair<std::size_t, std::size_t> item, std::size_t loop) {
+    const std::uint64_t x = cell[item.first] * 3 + cell[item.second] * 5 + loop;
+    cell[item.first] = x;
+    cell[item.second] = x ^ (x >> 7);
+}
+
+TEST(Team, OrderedLoopsGiveEveryCellItsSerialHistory) {
+    const std::size_t cells = 400, loops = 9;
+    Executor executor(2);
+    for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+        const PairedLoops p = pairedLoops(cells, loops, seed);
+        std::vector<std::uint64_t> expected(cells), cell(cells);
+        std::iota(expected.begin(), expected.end(), std::uint64_t{1});
+        std::iota(cell.begin(), cell.end(), std::uint64_t{1});
+        for (std::size_t l = 0; l < loops; ++l)
+            for (const auto& item : p.items[l]) mix(expected, item, l);
+        std::thread::id shareThread[2];
+        bool ordered = false;
+        executor.run([&] {
+            ordered = executor.ordersLoops();
+            executor.forLoopsInOrder(loops, [&](std::size_t l, int share, bool head) {
+                const std::size_t cut = p.cuts[l][static_cast<std::size_t>(share)], mid = p.mid(l);
+                const std::size_t begin = share == 0 ? (head ? cut : 0) : (head ? mid : cut);
+                const std::size_t end = share == 0 ? (head ? mid : cut) : (head ? cut : p.items[l].size());
+                shareThread[share] = std::this_thread::get_id();
+                // A slow rest: a share that went on without waiting for the other's head would overtake it.
+                if (!head && (l + seed + static_cast<std::size_t>(share)) % 3 == 0)
+                    std::this_thread::sleep_for(std::chrono::microseconds(30));
+                for (std::size_t k = begin; k < end; ++k) mix(cell, p.items[l][k], l);
+            });
+        });
+        ASSERT_TRUE(ordered);
+        EXPECT_EQ(cell, expected) << "seed " << seed;
+        if (seed == 30) {
+            EXPECT_NE(shareThread[0], shareThread[1]) << "the helper never ran a share";
+        }
+    }
+}
+
+TEST(Team, OrderedLoopsRunWholeWithoutTheHelper) {
+    // No helper comes: the driver does its loop 0, takes share 1 from its start, and runs both in order.
+    Team team(2);
+    team.start();
+    for (const std::size_t loops : {std::size_t{1}, std::size_t{3}}) {
+        std::vector<std::string> calls;
+        auto part = [&](std::size_t loop, int share, bool head) {
+            calls.push_back(std::to_string(loop) + (share == 0 ? "a" : "b") + (head ? "h" : "r"));
+        };
+        team.forLoopsInOrder(loops, part);
+        const std::vector<std::string> expected =
+            loops == 1 ? std::vector<std::string>{"0ah", "0ar", "0bh", "0br"}
+                       : std::vector<std::string>{"0ah", "0ar", "0bh", "0br", "1ah", "1bh", "1ar",
+                                                  "1br", "2ah", "2bh", "2ar", "2br"};
+        EXPECT_EQ(calls, expected) << loops << " loops";
+    }
+    team.finish();
 }
 
 }  // namespace
