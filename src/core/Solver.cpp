@@ -325,6 +325,24 @@ void WorldImpl::markShareHeads() {
         shareHeads[(g * kColours + col) * 2] = static_cast<std::uint32_t>(low);
         shareHeads[(g * kColours + col) * 2 + 1] = static_cast<std::uint32_t>(high);
     });
+    // The bodies' loops in the same halves: a body both halves touch is in the first half's head, one that only
+    // a half touches in that half's rest, one no row touches in the half of the group's list it lies in.
+    shareBodies.resize(groupBodies.size());
+    shareBodyCuts.assign(groups * 2, 0);
+    for (std::size_t g = 0; g < groups; ++g) {
+        const std::size_t first = groupBodyStart[g], end = groupBodyStart[g + 1], mid = first + (end - first) / 2;
+        auto half = [&](std::size_t k) {
+            const std::uint8_t bits = bodyShares[groupBodies[k]];
+            return bits == 3 ? 0 : bits == 1 ? 1 : bits == 2 ? 2 : k < mid ? 1 : 2;  // 0 head, 1 first, 2 second
+        };
+        std::size_t fill = first;
+        for (const int wanted : {0, 1, 2}) {
+            if (wanted > 0)
+                shareBodyCuts[g * 2 + static_cast<std::size_t>(wanted - 1)] = static_cast<std::uint32_t>(fill);
+            for (std::size_t k = first; k < end; ++k)
+                if (half(k) == wanted) shareBodies[fill++] = groupBodies[k];
+        }
+    }
 }
 
 // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all of its
@@ -492,16 +510,20 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     for (std::size_t col = 0; col < kColours; ++col)
         if (segments[col + 1] > segments[col]) colours[colourCount++] = static_cast<std::uint8_t>(col);
     const bool ordered = executor.ordersLoops() && !shareHeads.empty();
+    // A half's head or rest of colour colours[k]: blocks [begin, end) of the group's.
+    auto halfOf = [&](std::size_t k, int share, bool head) {
+        const std::size_t col = colours[k], first = segments[col], end = segments[col + 1];
+        const std::size_t mid = first + (end - first) / 2, cut = shareHeads[(g * kColours + col) * 2 + share];
+        return share == 0 ? (head ? std::make_pair(cut, mid) : std::make_pair(first, cut))
+                          : (head ? std::make_pair(mid, cut) : std::make_pair(cut, end));
+    };
     auto pass = [&](auto&& rowsWork, auto&& jointWork) {
         for (std::uint32_t j = groupJointStart[g]; j < groupJointStart[g + 1]; ++j)
             jointWork(jointConstraints[j], joints[jointConstraints[j].joint]);
         if (ordered) {
             executor.forLoopsInOrder(colourCount, [&](std::size_t loop, int share, bool head) {
-                const std::size_t col = colours[loop], first = segments[col], end = segments[col + 1];
-                const std::size_t mid = first + (end - first) / 2, cut = shareHeads[(g * kColours + col) * 2 + share];
-                const std::size_t begin = share == 0 ? (head ? cut : first) : (head ? mid : cut);
-                const std::size_t stop = share == 0 ? (head ? mid : cut) : (head ? cut : end);
-                if (begin < stop) rowsWork(begin, stop);
+                const auto [begin, end] = halfOf(loop, share, head);
+                if (begin < end) rowsWork(begin, end);
             });
         } else {
             for (std::size_t k = 0; k < colourCount; ++k) {
@@ -557,6 +579,49 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
 
+    // On two threads, a substep's solve passes, position integration and relax passes are one ordered sequence
+    // (each pass's colours, the bodies' loop between), where no joint or overflow row needs a thread alone between
+    // passes. Where the warm start after the first substep is the bodies' (no pass) and nothing acts between
+    // substeps, the substeps after it join the sequence too, each from its velocity integration: one wait for the
+    // step's substeps. Each loop gets its own copy of the passes' settings: the threads may be in different passes.
+    const bool oneSequence = ordered && colourCount > 0 && groupJointStart[g + 1] == groupJointStart[g] &&
+                             segments[kSegments] == segments[kColours];
+    auto solveInOrder = [&](int firstSub, int lastSub) {
+        const std::size_t solves = static_cast<std::size_t>(settings.velocityIterations) * colourCount;
+        const std::size_t relaxes = static_cast<std::size_t>(settings.relaxIterations) * colourCount;
+        const std::size_t perSubstep = 1 + solves + 1 + relaxes;  // velocities, solve, positions, relax
+        const std::uint32_t* const halves = shareBodies.data() + groupBodyStart[g];
+        const std::size_t headEnd = shareBodyCuts[g * 2] - groupBodyStart[g];
+        const std::size_t secondStart = shareBodyCuts[g * 2 + 1] - groupBodyStart[g];
+        WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
+        // The first substep's velocities are done already.
+        const std::size_t loops = static_cast<std::size_t>(lastSub - firstSub + 1) * perSubstep - 1;
+        executor.forLoopsInOrder(loops, [&](std::size_t loop, int share, bool head) {
+            const int sub = firstSub + static_cast<int>((loop + 1) / perSubstep);
+            const std::size_t phase = (loop + 1) % perSubstep;
+            if (phase == 0 || phase == solves + 1) {  // a bodies' loop: the first half's head, then each half's rest
+                if (share == 1 && head) return;
+                const std::size_t begin = share == 0 ? (head ? 0 : headEnd) : secondStart;
+                const std::size_t end = share == 0 ? (head ? headEnd : secondStart) : bodyCount;
+                if (begin >= end) return;
+                if (phase == 0)
+                    integrateVelocities(st, base, keepWarm, sims.data(), halves + begin, end - begin, h, true);
+                else
+                    integratePositions(st, halves + begin, end - begin, h);
+                return;
+            }
+            const bool relax = phase > solves + 1;
+            const std::size_t k = relax ? phase - solves - 2 : phase - 1;
+            const auto [begin, end] = halfOf(k % colourCount, share, head);
+            if (begin >= end) return;
+            ContactPass rows = contactPass;
+            rows.substep = sub;
+            rows.useBias = !relax;
+            solveContacts(blockAt(begin), blockAt(end), coldAt(begin), st, rows);
+            if (relax && sub + 1 == substeps && storeInRelax && k + colourCount >= relaxes) storeBlocks(begin, end);
+        });
+    };
+
     for (int sub = 0; sub < substeps; ++sub) {
         contactPass.substep = sub;
         if (effects.perSubstep()) effects.substep(*this, h);  // then there is one group
@@ -586,6 +651,12 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
                     forBodies([&](std::size_t i) {
                         if (sims[i].dynamic) recordWarmStart(st[i], base[i], warm[i]);
                     });
+            }
+            if (oneSequence) {
+                const int last = bodiesWarmStart ? substeps - 1 : sub;
+                solveInOrder(sub, last);
+                sub = last;
+                continue;
             }
             for (int it = 0; it < settings.velocityIterations; ++it) solvePass(true, false);
         }

@@ -104,6 +104,8 @@ struct WorldImpl {
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
     std::vector<std::uint32_t> shareHeads;       // on two threads, per group and colour: where the halves' heads end
     std::vector<std::uint8_t> bodyShares;        // markShareHeads: which halves touch each awake body (bits)
+    std::vector<std::uint32_t> shareBodies;      // on two threads, each group's bodies by half: head, first, second
+    std::vector<std::uint32_t> shareBodyCuts;    // per group: where the first half's head ends, and the second's starts
     std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed;          // per block lane with an impact: how fast it met, m/s
     std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
