@@ -316,6 +316,9 @@ void WorldImpl::markShareHeads() {
         forBodies(b, [&](std::size_t i) { both = both || bodyShares[i] == 3; });
         return both;
     };
+    shareOrdered.assign(groups, 0);
+    std::vector<std::size_t>& headBlocks = shareCounts;  // per group: blocks in heads, then all blocks
+    headBlocks.assign(groups * 2, 0);
     forHalves([&](std::size_t g, std::size_t col, std::size_t first, std::size_t mid, std::size_t end) {
         std::size_t low = mid, high = mid;
         for (std::size_t b = first; b < mid && low == mid; ++b)
@@ -324,7 +327,13 @@ void WorldImpl::markShareHeads() {
             if (touchesBoth(b - 1)) high = b;
         shareHeads[(g * kColours + col) * 2] = static_cast<std::uint32_t>(low);
         shareHeads[(g * kColours + col) * 2 + 1] = static_cast<std::uint32_t>(high);
+        headBlocks[g * 2] += high - low;
+        headBlocks[g * 2 + 1] += end - first;
     });
+    // Where most blocks are heads (rows listed in no order of their bodies: a pile that formed as it fell), each
+    // colour is in effect a wait for the whole other half, without the team's sharing out of what is left: such a
+    // group keeps one stage per loop.
+    for (std::size_t g = 0; g < groups; ++g) shareOrdered[g] = 2 * headBlocks[g * 2] <= headBlocks[g * 2 + 1];
     // The bodies' loops in the same halves: a body both halves touch is in the first half's head, one that only
     // a half touches in that half's rest, one no row touches in the half of the group's list it lies in.
     shareBodies.resize(groupBodies.size());
@@ -509,7 +518,7 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     std::size_t colourCount = 0;
     for (std::size_t col = 0; col < kColours; ++col)
         if (segments[col + 1] > segments[col]) colours[colourCount++] = static_cast<std::uint8_t>(col);
-    const bool ordered = executor.ordersLoops() && !shareHeads.empty();
+    const bool ordered = executor.ordersLoops() && !shareHeads.empty() && shareOrdered[g];
     // A half's head or rest of colour colours[k]: blocks [begin, end) of the group's.
     auto halfOf = [&](std::size_t k, int share, bool head) {
         const std::size_t col = colours[k], first = segments[col], end = segments[col + 1];
