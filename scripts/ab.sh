@@ -32,6 +32,9 @@ source_of() {
   if [ "$(cat "$src.commit" 2>/dev/null)" != "$commit" ]; then
     rm -rf "$src" && mkdir -p "$src"
     git archive "$commit" | tar -x -C "$src"
+    # tar gives the files the commit's time: an older commit's sources would look older than the objects built
+    # from the last one, and ninja would keep those. Now is newer than every object.
+    find "$src" -exec touch {} +
     echo "$commit" > "$src.commit"
   fi
   echo "$src"
