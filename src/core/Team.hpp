@@ -95,7 +95,7 @@ public:
     template <class Fn>
     void forLoopsInOrder(std::size_t loops, Fn& fn) {
         if (loops == 0) return;
-        if (!ordersLoops()) {
+        if (!ordersLoops() || loops > kMaxOrderedLoops) {
             for (std::size_t loop = 0; loop < loops; ++loop)
                 for (const int share : {0, 1})
                     for (const bool head : {true, false}) fn(loop, share, head);
@@ -182,8 +182,12 @@ private:
     }
 
     // How far a share of an ordered stage has come: 2 l + 1 once its head of loop l is done, 2 l + 2 once all of
-    // loop l is; tagged with the stage, so an older stage's count reads as nothing done.
-    static std::uint64_t progressMark(std::uint64_t stage, std::size_t parts) { return stage << 16 | parts; }
+    // loop l is; tagged with the stage, so an older stage's count reads as nothing done. Stages count from start()
+    // (a few hundred a run), parts below 2^32 (kMaxOrderedLoops).
+    static std::uint64_t progressMark(std::uint64_t stage, std::size_t parts) {
+        return stage << 32 | static_cast<std::uint64_t>(parts);
+    }
+    static constexpr std::size_t kMaxOrderedLoops = std::size_t{1} << 30;
 
     void runPart(const Description& d, std::uint64_t stage, std::size_t loop, int share, bool head) noexcept {
         try {
