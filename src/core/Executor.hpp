@@ -72,13 +72,8 @@ public:
     /// team of two side by side, elsewhere one after another.
     template <class Fn>
     void forLoopsInOrder(std::size_t loops, Fn&& fn) {
-        if (inRun_ && team_) {
-            team_->forLoopsInOrder(loops, fn);
-            return;
-        }
-        for (std::size_t loop = 0; loop < loops; ++loop)
-            for (const int share : {0, 1})
-                for (const bool head : {true, false}) fn(loop, share, head);
+        if (inRun_ && team_) team_->forLoopsInOrder(loops, fn);
+        else Team::loopsInOrderAlone(loops, fn);
     }
 
     /// Runs fn() on the calling thread with the arena's other threads standing by as a Team for the loops fn

@@ -317,7 +317,6 @@ void WorldImpl::markShareHeads() {
         return both;
     };
     shareOrdered.assign(groups, 0);
-    std::vector<std::size_t>& headBlocks = shareCounts;  // per group: blocks in heads, then all blocks
     headBlocks.assign(groups * 2, 0);
     forHalves([&](std::size_t g, std::size_t col, std::size_t first, std::size_t mid, std::size_t end) {
         std::size_t low = mid, high = mid;

@@ -96,9 +96,7 @@ public:
     void forLoopsInOrder(std::size_t loops, Fn& fn) {
         if (loops == 0) return;
         if (!ordersLoops() || loops > kMaxOrderedLoops) {
-            for (std::size_t loop = 0; loop < loops; ++loop)
-                for (const int share : {0, 1})
-                    for (const bool head : {true, false}) fn(loop, share, head);
+            loopsInOrderAlone(loops, fn);
             return;
         }
         inStage_ = true;
@@ -111,6 +109,14 @@ public:
         for (unsigned spins = 0; done_.load(std::memory_order_acquire) != doneTarget_; ++spins) pause(spins);
         inStage_ = false;
         rethrowFailure();
+    }
+
+    /// forLoopsInOrder's parts one after another on the calling thread: every part of loop l before loop l + 1.
+    template <class Fn>
+    static void loopsInOrderAlone(std::size_t loops, Fn& fn) {
+        for (std::size_t loop = 0; loop < loops; ++loop)
+            for (const int share : {0, 1})
+                for (const bool head : {true, false}) fn(loop, share, head);
     }
 
     /// Helper `member` (1 .. members - 1): takes chunks of each stage until finish().

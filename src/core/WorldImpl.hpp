@@ -104,7 +104,7 @@ struct WorldImpl {
     std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
     std::vector<std::uint32_t> shareHeads;       // on two threads, per group and colour: where the halves' heads end
     std::vector<std::uint8_t> bodyShares;        // markShareHeads: which halves touch each awake body (bits)
-    std::vector<std::size_t> shareCounts;        // markShareHeads: per group, blocks in heads and all blocks
+    std::vector<std::size_t> headBlocks;         // markShareHeads: per group, blocks in heads and all blocks
     std::vector<std::uint8_t> shareOrdered;      // per group: its halves meet in few blocks, so they run in order
     std::vector<std::uint32_t> shareBodies;      // on two threads, each group's bodies by half: head, first, second
     std::vector<std::uint32_t> shareBodyCuts;    // per group: where the first half's head ends, and the second's starts

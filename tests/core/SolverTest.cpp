@@ -126,21 +126,26 @@ TEST(Solver, AnIslandKeepsItsBitsBesideAJointAndABullet) {
     EXPECT_GT(crowd.position(shot).y(), 0.0) << "the bullet bounced off the ground";
 }
 
+/// A pyramid of 1 m boxes, `base` in its bottom row, whose bottom-left box is centred at x = left on the ground.
+std::vector<BodyId> addPyramid(World& world, int base, double left) {
+    std::vector<BodyId> ids;
+    for (int row = 0; row < base; ++row)
+        for (int i = 0; i < base - row; ++i) {
+            BodyDef d;
+            d.shape = makeBox(0.5, 0.5);
+            d.position = {left + i + 0.5 * row, 0.5 + row};
+            ids.push_back(world.createBody(d));
+        }
+    return ids;
+}
+
 // A crowd with a large island (a base-46 pyramid, 1081 boxes: a group that spreads its loops over the threads),
 // small piles (groups that go to the threads whole), two piles joined by a joint and two touched by one kinematic
 // paddle (each pair one island): the same bits on 1, 2 and every hardware thread.
 std::vector<double> crowdScene(int threads) {
     World world(crowdSettings(threads));
     addGround(world, 120.0);
-    std::vector<BodyId> ids;
-    const int base = 46;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            BodyDef d;
-            d.shape = makeBox(0.5, 0.5);
-            d.position = {-70.0 + i + 0.5 * row, 0.5 + row};
-            ids.push_back(world.createBody(d));
-        }
+    std::vector<BodyId> ids = addPyramid(world, 46, -70.0);
     std::vector<std::vector<BodyId>> piles;
     for (int p = 0; p < 12; ++p) {
         piles.push_back(addPile(world, kPileSpacing * p, p));
@@ -305,15 +310,7 @@ std::vector<double> pyramidWithBall(int threads, int substeps, int solves, int r
     settings.relaxIterations = relaxes;
     World world(settings);
     addGround(world, 30.0);
-    std::vector<BodyId> ids;
-    const int base = 20;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            BodyDef d;
-            d.shape = makeBox(0.5, 0.5);
-            d.position = {-0.5 * (base - row - 1) + 1.0 * i, 0.5 + 1.0 * row};
-            ids.push_back(world.createBody(d));
-        }
+    std::vector<BodyId> ids = addPyramid(world, 20, -9.5);
     BodyDef ball;
     ball.shape = makeCircle(0.3);
     ball.position = {0.2, 22.0};
