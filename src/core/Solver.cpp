@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace physim {
 namespace {
@@ -118,6 +119,12 @@ void WorldImpl::solve() {
         });
     }
     profile.turningRows = turningRows.load();
+    if (!shareHeads.empty())
+        for (std::size_t g = 0; g < groups; ++g)
+            if (spreads(g) && shareOrdered[g]) {
+                profile.headBlocks += headBlocks[g * 2];
+                profile.halvedBlocks += headBlocks[g * 2 + 1];
+            }
 
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
@@ -221,20 +228,39 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSo
 
     if (rowCount > 0 || !jointConstraints.empty()) {
         StageTimer timer(profile, Stage::Solve);
-        // Rows sorted by group, then colour (then the overflow), each in the awake contacts' order.
+        // Rows sorted by group, then colour, each colour's in the order of the rows' first awake body; the overflow's
+        // in the awake contacts' order. A colour's rows share no dynamic body, so their order changes no result;
+        // in the bodies' order, the passes walk the body records in order, and two threads, each taking half of a
+        // colour, take rows of bodies that lie together (markShareHeads), however the contacts began. The overflow
+        // is solved row after row, where the order decides the result: that order stays the colouring's.
         auto segmentOf = [&](std::size_t k) {
             const RowRef& r = rowRefs[k];
             return bodyGroup[static_cast<std::size_t>(r.indexA != kNullIndex ? r.indexA : r.indexB)] * kSegments +
                    static_cast<std::size_t>(constraintColour[k]);
         };
+        auto coloured = [&](std::size_t k) { return constraintColour[k] >= 0 && constraintColour[k] < kColours; };
+        auto firstBody = [&](std::size_t k) -> std::size_t {  // kNullIndex (-1) as unsigned: past every awake index
+            const auto a = static_cast<std::uint32_t>(rowRefs[k].indexA);
+            const auto b = static_cast<std::uint32_t>(rowRefs[k].indexB);
+            return std::min<std::size_t>(std::min(a, b), n);
+        };
+        rowOrder.assign(n + 1, 0);  // a counting sort by first body: where each body's rows start
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k)
+            if (coloured(k)) ++rowOrder[firstBody(k)];
+        std::uint32_t sum = 0;
+        for (std::uint32_t& count : rowOrder) sum += std::exchange(count, sum);
+        sortedRows.resize(sum);
+        for (std::size_t k = 0; k < awakeContacts.size(); ++k)
+            if (coloured(k)) sortedRows[rowOrder[firstBody(k)]++] = static_cast<std::uint32_t>(k);
         segmentStart.assign(groups * kSegments + 1, 0);
         for (std::size_t k = 0; k < awakeContacts.size(); ++k)
             if (constraintColour[k] >= 0) ++segmentStart[segmentOf(k) + 1];
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) segmentStart[s + 1] += segmentStart[s];
         rowContacts.resize(rowCount);
         segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
+        for (const std::uint32_t k : sortedRows) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         for (std::size_t k = 0; k < awakeContacts.size(); ++k)
-            if (constraintColour[k] >= 0) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
+            if (constraintColour[k] == kColours) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).
         blockStart.assign(groups * kSegments + 1, 0);
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) {

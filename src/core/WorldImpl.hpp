@@ -115,6 +115,8 @@ struct WorldImpl {
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
+    std::vector<std::uint32_t> rowOrder;         // layOutRows' counting sort: per awake body, where its rows go
+    std::vector<std::uint32_t> sortedRows;       // the coloured rows (as rowRefs' indices) by first body
     std::vector<JointConstraint> jointConstraints;  // group by group
     // The rows' layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their
     // order, the bodies' types and detection, which contacts have points), the joints and the thread count: while

@@ -329,5 +329,45 @@ TEST(Solver, TwoThreadsInOrderGiveOneThreadsBitsForAnyPassCounts) {
     }
 }
 
+// Circles made row by row from the floor up and dropped into a box: their contacts begin in the order the pile
+// forms as it falls, not in the bodies' order. Each colour's rows are laid out in their bodies' order, so on two
+// threads the halves of each colour are the lower and the upper part of the pile, and they meet only in a band
+// across it: few head blocks (40 of 204; the same bits, so the same count, on every run). Laid out in the order
+// the contacts began, the halves met in nearly every block, and the group went colour by colour (counting in
+// neither). Either way, one thread's bits.
+std::vector<double> circlePile(int threads, StepProfile& profile) {
+    World world(crowdSettings(threads));
+    auto wall = [&](double x, double y, double hx, double hy) {
+        BodyDef d;
+        d.type = BodyType::Static;
+        d.shape = makeBox(hx, hy);
+        d.position = {x, y};
+        world.createBody(d);
+    };
+    wall(0.0, -0.5, 7.0, 0.5);
+    wall(-6.5, 8.0, 0.5, 8.0);
+    wall(6.5, 8.0, 0.5, 8.0);
+    std::vector<BodyId> ids;
+    for (int k = 0; k < 360; ++k) {
+        const int row = k / 18;
+        BodyDef d;
+        d.shape = makeCircle(0.25);
+        d.position = {-5.4 + 0.6 * (k % 18) + 0.3 * (row % 2), 0.5 + 0.6 * row};
+        ids.push_back(world.createBody(d));
+    }
+    for (int i = 0; i < 240; ++i) world.step(kDt);
+    profile = world.profile();
+    return poses(world, ids);
+}
+
+TEST(Solver, APileSplitsIntoHalvesThatMeetInFewBlocksHoweverItsContactsBegan) {
+    StepProfile one, two;
+    const std::vector<double> onePoses = circlePile(1, one);
+    EXPECT_TRUE(sameBits(onePoses, circlePile(2, two)));
+    EXPECT_EQ(one.halvedBlocks, 0u);
+    ASSERT_GT(two.halvedBlocks, 0u) << "the pile is halved, its heads under half its blocks";
+    EXPECT_LT(4 * two.headBlocks, two.halvedBlocks) << two.headBlocks << " head blocks of " << two.halvedBlocks;
+}
+
 }  // namespace
 }  // namespace physim

@@ -51,6 +51,14 @@ struct StepProfile {
     /// as before), with no joint created or destroyed and no type, detection or settings change, keeps that step's
     /// layout instead: the same layout, so the same results, without the work.
     bool rowsLaidOut = false;
+    /// On two threads, each colour of a large group's rows is cut in halves, one per thread (docs/architecture.md,
+    /// "Two threads through the colours in order"): `halvedBlocks` counts the blocks of rows so cut, `headBlocks`
+    /// those of them that touch a body the other half touches too. A thread runs its head of a colour first and
+    /// waits only for the other's head of the colour before, so the fewer heads, the less the threads meet; a group
+    /// whose heads are over half its blocks is solved colour by colour instead (and counts in neither). Both 0 on
+    /// one thread.
+    std::size_t halvedBlocks = 0;
+    std::size_t headBlocks = 0;
 
     double& secondsOf(Stage s) { return seconds[static_cast<std::size_t>(s)]; }
     double secondsOf(Stage s) const { return seconds[static_cast<std::size_t>(s)]; }
