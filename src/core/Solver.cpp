@@ -37,6 +37,9 @@ constexpr std::size_t kPrefetchBodies = 4;
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
 constexpr std::size_t kGroupBodies = 256;
 
+// Where two threads cut a colour's blocks [first, end) in halves: the second half starts here.
+std::size_t middleBlock(std::size_t first, std::size_t end) { return first + (end - first) / 2; }
+
 // The point of a row's impact event: its fastest meeting point faster than `threshold` (m/s); -1: none.
 int impactPoint(const ContactBlockCold& cold, int lane, double threshold) {
     const ContactBlockCold::Lane& row = cold.lanes[lane];
@@ -119,12 +122,11 @@ void WorldImpl::solve() {
         });
     }
     profile.turningRows = turningRows.load();
-    if (!shareHeads.empty())
-        for (std::size_t g = 0; g < groups; ++g)
-            if (spreads(g) && shareOrdered[g]) {
-                profile.headBlocks += headBlocks[g * 2];
-                profile.halvedBlocks += headBlocks[g * 2 + 1];
-            }
+    for (std::size_t g = 0; g < groups; ++g)
+        if (spreads(g) && halvesInOrder(g)) {
+            profile.headBlocks += headBlocks[g * 2];
+            profile.halvedBlocks += headBlocks[g * 2 + 1];
+        }
 
     if (rowCount > 0) {
         StageTimer timer(profile, Stage::Solve);
@@ -314,8 +316,8 @@ std::size_t WorldImpl::layOutRows(bool byIsland, double h, const Softness& rodSo
 // Two threads take each colour's blocks in halves, split at the middle (Team::forLoopsInOrder). A block that touches
 // a body the other half also touches, in any colour, must run before the other half's next colour: those blocks
 // are the half's head, [cut, mid) of the first half and [mid, cut) of the second, and run first; the rest touch
-// bodies that only their own thread touches in the pass. The blocks lie in about their bodies' order, so the heads
-// are the few blocks on either side of the middle.
+// bodies that only their own thread touches in the pass. Each colour's rows are laid out by first body
+// (layOutRows), so the heads are the few blocks on either side of the middle where the bodies lie together.
 void WorldImpl::markShareHeads() {
     const std::size_t groups = groupBodyStart.size() - 1;
     shareHeads.assign(groups * kColours * 2, 0);
@@ -330,7 +332,7 @@ void WorldImpl::markShareHeads() {
         for (std::size_t g = 0; g < groups; ++g)
             for (std::size_t col = 0; col < kColours; ++col) {
                 const std::size_t first = blockStart[g * kSegments + col], end = blockStart[g * kSegments + col + 1];
-                f(g, col, first, first + (end - first) / 2, end);
+                f(g, col, first, middleBlock(first, end), end);
             }
     };
     forHalves([&](std::size_t, std::size_t, std::size_t first, std::size_t mid, std::size_t end) {
@@ -342,7 +344,6 @@ void WorldImpl::markShareHeads() {
         forBodies(b, [&](std::size_t i) { both = both || bodyShares[i] == 3; });
         return both;
     };
-    shareOrdered.assign(groups, 0);
     headBlocks.assign(groups * 2, 0);
     forHalves([&](std::size_t g, std::size_t col, std::size_t first, std::size_t mid, std::size_t end) {
         std::size_t low = mid, high = mid;
@@ -355,10 +356,6 @@ void WorldImpl::markShareHeads() {
         headBlocks[g * 2] += high - low;
         headBlocks[g * 2 + 1] += end - first;
     });
-    // Where most blocks are heads (rows listed in no order of their bodies: a pile that formed as it fell), each
-    // colour is in effect a wait for the whole other half, without the team's sharing out of what is left: such a
-    // group keeps one stage per loop.
-    for (std::size_t g = 0; g < groups; ++g) shareOrdered[g] = 2 * headBlocks[g * 2] <= headBlocks[g * 2 + 1];
     // The bodies' loops in the same halves: a body both halves touch is in the first half's head, one that only
     // a half touches in that half's rest, one no row touches in the half of the group's list it lies in.
     shareBodies.resize(groupBodies.size());
@@ -377,6 +374,12 @@ void WorldImpl::markShareHeads() {
                 if (half(k) == wanted) shareBodies[fill++] = groupBodies[k];
         }
     }
+}
+
+// Where most blocks are heads (bodies made in no order of where they lie), each colour would in effect be a wait for
+// the whole other half, without the team's sharing out of what is left: such a group keeps one stage per loop.
+bool WorldImpl::halvesInOrder(std::size_t g) const {
+    return !shareHeads.empty() && 2 * headBlocks[g * 2] <= headBlocks[g * 2 + 1];
 }
 
 // Groups of one island or more run their substeps apart: a group's rows and bodies stay in cache through all of its
@@ -543,11 +546,11 @@ std::size_t WorldImpl::solveGroup(std::size_t g, bool timed, int worker) {
     std::size_t colourCount = 0;
     for (std::size_t col = 0; col < kColours; ++col)
         if (segments[col + 1] > segments[col]) colours[colourCount++] = static_cast<std::uint8_t>(col);
-    const bool ordered = executor.ordersLoops() && !shareHeads.empty() && shareOrdered[g];
+    const bool ordered = executor.ordersLoops() && halvesInOrder(g);
     // A half's head or rest of colour colours[k]: blocks [begin, end) of the group's.
     auto halfOf = [&](std::size_t k, int share, bool head) {
         const std::size_t col = colours[k], first = segments[col], end = segments[col + 1];
-        const std::size_t mid = first + (end - first) / 2, cut = shareHeads[(g * kColours + col) * 2 + share];
+        const std::size_t mid = middleBlock(first, end), cut = shareHeads[(g * kColours + col) * 2 + share];
         return share == 0 ? (head ? std::make_pair(cut, mid) : std::make_pair(first, cut))
                           : (head ? std::make_pair(mid, cut) : std::make_pair(cut, end));
     };

@@ -105,7 +105,6 @@ struct WorldImpl {
     std::vector<std::uint32_t> shareHeads;       // on two threads, per group and colour: where the halves' heads end
     std::vector<std::uint8_t> bodyShares;        // markShareHeads: which halves touch each awake body (bits)
     std::vector<std::size_t> headBlocks;         // markShareHeads: per group, blocks in heads and all blocks
-    std::vector<std::uint8_t> shareOrdered;      // per group: its halves meet in few blocks, so they run in order
     std::vector<std::uint32_t> shareBodies;      // on two threads, each group's bodies by half: head, first, second
     std::vector<std::uint32_t> shareBodyCuts;    // per group: where the first half's head ends, and the second's starts
     std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
@@ -192,6 +191,7 @@ struct WorldImpl {
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
     std::size_t layOutRows(bool byIsland, double h, const Softness& rodSoftness);
     void markShareHeads();
+    bool halvesInOrder(std::size_t g) const;  // on two threads, group g's halves meet in few blocks: run in order
     bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
     /// Joint `joint`'s row for this step (substep h).
     JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;
