@@ -2,6 +2,7 @@
 // destroyed when their bodies' enlarged boxes part (or the pair is deferred: see `deferred`).
 
 #include "Contacts.hpp"
+#include "BodyLanes.hpp"
 #include "Manifolds.hpp"
 #include "Prefetch.hpp"
 #include "Slots.hpp"
@@ -18,13 +19,6 @@ namespace {
 // At least one body must be able to respond; two immovable bodies never make a contact.
 bool shouldCollide(const BodyData& a, const BodyData& b) {
     return a.type == BodyType::Dynamic || b.type == BodyType::Dynamic;
-}
-
-// How far (m) the pair can close in a step at its present velocities, plus what gravity or forces add: the
-// manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact.
-[[gnu::always_inline]] inline double reach(const BodyData& A, const BodyData& B, double dt) {
-    const double turn = std::abs(A.w) * A.extent + std::abs(B.w) * B.extent;
-    return ((B.v - A.v).norm() + turn) * dt;
 }
 
 // Whether a pair with a continuous body needs speculative points this step. Each shape stays inside the circle
@@ -55,13 +49,6 @@ bool shouldCollide(const BodyData& a, const BodyData& b) {
     return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
-// How far (m) any point of B can have moved in A's frame since the cache was made: the shift of B's centre plus
-// the turn times B's extent.
-[[gnu::always_inline]] inline double motionSinceCache(const ManifoldCache& k, const BodyData& A, const BodyData& B) {
-    const Vec2 offset = A.xf.q.applyInverse(B.center - A.center);
-    return (offset - k.offset).norm() + std::abs(B.angle - A.angle - k.angle) * B.extent;
-}
-
 void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData& B, double margin) {
     k.margin = margin;
     k.offset = A.xf.q.applyInverse(B.center - A.center);
@@ -77,121 +64,364 @@ void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData
     }
 }
 
-// The manifold at the present poses from the cache: each surface point moves with its body, the separation is
-// their distance along the normal, which turns with A.
-[[gnu::always_inline]] inline void rebuild(const ManifoldCache& k, const BodyData& A, const BodyData& B, Manifold& m) {
-    m.normal = A.xf.q.apply(k.normal);
-    m.pointCount = k.pointCount;
-    for (int p = 0; p < k.pointCount; ++p) {
-        const Vec2 onA = A.center + A.xf.q.apply(k.points[p].onA);
-        const Vec2 onB = B.center + B.xf.q.apply(k.points[p].onB);
-        ContactPoint& cp = m.points[p];
-        cp.point = 0.5 * (onA + onB);
-        cp.separation = m.normal.dot(onB - onA);
-        cp.id = k.points[p].id;
-    }
+// The narrow phase's formulas on one pair (T = double) or on four (T = Wide, Wide.hpp), with the same operations
+// in the same order, so that a lane's bits are the scalar's. V: the build has vector instructions (the AVX2 one).
+template <class T>
+struct PairSide {
+    T cx, cy;   // centre of mass, m
+    T vx, vy;   // m/s
+    T w;        // rad/s
+    T extent;   // m
+    T qc, qs;   // rotation
+    T angle;    // rad
+};
+
+[[gnu::always_inline]] inline PairSide<double> sideOf(const BodyData& b) {
+    return {b.center.x(), b.center.y(), b.v.x(), b.v.y(), b.w, b.extent, b.xf.q.c, b.xf.q.s, b.angle};
 }
 
-// The pair's manifold with every point up to `margin` (m) apart, into `m` (its impulses untouched). The shapes are
-// collided again only when B has moved more than `tolerance` (m) in A's frame since the last collision, or when
-// the margin grew past what that collision covered; they are collided with 2 tolerances to spare, so a pair at
-// rest keeps its cache though its closing speed, and so its margin, jitters.
-[[gnu::always_inline]] inline void collideOrReuse(ManifoldCache& k, const BodyData& A, const BodyData& B,
-                                                  double margin, double tolerance, Manifold& m) {
-    if (k.margin >= 0.0) {
-        const double motion = motionSinceCache(k, A, B);
-        if (motion <= tolerance && margin + motion <= k.margin) return rebuild(k, A, B, m);
-    }
+template <bool V>
+[[gnu::always_inline]] inline double squareRoot(double x) {
+    return std::sqrt(x);
+}
+template <bool V>
+[[gnu::always_inline]] inline Wide squareRoot(Wide x) {
+    return sqrtLanes<V>(x);
+}
+[[gnu::always_inline]] inline double magnitude(double x) { return std::abs(x); }
+[[gnu::always_inline]] inline Wide magnitude(Wide x) { return clearSign(x); }
+[[gnu::always_inline]] inline double larger(double a, double b) { return std::max(a, b); }
+[[gnu::always_inline]] inline Wide larger(Wide a, Wide b) { return max(a, b); }
+[[gnu::always_inline]] inline bool isNot(bool x) { return !x; }
+[[gnu::always_inline]] inline WideMask isNot(WideMask x) { return ~x; }
+
+// How far (m) the pair can close in a step at its present velocities, plus what gravity or forces add: the
+// manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact.
+template <bool V, class T>
+[[gnu::always_inline]] inline T reach(const PairSide<T>& A, const PairSide<T>& B, double dt) {
+    const T turn = magnitude(A.w) * A.extent + magnitude(B.w) * B.extent;
+    const T dx = B.vx - A.vx, dy = B.vy - A.vy;
+    return (squareRoot<V>(dx * dx + dy * dy) + turn) * dt;
+}
+
+// How far (m) any point of B can have moved in A's frame since the cache was made (its offset and angle): the
+// shift of B's centre plus the turn times B's extent.
+template <bool V, class T>
+[[gnu::always_inline]] inline T motionSinceCache(const T& offsetX, const T& offsetY, const T& angle,
+                                                 const PairSide<T>& A, const PairSide<T>& B) {
+    const T dx = B.cx - A.cx, dy = B.cy - A.cy;
+    const T x = A.qc * dx + A.qs * dy - offsetX, y = -A.qs * dx + A.qc * dy - offsetY;
+    return squareRoot<V>(x * x + y * y) + magnitude(B.angle - A.angle - angle) * B.extent;
+}
+
+// A cached point at the present poses: each surface point moves with its body, the contact point is midway, the
+// separation is their distance along the normal (n, already turned with A).
+template <class T>
+[[gnu::always_inline]] inline void placePoint(const PairSide<T>& A, const PairSide<T>& B, const T& nx, const T& ny,
+                                              const T& onAx, const T& onAy, const T& onBx, const T& onBy, T& px,
+                                              T& py, T& separation) {
+    const T ax = A.cx + (A.qc * onAx - A.qs * onAy), ay = A.cy + (A.qs * onAx + A.qc * onAy);
+    const T bx = B.cx + (B.qc * onBx - B.qs * onBy), by = B.cy + (B.qs * onBx + B.qc * onBy);
+    px = 0.5 * (ax + bx);
+    py = 0.5 * (ay + by);
+    separation = nx * (bx - ax) + ny * (by - ay);
+}
+
+// Whether a point is kept: a speculative one only if the pair approaches there fast enough to close it this step.
+template <class T>
+[[gnu::always_inline]] inline auto keepsPoint(const PairSide<T>& A, const PairSide<T>& B, const T& nx, const T& ny,
+                                              const T& px, const T& py, const T& separation, double speculative,
+                                              double dt) {
+    const T rAx = px - A.cx, rAy = py - A.cy, rBx = px - B.cx, rBy = py - B.cy;
+    const T vx = B.vx + -B.w * rBy - A.vx - -A.w * rAy, vy = B.vy + B.w * rBx - A.vy - A.w * rAx;
+    const T vn = nx * vx + ny * vy, zero{};
+    return isNot(separation > speculative + larger(zero, -vn) * dt);
+}
+
+// The pair's manifold with every point up to `margin` (m) apart, from the shapes collided again: with 2 tolerances
+// to spare, so a pair at rest keeps its cache though its closing speed, and so its margin, jitters.
+Manifold collide(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance) {
     const double wider = margin + 2.0 * tolerance;
     const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, wider);
     keep(k, r.manifold, A, B, wider);
-    m.normal = r.manifold.normal;
-    m.pointCount = r.manifold.pointCount;
-    for (int p = 0; p < m.pointCount; ++p) {
-        m.points[p].point = r.manifold.points[p].point;
-        m.points[p].separation = r.manifold.points[p].separation;
-        m.points[p].id = r.manifold.points[p].id;
+    return r.manifold;
+}
+
+// What a manifold's points held before the narrow phase placed them anew.
+struct KeptImpulses {
+    struct Point {
+        std::uint32_t id;
+        double normal, tangent;
+    } points[2];
+    int count = 0;
+    explicit KeptImpulses(const Manifold& m) : count(m.pointCount) {
+        for (int q = 0; q < count; ++q)
+            points[q] = {m.points[q].id, m.points[q].normalImpulse, m.points[q].tangentImpulse};
+    }
+};
+
+// A point at the present poses, and whether it is kept. Field by field: a vector load of what was just stored as
+// two scalars would wait for both.
+struct PlacedPoint {
+    double x = 0.0, y = 0.0, separation = 0.0;  // m
+    std::uint32_t id = 0;
+    bool keeps = false;
+};
+
+// Writes the `found` placed points that are kept into `m`, in order, each with the impulses it had (warm
+// starting). Returns whether the pair touches.
+[[gnu::always_inline]] inline bool keepPoints(Manifold& m, const KeptImpulses& kept, const PlacedPoint (&placed)[2],
+                                              int found, double speculative) {
+    int count = 0;
+    bool touching = false;
+    for (int p = 0; p < found; ++p) {
+        const PlacedPoint& q = placed[p];
+        if (!q.keeps) continue;
+        ContactPoint& cp = m.points[count++];
+        cp.point.x() = q.x;
+        cp.point.y() = q.y;
+        cp.separation = q.separation;
+        cp.id = q.id;
+        touching = touching || q.separation < speculative;
+        cp.normalImpulse = cp.tangentImpulse = 0.0;
+        for (int k = 0; k < kept.count; ++k)
+            if (kept.points[k].id == q.id) {
+                cp.normalImpulse = kept.points[k].normal;
+                cp.tangentImpulse = kept.points[k].tangent;
+            }
+    }
+    m.pointCount = count;
+    return touching;
+}
+
+// The manifold at the present poses from the cache (`reuse`) or from the shapes collided again with `margin`, each
+// point keeping the impulses it had; a speculative point only where the pair closes on it fast enough to touch
+// this step. Returns whether the pair touches.
+template <class Side>
+[[gnu::always_inline]] inline bool placePoints(ContactData& c, const BodyData& A, const BodyData& B, const Side& a,
+                                               const Side& b, double margin, bool reuse, double speculative,
+                                               double tolerance, double dt) {
+    Manifold& m = c.manifold;
+    ManifoldCache& k = c.cache;
+    const KeptImpulses kept(m);
+    PlacedPoint placed[2];
+    int found = 0;
+    if (reuse) {
+        m.normal = A.xf.q.apply(k.normal);
+        found = k.pointCount;
+        for (int p = 0; p < found; ++p) {
+            const ManifoldCache::Point& cached = k.points[p];
+            placePoint(a, b, m.normal.x(), m.normal.y(), cached.onA.x(), cached.onA.y(), cached.onB.x(),
+                       cached.onB.y(), placed[p].x, placed[p].y, placed[p].separation);
+            placed[p].id = cached.id;
+        }
+    } else {
+        const Manifold fresh = collide(k, A, B, margin, tolerance);
+        m.normal = fresh.normal;
+        found = fresh.pointCount;
+        for (int p = 0; p < found; ++p) {
+            const ContactPoint& cp = fresh.points[p];
+            placed[p] = {cp.point.x(), cp.point.y(), cp.separation, cp.id, false};
+        }
+    }
+    for (int p = 0; p < found; ++p)
+        placed[p].keeps = keepsPoint(a, b, m.normal.x(), m.normal.y(), placed[p].x, placed[p].y,
+                                     placed[p].separation, speculative, dt);
+    return keepPoints(m, kept, placed, found, speculative);
+}
+
+// The manifold at the present poses. The shapes are collided again only when B has moved more than `tolerance` (m)
+// in A's frame since the last collision, or when the margin grew past what that collision covered. Returns whether
+// the pair touches.
+template <bool V>
+[[gnu::always_inline]] inline bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B,
+                                                   double speculative, double tolerance, double dt) {
+    if (!needsPoints(A, B, speculative, dt)) {
+        c.manifold.pointCount = 0;
+        return false;
+    }
+    const PairSide<double> a = sideOf(A), b = sideOf(B);
+    const ManifoldCache& k = c.cache;
+    const double margin = speculative + reach<V>(a, b, dt);
+    bool reuse = false;
+    if (k.margin >= 0.0) {
+        const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
+        reuse = motion <= tolerance && margin + motion <= k.margin;
+    }
+    return placePoints(c, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+}
+
+// Records what the refresh of contact i changed: its flag, and whether it gained its first point or lost its last.
+[[gnu::always_inline]] inline void noteChange(const RefreshPass& p, std::size_t i, ContactData& c, bool hadPoints,
+                                              bool touching) {
+    if (hadPoints != (c.manifold.pointCount > 0)) p.pointsChanged->store(true, std::memory_order_relaxed);
+    if (touching != c.touching) p.flags[i] = touching ? kBegan : kEnded;
+    c.touching = touching;
+}
+
+// A large scene's contacts and bodies are no longer in the cache, and the contacts name their bodies in no order a
+// hardware prefetcher follows: ask for a contact's record twice as far ahead as its bodies' records. A small
+// scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
+constexpr std::size_t kAhead = 4;
+[[gnu::always_inline]] inline void askAhead(const RefreshPass& p, std::size_t i, std::size_t end) {
+    if (i + 2 * kAhead < end) prefetchLines(&p.contacts[p.awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
+    if (i + kAhead < end) {
+        const ContactData& ahead = p.contacts[p.awakeContacts[i + kAhead]];
+        prefetchLines(&p.bodies[ahead.a], sizeof(BodyData));
+        prefetchLines(&p.bodies[ahead.b], sizeof(BodyData));
     }
 }
 
-// The manifold at the present poses, each point keeping the impulses it had (warm starting); a speculative point
-// only where the pair closes on it fast enough to touch this step. Returns whether the pair touches.
-[[gnu::always_inline]] inline bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B,
-                                                   double speculative, double tolerance, double dt) {
-    Manifold& m = c.manifold;
-    if (!needsPoints(A, B, speculative, dt)) {
-        m.pointCount = 0;
-        return false;
+// Whether contact i's enlarged boxes parted (then flagged): a pair that no longer overlaps is destroyed.
+[[gnu::always_inline]] inline bool parted(const RefreshPass& p, std::size_t i, const BodyData& A, const BodyData& B) {
+    if (p.overlapsKnown || p.broadPhase->fatBox(A.proxy).overlaps(p.broadPhase->fatBox(B.proxy))) return false;
+    p.flags[i] = kParted;
+    return true;
+}
+
+// Contact i of the pass, one at a time.
+template <bool V>
+[[gnu::always_inline]] inline void refreshOne(const RefreshPass& p, std::size_t i) {
+    ContactData& c = p.contacts[p.awakeContacts[i]];
+    const BodyData& A = p.bodies[c.a];
+    const BodyData& B = p.bodies[c.b];
+    if (parted(p, i, A, B)) return;
+    if (deferred(A, B, p.speculative, p.dt)) {
+        p.flags[i] = kDeferred;
+        return;
     }
-    struct Impulses {
-        std::uint32_t id;
-        double normal, tangent;
-    } kept[2];
-    const int keptCount = m.pointCount;
-    for (int q = 0; q < keptCount; ++q)
-        kept[q] = {m.points[q].id, m.points[q].normalImpulse, m.points[q].tangentImpulse};
-    collideOrReuse(c.cache, A, B, speculative + reach(A, B, dt), tolerance, m);
-    const int found = m.pointCount;
-    m.pointCount = 0;
-    bool touching = false;
-    for (int p = 0; p < found; ++p) {
-        ContactPoint& cp = m.points[m.pointCount];
-        cp = m.points[p];
-        // Keep a speculative point only if the pair approaches there fast enough to close it this step.
-        const Vec2 rA = cp.point - A.center, rB = cp.point - B.center;
-        const double vn = m.normal.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
-        if (cp.separation > speculative + std::max(0.0, -vn) * dt) continue;
-        touching = touching || cp.separation < speculative;
-        cp.normalImpulse = cp.tangentImpulse = 0.0;
-        for (int q = 0; q < keptCount; ++q)
-            if (kept[q].id == cp.id) {
-                cp.normalImpulse = kept[q].normal;
-                cp.tangentImpulse = kept[q].tangent;
-            }
-        ++m.pointCount;
+    const bool hadPoints = c.manifold.pointCount > 0;
+    noteChange(p, i, c, hadPoints, refreshManifold<V>(c, A, B, p.speculative, p.tolerance, p.dt));
+}
+
+// Four records' 32 bytes from byte `offset` on, transposed: the j-th double of record k in lane k of values[j].
+template <class Record>
+[[gnu::always_inline]] inline void fourLanes(const Record* const (&records)[kLanes], std::size_t offset,
+                                             Wide (&values)[4]) {
+    for (int k = 0; k < kLanes; ++k)
+        values[k] = reinterpret_cast<const RecordHalf*>(reinterpret_cast<const char*>(records[k]) + offset)->values;
+    transpose(values[0], values[1], values[2], values[3]);
+}
+
+// A body's motion as three 32-byte runs of its record, from its rotation on: (q.c, q.s, center), (angle, -, v),
+// (w, extent, -, -).
+constexpr std::size_t kRotationAt = offsetof(BodyData, xf) + offsetof(Transform, q);
+static_assert(offsetof(BodyData, center) == kRotationAt + 16 && offsetof(BodyData, angle) == kRotationAt + 32 &&
+                  offsetof(BodyData, v) == kRotationAt + 48 && offsetof(BodyData, w) == kRotationAt + 64 &&
+                  offsetof(BodyData, extent) == kRotationAt + 72 && kRotationAt + 96 <= sizeof(BodyData),
+              "the motion fields sidesOf reads");
+[[gnu::always_inline]] inline PairSide<Wide> sidesOf(const BodyData* const (&b)[kLanes]) {
+    Wide pose[4], motion[4], spin[4];
+    fourLanes(b, kRotationAt, pose);
+    fourLanes(b, kRotationAt + 32, motion);
+    fourLanes(b, kRotationAt + 64, spin);
+    return {pose[2], pose[3], motion[2], motion[3], spin[0], spin[1], pose[0], pose[1], motion[0]};
+}
+
+// A cache as four 32-byte runs: (margin, -, offset), (angle, -, normal), and each point's (onA, onB).
+constexpr std::size_t kCacheAt = offsetof(ContactData, cache);
+static_assert(offsetof(ManifoldCache, margin) == 0 && offsetof(ManifoldCache, offset) == 16 &&
+                  offsetof(ManifoldCache, angle) == 32 && offsetof(ManifoldCache, normal) == 48 &&
+                  offsetof(ManifoldCache, points) == 64 && offsetof(ManifoldCache::Point, onB) == 16 &&
+                  sizeof(ManifoldCache::Point) == 48 && kCacheAt + 64 + 48 + 32 <= sizeof(ContactData),
+              "the cache fields refreshFour reads");
+
+// Contacts [i, i + kLanes) of the pass. The common case, two discrete bodies with a cached manifold, is worked out
+// four contacts at once, lane by lane with refreshManifold's formulas; any other contact takes refreshOne. The same
+// bits either way. The lanes pay for their gathers where points are placed: four contacts none of which holds a
+// face (a pile of circles: one point or none) take refreshOne too (docs/performance.md, "Thirtieth measurement").
+template <bool V>
+[[gnu::always_inline]] inline void refreshFour(const RefreshPass& p, std::size_t i) {
+    const ContactData* c[kLanes];
+    const BodyData *A[kLanes], *B[kLanes];
+    unsigned lanes = 0;  // a bit per contact that takes the lanes' way
+    bool faces = false;  // some contact holds a face (two points), where the lanes save most
+    for (int k = 0; k < kLanes; ++k) {
+        c[k] = &p.contacts[p.awakeContacts[i + k]];
+        A[k] = &p.bodies[c[k]->a];
+        B[k] = &p.bodies[c[k]->b];
+        const bool discrete =
+            A[k]->detection == CollisionDetection::Discrete && B[k]->detection == CollisionDetection::Discrete;
+        if (discrete && c[k]->cache.margin >= 0.0) lanes |= 1u << k;
+        faces = faces || c[k]->cache.pointCount == 2;
     }
-    return touching;
+    if (lanes == 0 || !faces) {
+        for (int k = 0; k < kLanes; ++k) refreshOne<V>(p, i + k);
+        return;
+    }
+    const PairSide<Wide> a = sidesOf(A), b = sidesOf(B);
+    Wide head[4], turn[4];
+    fourLanes(c, kCacheAt, head);
+    fourLanes(c, kCacheAt + 32, turn);
+    const Wide margin = p.speculative + reach<V>(a, b, p.dt);
+    const Wide motion = motionSinceCache<V>(head[2], head[3], turn[0], a, b);
+    const WideMask reuse = (motion <= p.tolerance) & (margin + motion <= head[0]);
+    unsigned reused = 0;  // a bit per contact whose cache holds
+    for (int k = 0; k < kLanes; ++k) reused |= reuse[k] != 0 && (lanes >> k & 1u) ? 1u << k : 0u;
+    // The shapes collided again: the lanes' margin, or all of refreshOne where the lanes took no part.
+    for (int k = 0; k < kLanes; ++k) {
+        if (reused >> k & 1u) continue;
+        if (!(lanes >> k & 1u)) {
+            refreshOne<V>(p, i + k);
+            continue;
+        }
+        ContactData& contact = p.contacts[p.awakeContacts[i + k]];
+        if (parted(p, i + k, *A[k], *B[k])) continue;
+        const bool hadPoints = contact.manifold.pointCount > 0;
+        const bool touching = placePoints(contact, *A[k], *B[k], sideOf(*A[k]), sideOf(*B[k]), margin[k], false,
+                                          p.speculative, p.tolerance, p.dt);
+        noteChange(p, i + k, contact, hadPoints, touching);
+    }
+    if (reused == 0) return;
+    int points = 0;  // the most points a kept manifold has: many pairs in a pile have none
+    for (int k = 0; k < kLanes; ++k)
+        if (reused >> k & 1u) points = std::max(points, c[k]->cache.pointCount);
+    const Wide nx = a.qc * turn[2] - a.qs * turn[3], ny = a.qs * turn[2] + a.qc * turn[3];
+    Wide px[2], py[2], separation[2];
+    WideMask keeps[2];
+    for (int q = 0; q < points; ++q) {
+        Wide on[4];  // onA.x, onA.y, onB.x, onB.y
+        fourLanes(c, kCacheAt + offsetof(ManifoldCache, points) + q * sizeof(ManifoldCache::Point), on);
+        placePoint(a, b, nx, ny, on[0], on[1], on[2], on[3], px[q], py[q], separation[q]);
+        keeps[q] = keepsPoint(a, b, nx, ny, px[q], py[q], separation[q], p.speculative, p.dt);
+    }
+    for (int k = 0; k < kLanes; ++k) {
+        if (!(reused >> k & 1u)) continue;
+        ContactData& contact = p.contacts[p.awakeContacts[i + k]];
+        if (parted(p, i + k, *A[k], *B[k])) continue;
+        const bool hadPoints = contact.manifold.pointCount > 0;
+        Manifold& m = contact.manifold;
+        const KeptImpulses kept(m);
+        const ManifoldCache& cache = contact.cache;
+        m.normal = {nx[k], ny[k]};
+        PlacedPoint placed[2];
+        for (int q = 0; q < cache.pointCount; ++q)
+            placed[q] = {px[q][k], py[q][k], separation[q][k], cache.points[q].id, keeps[q][k] != 0};
+        noteChange(p, i + k, contact, hadPoints, keepPoints(m, kept, placed, cache.pointCount, p.speculative));
+    }
 }
 
 // The narrow phase's loop over awake contacts [begin, end), built twice (refreshContacts picks): for baseline
 // x86-64, and for AVX2 without FMA, whose three-operand VEX forms spare the copies SSE2's two-operand forms need.
 // With no fused multiply-add in either build, each operation is the same IEEE one: the same bits.
+template <bool V>
 [[gnu::always_inline]] inline void refreshLoop(const RefreshPass& p, std::size_t begin, std::size_t end) {
-    // A large scene's contacts and bodies are no longer in the cache, and the contacts name their bodies in no order
-    // a hardware prefetcher follows: ask for a contact's record twice as far ahead as its bodies' records. A small
-    // scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
-    constexpr std::size_t kAhead = 4;
-    for (std::size_t i = begin; i < end; ++i) {
-        if (p.prefetch && i + 2 * kAhead < end)
-            prefetchLines(&p.contacts[p.awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
-        if (p.prefetch && i + kAhead < end) {
-            const ContactData& ahead = p.contacts[p.awakeContacts[i + kAhead]];
-            prefetchLines(&p.bodies[ahead.a], sizeof(BodyData));
-            prefetchLines(&p.bodies[ahead.b], sizeof(BodyData));
-        }
-        ContactData& c = p.contacts[p.awakeContacts[i]];
-        const BodyData& A = p.bodies[c.a];
-        const BodyData& B = p.bodies[c.b];
-        if (!p.overlapsKnown && !p.broadPhase->fatBox(A.proxy).overlaps(p.broadPhase->fatBox(B.proxy))) {
-            p.flags[i] = kParted;
-            continue;
-        }
-        if (deferred(A, B, p.speculative, p.dt)) {
-            p.flags[i] = kDeferred;
-            continue;
-        }
-        const bool hadPoints = c.manifold.pointCount > 0;
-        const bool touching = refreshManifold(c, A, B, p.speculative, p.tolerance, p.dt);
-        if (hadPoints != (c.manifold.pointCount > 0)) p.pointsChanged->store(true, std::memory_order_relaxed);
-        if (touching != c.touching) p.flags[i] = touching ? kBegan : kEnded;
-        c.touching = touching;
+    std::size_t i = begin;
+    for (; i + kLanes <= end; i += kLanes) {
+        if (p.prefetch)
+            for (std::size_t k = 0; k < kLanes; ++k) askAhead(p, i + k, end);
+        refreshFour<V>(p, i);
+    }
+    for (; i < end; ++i) {
+        if (p.prefetch) askAhead(p, i, end);
+        refreshOne<V>(p, i);
     }
 }
 
-void refreshBaseline(const RefreshPass& p, std::size_t begin, std::size_t end) { refreshLoop(p, begin, end); }
+void refreshBaseline(const RefreshPass& p, std::size_t begin, std::size_t end) { refreshLoop<false>(p, begin, end); }
 #if PHYSIM_HAS_AVX2_CODE
 __attribute__((target("avx2"))) void refreshAvx2(const RefreshPass& p, std::size_t begin, std::size_t end) {
-    refreshLoop(p, begin, end);
+    refreshLoop<true>(p, begin, end);
 }
 #endif
 

@@ -96,6 +96,25 @@ template <bool Vector>
                 __builtin_fma(a[3], b[3], c[3])};
 }
 
+/// The square root lane by lane, rounded as IEEE 754 says (as std::sqrt is): one instruction on the AVX builds.
+template <bool Vector>
+[[gnu::always_inline]] inline Wide sqrtLanes(Wide v) {
+#if PHYSIM_HAS_AVX2_CODE && !defined(__clang__)
+    if constexpr (Vector) {
+        Wide root;
+        asm("vsqrtpd %1, %0" : "=v"(root) : "vm"(v));
+        return root;
+    }
+#endif
+    return Wide{__builtin_sqrt(v[0]), __builtin_sqrt(v[1]), __builtin_sqrt(v[2]), __builtin_sqrt(v[3])};
+}
+
+/// std::abs lane by lane: the sign bit cleared (so -0 gives +0, as std::abs does).
+[[gnu::always_inline]] inline Wide clearSign(Wide v) {
+    constexpr std::int64_t kMagnitude = 0x7fffffffffffffff;
+    return (Wide)((WideMask)v & kMagnitude);
+}
+
 [[gnu::always_inline]] inline bool any(WideMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
 }  // namespace physim
