@@ -89,7 +89,7 @@ template <bool V>
     return sqrtLanes<V>(x);
 }
 [[gnu::always_inline]] inline double magnitude(double x) { return std::abs(x); }
-[[gnu::always_inline]] inline Wide magnitude(Wide x) { return clearSign(x); }
+[[gnu::always_inline]] inline Wide magnitude(Wide x) { return abs(x); }
 [[gnu::always_inline]] inline double larger(double a, double b) { return std::max(a, b); }
 [[gnu::always_inline]] inline Wide larger(Wide a, Wide b) { return max(a, b); }
 [[gnu::always_inline]] inline bool isNot(bool x) { return !x; }
@@ -357,25 +357,12 @@ template <bool V>
     const Wide motion = motionSinceCache<V>(head[2], head[3], turn[0], a, b);
     const WideMask reuse = (motion <= p.tolerance) & (margin + motion <= head[0]);
     unsigned reused = 0;  // a bit per contact whose cache holds
-    for (int k = 0; k < kLanes; ++k) reused |= reuse[k] != 0 && (lanes >> k & 1u) ? 1u << k : 0u;
-    // The shapes collided again: the lanes' margin, or all of refreshOne where the lanes took no part.
-    for (int k = 0; k < kLanes; ++k) {
-        if (reused >> k & 1u) continue;
-        if (!(lanes >> k & 1u)) {
-            refreshOne<V>(p, i + k);
-            continue;
-        }
-        ContactData& contact = p.contacts[p.awakeContacts[i + k]];
-        if (parted(p, i + k, *A[k], *B[k])) continue;
-        const bool hadPoints = contact.manifold.pointCount > 0;
-        const bool touching = placePoints(contact, *A[k], *B[k], sideOf(*A[k]), sideOf(*B[k]), margin[k], false,
-                                          p.speculative, p.tolerance, p.dt);
-        noteChange(p, i + k, contact, hadPoints, touching);
-    }
-    if (reused == 0) return;
-    int points = 0;  // the most points a kept manifold has: many pairs in a pile have none
+    int points = 0;       // the most points a kept manifold has: many pairs in a pile have none
     for (int k = 0; k < kLanes; ++k)
-        if (reused >> k & 1u) points = std::max(points, c[k]->cache.pointCount);
+        if (reuse[k] != 0 && (lanes >> k & 1u)) {
+            reused |= 1u << k;
+            points = std::max(points, c[k]->cache.pointCount);
+        }
     const Wide nx = a.qc * turn[2] - a.qs * turn[3], ny = a.qs * turn[2] + a.qc * turn[3];
     Wide px[2], py[2], separation[2];
     WideMask keeps[2];
@@ -385,19 +372,31 @@ template <bool V>
         placePoint(a, b, nx, ny, on[0], on[1], on[2], on[3], px[q], py[q], separation[q]);
         keeps[q] = keepsPoint(a, b, nx, ny, px[q], py[q], separation[q], p.speculative, p.dt);
     }
+    // Each contact's manifold from its lanes, from its shapes collided again with the lanes' margin, or all of
+    // refreshOne where the lanes took no part.
     for (int k = 0; k < kLanes; ++k) {
-        if (!(reused >> k & 1u)) continue;
+        if (!(lanes >> k & 1u)) {
+            refreshOne<V>(p, i + k);
+            continue;
+        }
         ContactData& contact = p.contacts[p.awakeContacts[i + k]];
         if (parted(p, i + k, *A[k], *B[k])) continue;
         const bool hadPoints = contact.manifold.pointCount > 0;
-        Manifold& m = contact.manifold;
-        const KeptImpulses kept(m);
-        const ManifoldCache& cache = contact.cache;
-        m.normal = {nx[k], ny[k]};
-        PlacedPoint placed[2];
-        for (int q = 0; q < cache.pointCount; ++q)
-            placed[q] = {px[q][k], py[q][k], separation[q][k], cache.points[q].id, keeps[q][k] != 0};
-        noteChange(p, i + k, contact, hadPoints, keepPoints(m, kept, placed, cache.pointCount, p.speculative));
+        bool touching;
+        if (reused >> k & 1u) {
+            Manifold& m = contact.manifold;
+            const KeptImpulses kept(m);
+            const ManifoldCache& cache = contact.cache;
+            m.normal = {nx[k], ny[k]};
+            PlacedPoint placed[2];
+            for (int q = 0; q < cache.pointCount; ++q)
+                placed[q] = {px[q][k], py[q][k], separation[q][k], cache.points[q].id, keeps[q][k] != 0};
+            touching = keepPoints(m, kept, placed, cache.pointCount, p.speculative);
+        } else {
+            touching = placePoints(contact, *A[k], *B[k], sideOf(*A[k]), sideOf(*B[k]), margin[k], false,
+                                   p.speculative, p.tolerance, p.dt);
+        }
+        noteChange(p, i + k, contact, hadPoints, touching);
     }
 }
 

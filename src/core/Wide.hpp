@@ -77,7 +77,11 @@ using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double)
 /// std::max and std::clamp lane by lane, with their exact rules (which operand wins a tie or a NaN).
 [[gnu::always_inline]] inline Wide max(Wide a, Wide b) { return a < b ? b : a; }
 [[gnu::always_inline]] inline Wide clamp(Wide v, Wide lo, Wide hi) { return v < lo ? lo : (hi < v ? hi : v); }
-[[gnu::always_inline]] inline Wide abs(Wide v) { return v < 0.0 ? -v : v; }
+/// std::abs lane by lane: the sign bit cleared (so -0 gives +0, and a NaN keeps no sign, as std::abs does).
+[[gnu::always_inline]] inline Wide abs(Wide v) {
+    constexpr std::int64_t kMagnitude = 0x7fffffffffffffff;
+    return (Wide)((WideMask)v & kMagnitude);
+}
 
 /// a * b + c rounded once, lane by lane: IEEE 754's fused multiply-add, whose bits are defined exactly, so every
 /// build gives the same. Vector (the AVX builds, which have FMA) runs it as one instruction; otherwise each lane
@@ -107,12 +111,6 @@ template <bool Vector>
     }
 #endif
     return Wide{__builtin_sqrt(v[0]), __builtin_sqrt(v[1]), __builtin_sqrt(v[2]), __builtin_sqrt(v[3])};
-}
-
-/// std::abs lane by lane: the sign bit cleared (so -0 gives +0, as std::abs does).
-[[gnu::always_inline]] inline Wide clearSign(Wide v) {
-    constexpr std::int64_t kMagnitude = 0x7fffffffffffffff;
-    return (Wide)((WideMask)v & kMagnitude);
 }
 
 [[gnu::always_inline]] inline bool any(WideMask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
