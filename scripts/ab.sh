@@ -60,7 +60,7 @@ build() {
 # program NAME DIR_AS_A DIR_AS_B
 program() {
   # shellcheck disable=SC2086
-  g++ $flags -I"$PHYSIM_ROOT_DIR/bench/peers" $(pkg-config --cflags eigen3) \
+  g++ $flags -I"$PHYSIM_ROOT_DIR/bench/peers" -I"$PHYSIM_ROOT_DIR/tests" $(pkg-config --cflags eigen3) \
     "$PHYSIM_ROOT_DIR/bench/ab/AbBench.cpp" "$PHYSIM_ROOT_DIR/bench/peers/Scenes.cpp" \
     "$2/PhysimEngine.o" "$2/src/core/libphysim_core.a" "$3/PhysimEngine.o" "$3/src/core/libphysim_core.a" \
     -ltbb -pthread -o "$out/$1"

@@ -3,6 +3,7 @@
 // first so the timed steps are the steady (mostly resting) state. Counters name the substeps and iterations.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -12,29 +13,17 @@ using namespace physim;
 
 constexpr double kDt = 1.0 / 60.0;
 
-void addStatic(World& w, const Vec2& p, double hx, double hy) {
-    BodyDef d;
-    d.type = BodyType::Static;
-    d.shape = makeBox(hx, hy);
-    d.position = p;
-    w.createBody(d);
-}
+using physim::test::addStaticBox;
 
 void pyramid(World& w, int base) {
-    addStatic(w, {0.0, -0.5}, 100.0, 0.5);
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            BodyDef d;
-            d.shape = makeBox(0.5, 0.5);
-            d.position = {-0.5 * (base - row - 1) + i, 0.5 + row};
-            w.createBody(d);
-        }
+    physim::test::addGround(w, 100.0);
+    physim::test::addPyramid(w, base);
 }
 
 void circlesInBox(World& w) {
-    addStatic(w, {0.0, -0.5}, 10.0, 0.5);
-    addStatic(w, {-10.5, 10.0}, 0.5, 10.5);
-    addStatic(w, {10.5, 10.0}, 0.5, 10.5);
+    addStaticBox(w, {0.0, -0.5}, 10.0, 0.5);
+    addStaticBox(w, {-10.5, 10.0}, 0.5, 10.5);
+    addStaticBox(w, {10.5, 10.0}, 0.5, 10.5);
     for (int i = 0; i < 1000; ++i) {
         BodyDef d;
         d.shape = makeCircle(0.25);

@@ -11,6 +11,7 @@
 // FILE and a Markdown table to stdout.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <algorithm>
 #include <ctime>
@@ -35,13 +36,7 @@ struct Scene {
     std::vector<BodyId> bodies;  // the scene's moving bodies, in creation order
 };
 
-void addStatic(World& w, const Vec2& p, double hx, double hy) {
-    BodyDef d;
-    d.type = BodyType::Static;
-    d.shape = makeBox(hx, hy);
-    d.position = p;
-    w.createBody(d);
-}
+using physim::test::addStaticBox;
 
 // The common scene: 400 circles of 0.25 m falling into a 20 m box and churning there, sleep off (the bodies
 // stay simulated, so every step does the same work).
@@ -51,9 +46,9 @@ Scene circles() {
     s.enableSleep = false;
     Scene scene{std::make_unique<World>(s), {}};
     World& w = *scene.world;
-    addStatic(w, {0.0, -0.5}, 10.0, 0.5);
-    addStatic(w, {-10.5, 10.0}, 0.5, 10.5);
-    addStatic(w, {10.5, 10.0}, 0.5, 10.5);
+    addStaticBox(w, {0.0, -0.5}, 10.0, 0.5);
+    addStaticBox(w, {-10.5, 10.0}, 0.5, 10.5);
+    addStaticBox(w, {10.5, 10.0}, 0.5, 10.5);
     for (int i = 0; i < count; ++i) {
         BodyDef d;
         d.shape = makeCircle(0.25);
@@ -92,15 +87,8 @@ Scene cluster(int count) {
 Scene pyramid(bool boxes) {
     Scene scene{std::make_unique<World>(), {}};
     World& w = *scene.world;
-    addStatic(w, {0.0, -0.5}, 100.0, 0.5);
-    if (!boxes) return scene;
-    for (int row = 0; row < 20; ++row)
-        for (int i = 0; i < 20 - row; ++i) {
-            BodyDef d;
-            d.shape = makeBox(0.5, 0.5);
-            d.position = {-0.5 * (19 - row) + i, 0.5 + row};
-            scene.bodies.push_back(w.createBody(d));
-        }
+    physim::test::addGround(w, 100.0);
+    if (boxes) scene.bodies = physim::test::addPyramid(w, 20);
     return scene;
 }
 

@@ -1,5 +1,7 @@
 #include "Scenes.hpp"
 
+#include "support/Pyramid.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -30,13 +32,10 @@ int numberAfter(const std::string& prefix, const std::string& name) {
 }  // namespace
 
 void addPyramid(Scene& scene, int base, double originX, double originY) {
-    const double a = kBoxHalf;
-    // Row i holds base - i boxes side by side; the last box added is the single one on top.
-    for (int i = 0; i < base; ++i)
-        for (int j = i; j < base; ++j)
-            scene.dynamics.push_back(box(originX + (i + 1) * a + 2.0 * (j - i) * a - a * base,
-                                         originY + (2 * i + 1) * a, a, a));
-    scene.tops.push_back(scene.dynamics.size() - 1);
+    physim::scenes::forEachPyramidBox(base, 2.0 * kBoxHalf, originX, originY, [&](double x, double y) {
+        scene.dynamics.push_back(box(x, y, kBoxHalf, kBoxHalf));
+    });
+    scene.tops.push_back(scene.dynamics.size() - 1);  // the top box comes last
 }
 
 Scene pyramidScene(const std::string& name, int base) {

@@ -1,6 +1,7 @@
 #include "StudyScenes.hpp"
 
 #include "../peers/Scenes.hpp"
+#include "support/Scenes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -27,17 +28,10 @@ using physim::World;
 
 double gravity(const World& w) { return -w.settings().gravity.y(); }
 
-BodyId addStatic(World& w, double halfWidth, double halfHeight, const Vec2& at, double angle = 0.0) {
-    BodyDef d;
-    d.type = BodyType::Static;
-    d.shape = physim::makeBox(halfWidth, halfHeight);
-    d.position = at;
-    d.angle = angle;
-    return w.createBody(d);
-}
+using physim::test::addStaticBox;
 
 // Ground: a static box whose top face is y = 0.
-BodyId addGround(World& w, double halfWidth = 50.0) { return addStatic(w, halfWidth, 0.5, {0.0, -0.5}); }
+BodyId addGround(World& w, double halfWidth = 50.0) { return physim::test::addGround(w, halfWidth); }
 
 // --- closed forms -------------------------------------------------------------------------------------
 
@@ -121,7 +115,7 @@ public:
     void build(World& w) override {
         const Vec2 normal(-std::sin(kAngle), std::cos(kAngle));
         // Slope: a long thin box through the origin; its top face passes 0.1 m above the origin along normal.
-        const BodyId slope = addStatic(w, 20.0, 0.1, Vec2::Zero(), kAngle);
+        const BodyId slope = addStaticBox(w, Vec2::Zero(), 20.0, 0.1, kAngle);
         w.setMaterial(slope, 0.0, 0.6, 0.4);
         BodyDef d;
         d.shape = physim::makeBox(kHalf, kHalf);
@@ -258,7 +252,7 @@ class Bullets : public SceneRun {
 public:
     void build(World& w) override {
         // 400 m high: a bullet stopped at a slant slides along it, and must not slide off its end within the run.
-        addStatic(w, 0.01, 200.0, Vec2::Zero());
+        addStaticBox(w, Vec2::Zero(), 0.01, 200.0);
         for (int i = 0; i < 40; ++i) {
             BodyDef d;
             d.shape = physim::makeCircle(0.02);
@@ -291,8 +285,8 @@ class Gas : public SceneRun {
 public:
     void build(World& w) override {
         const double half = 2.0;
-        for (const Vec2& c : {Vec2(0, -half - 0.5), Vec2(0, half + 0.5)}) w.setMaterial(addStatic(w, half + 1, 0.5, c), 1, 0, 0);
-        for (const Vec2& c : {Vec2(-half - 0.5, 0), Vec2(half + 0.5, 0)}) w.setMaterial(addStatic(w, 0.5, half + 1, c), 1, 0, 0);
+        for (const Vec2& c : {Vec2(0, -half - 0.5), Vec2(0, half + 0.5)}) w.setMaterial(addStaticBox(w, c, half + 1, 0.5), 1, 0, 0);
+        for (const Vec2& c : {Vec2(-half - 0.5, 0), Vec2(half + 0.5, 0)}) w.setMaterial(addStaticBox(w, c, 0.5, half + 1), 1, 0, 0);
         std::uint64_t state = 12345;  // a fixed linear congruential sequence: the same gas on every run
         auto uniform = [&state] {
             state = state * 6364136223846793005ULL + 1442695040888963407ULL;

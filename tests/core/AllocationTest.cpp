@@ -51,22 +51,16 @@ constexpr double kDt = 1.0 / 60.0;
 
 // A base-20 pyramid (210 boxes, about 600 contact points) on a static ground, sleep off so that every step does
 // the whole work: broad phase, narrow phase, colouring, the solve and the islands.
-void addPyramid(World& world, int base, double x) {
-    for (int row = 0; row < base; ++row)
-        for (int col = 0; col < base - row; ++col)
-            test::addBox(world, {x + (col - 0.5 * (base - row - 1)) * 1.0, 0.5 + row * 1.0}, 0.5, 0.5);
-}
-
 void buildPyramid(World& world) {
     test::addGround(world, 30.0);
-    addPyramid(world, 20, 0.0);
+    test::addPyramid(world, 20);
 }
 
 // Twelve base-8 pyramids 10 m apart (432 boxes in twelve islands): the solver groups islands and solves the
 // groups apart, with buffers of its own.
 void buildPiles(World& world) {
     test::addGround(world, 70.0);
-    for (int p = 0; p < 12; ++p) addPyramid(world, 8, 10.0 * (p - 6));
+    for (int p = 0; p < 12; ++p) test::addPyramid(world, 8, 10.0 * (p - 6));
 }
 
 long allocationsOverSteps(World& world, int steps) {

@@ -7,6 +7,7 @@
 #include "Contacts.hpp"
 #include "Manifolds.hpp"
 #include "physim/core/World.hpp"
+#include "support/Pyramid.hpp"
 #include "support/WideCodes.hpp"
 
 #include <gtest/gtest.h>
@@ -42,9 +43,9 @@ BodyId add(World& world, BodyType type, Geometry shape, Vec2 at, double angle = 
 std::vector<BodyId> buildScene(World& world) {
     std::vector<BodyId> ids;
     ids.push_back(add(world, BodyType::Static, makeBox(30.0, 0.5), {0.0, -0.5}));
-    for (int row = 0; row < 6; ++row)
-        for (int col = 0; col < 6 - row; ++col)
-            ids.push_back(add(world, BodyType::Dynamic, makeBox(0.5, 0.5), {(col - 0.5 * (5 - row)) * 1.0, 0.5 + row}));
+    scenes::forEachPyramidBox(6, 1.0, 0.0, 0.0, [&](double x, double y) {
+        ids.push_back(add(world, BodyType::Dynamic, makeBox(0.5, 0.5), {x, y}));
+    });
     ids.push_back(add(world, BodyType::Dynamic, makeBox(0.4, 0.2), {8.0, 0.2}, 0.0, {1.5, 0.0}));
     ids.push_back(add(world, BodyType::Static, makeBox(1.0, 1.0), {-12.0, 1.0}));
     ids.push_back(add(world, BodyType::Dynamic, makeBox(0.5, 0.5), {-11.2, 2.5}));

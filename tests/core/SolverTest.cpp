@@ -3,6 +3,7 @@
 // alone in its world, and the grouping must not depend on the thread count.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,14 +24,6 @@ WorldSettings crowdSettings(int threads = 1) {
     s.enableSleep = false;  // every pile stays awake: the solver sees every island in every step
     s.threads = threads;
     return s;
-}
-
-void addGround(World& world, double halfWidth) {
-    BodyDef g;
-    g.type = BodyType::Static;
-    g.shape = makeBox(halfWidth, 0.5);
-    g.position = {0.0, -0.5};
-    world.createBody(g);
 }
 
 /// A slightly tilted pyramid of 28 boxes centred at x with a bouncing ball dropped on it: 29 bodies whose contacts
@@ -76,14 +69,14 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
 TEST(Solver, EachIslandMovesAsIfItWereAlone) {
     const int piles = 16, steps = 150;
     World crowd(crowdSettings());
-    addGround(crowd, 60.0);
+    test::addGround(crowd, 60.0);
     std::vector<std::vector<BodyId>> crowdIds;
     for (int p = 0; p < piles; ++p) crowdIds.push_back(addPile(crowd, kPileSpacing * (p - piles / 2), p));
     for (int i = 0; i < steps; ++i) crowd.step(kDt);
 
     for (const int p : {0, 9, 15}) {
         World alone(crowdSettings());
-        addGround(alone, 60.0);
+        test::addGround(alone, 60.0);
         const std::vector<BodyId> ids = addPile(alone, kPileSpacing * (p - piles / 2), p);
         for (int i = 0; i < steps; ++i) alone.step(kDt);
         const std::vector<double> expected = poses(alone, ids), got = poses(crowd, crowdIds[p]);
@@ -99,7 +92,7 @@ TEST(Solver, EachIslandMovesAsIfItWereAlone) {
 TEST(Solver, AnIslandKeepsItsBitsBesideAJointAndABullet) {
     const int steps = 150;
     World crowd(crowdSettings());
-    addGround(crowd, 60.0);
+    test::addGround(crowd, 60.0);
     const std::vector<BodyId> pile = addPile(crowd, 0.0, 4);
     const std::vector<BodyId> left = addPile(crowd, -2.0 * kPileSpacing, 1), right = addPile(crowd, -kPileSpacing, 2);
     RevoluteJointDef pin;
@@ -118,7 +111,7 @@ TEST(Solver, AnIslandKeepsItsBitsBesideAJointAndABullet) {
     ASSERT_EQ(crowd.bodyCount(), 1u + 3u * 29u + 1u) << "one group: under 256 bodies";
 
     World alone(crowdSettings());
-    addGround(alone, 60.0);
+    test::addGround(alone, 60.0);
     const std::vector<BodyId> ids = addPile(alone, 0.0, 4);
     for (int i = 0; i < steps; ++i) alone.step(kDt);
     EXPECT_TRUE(sameBits(poses(alone, ids), poses(crowd, pile)));
@@ -126,26 +119,13 @@ TEST(Solver, AnIslandKeepsItsBitsBesideAJointAndABullet) {
     EXPECT_GT(crowd.position(shot).y(), 0.0) << "the bullet bounced off the ground";
 }
 
-/// A pyramid of 1 m boxes, `base` in its bottom row, whose bottom-left box is centred at x = left on the ground.
-std::vector<BodyId> addPyramid(World& world, int base, double left) {
-    std::vector<BodyId> ids;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            BodyDef d;
-            d.shape = makeBox(0.5, 0.5);
-            d.position = {left + i + 0.5 * row, 0.5 + row};
-            ids.push_back(world.createBody(d));
-        }
-    return ids;
-}
-
 // A crowd with a large island (a base-46 pyramid, 1081 boxes: a group that spreads its loops over the threads),
 // small piles (groups that go to the threads whole), two piles joined by a joint and two touched by one kinematic
 // paddle (each pair one island): the same bits on 1, 2 and every hardware thread.
 std::vector<double> crowdScene(int threads) {
     World world(crowdSettings(threads));
-    addGround(world, 120.0);
-    std::vector<BodyId> ids = addPyramid(world, 46, -70.0);
+    test::addGround(world, 120.0);
+    std::vector<BodyId> ids = test::addPyramid(world, 46, -47.5);
     std::vector<std::vector<BodyId>> piles;
     for (int p = 0; p < 12; ++p) {
         piles.push_back(addPile(world, kPileSpacing * p, p));
@@ -261,7 +241,7 @@ TEST(Solver, AKeptRowLayoutGivesTheBitsOfOneLaidOutAgain) {
 // Each change that decides the layout lays the rows out again in the next step, and the step after keeps it.
 TEST(Solver, ChangesThatDecideTheRowLayoutLayItOutAgain) {
     World world(crowdSettings());
-    addGround(world, 60.0);
+    test::addGround(world, 60.0);
     const std::vector<BodyId> ids = addPile(world, 0.0, 4);
     for (int i = 0; i < 240; ++i) world.step(kDt);  // the ball has bounced off and the pile settled
     world.step(kDt);
@@ -309,8 +289,8 @@ std::vector<double> pyramidWithBall(int threads, int substeps, int solves, int r
     settings.velocityIterations = solves;
     settings.relaxIterations = relaxes;
     World world(settings);
-    addGround(world, 30.0);
-    std::vector<BodyId> ids = addPyramid(world, 20, -9.5);
+    test::addGround(world, 30.0);
+    std::vector<BodyId> ids = test::addPyramid(world, 20);
     BodyDef ball;
     ball.shape = makeCircle(0.3);
     ball.position = {0.2, 22.0};

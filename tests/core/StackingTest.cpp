@@ -4,6 +4,7 @@
 // solver neither lets the stack creep nor jitter it visibly over 29 s (1740 steps).
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,11 +20,7 @@ World makeWorld() {
     WorldSettings s;
     s.enableSleep = false;
     World world(s);
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(50.0, 0.5);
-    ground.position = {0.0, -0.5};  // top face at y = 0
-    world.createBody(ground);
+    test::addGround(world, 50.0);
     return world;
 }
 
@@ -62,10 +59,7 @@ TEST(Stacking, TenBoxColumnStandsThirtySeconds) {
 TEST(Stacking, PyramidWithTwentyBoxBaseStandsThirtySeconds) {
     World world = makeWorld();
     const int base = 20;
-    BodyId top;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i)
-            top = addBox(world, {-0.5 * (base - row - 1) + 1.0 * i, 0.5 + 1.0 * row});
+    const BodyId top = test::addPyramid(world, base).back();
     ASSERT_EQ(world.bodyCount(), 1u + base * (base + 1) / 2);
     const double drift = driftAfterFirstSecond(world, top);
     RecordProperty("top_drift_m", std::to_string(drift));

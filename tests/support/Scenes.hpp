@@ -3,6 +3,7 @@
 // ctest runs twice to compare). Header-only; no global state.
 
 #include "physim/core/World.hpp"
+#include "support/Pyramid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,13 +32,20 @@ inline double pointCompliance(double halfWidth, double halfHeight) {
     return (1.0 + 3.0 * a2 / (a2 + b2)) / 2.0;
 }
 
+/// A static box of half-extents (m) centred at `position`, turned by `angle` rad.
+inline BodyId addStaticBox(World& world, const Vec2& position, double halfWidth, double halfHeight,
+                           double angle = 0.0) {
+    BodyDef def;
+    def.type = BodyType::Static;
+    def.shape = makeBox(halfWidth, halfHeight);
+    def.position = position;
+    def.angle = angle;
+    return world.createBody(def);
+}
+
 /// A static slab whose top face is the line y = 0, `halfWidth` m each side of x = 0.
 inline BodyId addGround(World& world, double halfWidth = 200.0) {
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(halfWidth, 0.5);
-    ground.position = {0.0, -0.5};
-    return world.createBody(ground);
+    return addStaticBox(world, {0.0, -0.5}, halfWidth, 0.5);
 }
 
 /// The farthest (m) any of `ids` gets from where it was before `steps` steps of 60 Hz.
@@ -59,6 +67,15 @@ inline BodyId addBox(World& world, const Vec2& position, double halfWidth, doubl
     def.position = position;
     def.density = density;
     return world.createBody(def);
+}
+
+/// A pyramid of touching 1 m boxes (scenes::forEachPyramidBox), `base` in its bottom row, standing on y = 0 centred on
+/// x = centerX. Returns the boxes in creation order: the top one last.
+inline std::vector<BodyId> addPyramid(World& world, int base, double centerX = 0.0) {
+    std::vector<BodyId> ids;
+    scenes::forEachPyramidBox(base, 1.0, centerX, 0.0,
+                              [&](double x, double y) { ids.push_back(addBox(world, {x, y}, 0.5, 0.5)); });
+    return ids;
 }
 
 /// Kinetic energy (J) of the bodies, translation and rotation about the centre of mass.
@@ -214,14 +231,9 @@ struct PyramidRun {
 inline PyramidRun runPyramid(int base, int steps, const WorldSettings& settings = awakeSettings()) {
     World world(settings);
     addGround(world);
-    std::vector<BodyId> ids;
+    const std::vector<BodyId> ids = addPyramid(world, base);
     std::vector<double> x0;
-    for (int row = 0; row < base; ++row)
-        for (int i = 0; i < base - row; ++i) {
-            const Vec2 at{-0.5 * (base - row - 1) + 1.0 * i, 0.5 + 1.0 * row};
-            ids.push_back(addBox(world, at, 0.5, 0.5));
-            x0.push_back(at.x());
-        }
+    for (const BodyId id : ids) x0.push_back(world.position(id).x());
     const BodyId top = ids.back();
     PyramidRun r;
     Vec2 settled = Vec2::Zero();
