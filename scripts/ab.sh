@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Times two revisions of the core against each other in one process (docs/performance.md, "Tenth measurement"):
+# Times two revisions of the core against each other in one process (docs/performance.md, "scripts/ab.sh"):
 # the ratio holds where separate runs of each drift by tens of percent.
 #   scripts/ab.sh REV_A [REV_B] [-- ab_bench options]     e.g. scripts/ab.sh HEAD~1 -- --scenes pyramid40 --rounds 6
 # REV_B defaults to the working tree ("work"). Each revision's core is built (build/ab/) twice, with its namespace

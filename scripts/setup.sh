@@ -2,7 +2,7 @@
 # Installs everything physim needs on a Debian machine. Idempotent: a second run only checks.
 #   - Debian packages: compilers, CMake, Eigen, oneTBB, SFML (and X11), Dear ImGui, GoogleTest,
 #     Google Benchmark, nlohmann-json, Xvfb, Box2D 2.4.1 (the peer engine bench/peers measures against),
-#     clang with its sanitizer and libFuzzer runtimes (the asan preset)
+#     clang with its sanitizer and libFuzzer runtimes (the asan preset), Doxygen (the `docs` target)
 #   - ROOT (CERN) from its official PyPI wheel, into a virtual environment outside the build tree
 #   - Dask (`dask`, `distributed` from PyPI) in the same environment: scripts/study.sh --dask runs cases on a cluster
 set -euo pipefail
@@ -12,7 +12,7 @@ APT_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libtbb-dev libsfml-dev libx11-dev libxcb1-dev libimgui-dev libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libbox2d-dev xvfb xauth libgl1-mesa-dri fonts-dejavu-core
-  clang libclang-rt-14-dev
+  clang libclang-rt-14-dev doxygen
   python3 python3-venv
 )
 

@@ -5,8 +5,7 @@
 // Leaves are proxies holding the caller's (already enlarged) box and a user value; internal nodes hold the union
 // of their two children's boxes. Insertion picks the sibling that adds the least total perimeter to the tree
 // (the surface-area heuristic in 2D, searched exactly by branch and bound) and then walks up refitting boxes and
-// applying tree rotations that lower the perimeter. docs/collision.md ("Dynamic tree") has the design
-// and the measurements.
+// applying tree rotations that lower the perimeter. docs/collision.md ("Dynamic tree") has the design.
 //
 // Deterministic: the same calls in the same order give the same nodes, bit for bit. const members (query above
 // all) only read, so several threads may query one tree at once while nobody modifies it.

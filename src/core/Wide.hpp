@@ -7,8 +7,8 @@
 //     each operation);
 //   - AVX2 with FMA: one 256-bit register per four lanes;
 //   - AVX-512 (F, VL, DQ; FMA): the same four lanes in 256-bit registers, but 32 of them instead of 16, so fewer of a
-//     block's values spill to the stack (docs/performance.md, "Ninth measurement"). Eight lanes in 512-bit
-//     registers measured no faster (same place).
+//     block's values spill to the stack. Eight lanes in 512-bit registers were no faster (docs/performance.md,
+//     "Lessons that still bind").
 // All give the same bits because the build turns contraction off (-ffp-contract=off): the compiler never fuses a
 // multiply and an add on its own, which the AVX builds could and the baseline could not. Where a fused
 // multiply-add is wanted it is written (mulAdd): rounded once by IEEE 754's rule, it has the same bits on every
@@ -86,8 +86,8 @@ using WideMask = std::int64_t __attribute__((vector_size(kLanes * sizeof(double)
 /// a * b + c rounded once, lane by lane: IEEE 754's fused multiply-add, whose bits are defined exactly, so every
 /// build gives the same. Vector (the AVX builds, which have FMA) runs it as one instruction; otherwise each lane
 /// calls the C library's fma. GCC gets the instruction in inline assembly: an intrinsic cannot be inlined into
-/// these templates, which are compiled for baseline x86-64 before the AVX functions inline them, and GCC 12 made
-/// scalar fmas and shuffles of some of the four lanes' builtins (measured up to 20% slower). Clang takes the builtins.
+/// these templates, which are compiled for baseline x86-64 before the AVX functions inline them, and GCC 12 makes
+/// scalar fmas and shuffles of some of the four lanes' builtins, which is slower. Clang takes the builtins.
 template <bool Vector>
 [[gnu::always_inline]] inline Wide mulAdd(Wide a, Wide b, Wide c) {
 #if PHYSIM_HAS_AVX2_CODE && !defined(__clang__)

