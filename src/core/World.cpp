@@ -94,9 +94,9 @@ void validate(const WorldSettings& s) {
             throw std::invalid_argument(std::string("physim: ") + name + " must be in [" + std::to_string(lo) +
                                         ", " + std::to_string(hi) + "], got " + std::to_string(value));
     };
-    requireCount("substeps", s.substeps, 1, 1000);
-    requireCount("velocityIterations", s.velocityIterations, 1, 1000);
-    requireCount("relaxIterations", s.relaxIterations, 0, 1000);
+    requireCount("substeps", s.substeps, 1, WorldSettings::maxSubsteps);
+    requireCount("velocityIterations", s.velocityIterations, 1, WorldSettings::maxIterations);
+    requireCount("relaxIterations", s.relaxIterations, 0, WorldSettings::maxIterations);
     requireCount("threads", s.threads, 0, 256);
     requirePositive("contactHertz", s.contactHertz);
     requireNonNegative("contactDampingRatio", s.contactDampingRatio);
