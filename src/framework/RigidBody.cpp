@@ -14,8 +14,8 @@ RigidBody::RigidBody(Entity* parent) : Behavior(parent) {}
 
 // Before the body joins a world: the world's own rule (MassData.hpp) on the settings it will be created with.
 MassData RigidBody::pendingMassData() const {
-    const MassProperties unit = computeMassProperties(def_.shape);
-    return massDataForMass(unit, massOverride_ > 0.0 ? massOverride_ : def_.density * unit.area);
+    if (massOverride_ > 0.0) return massDataForMass(computeMassProperties(def_.shape), massOverride_);
+    return massDataForDensity(def_.shape, def_.density);
 }
 
 double RigidBody::mass() const {
@@ -62,9 +62,9 @@ void RigidBody::setMass(double mass) {
 void RigidBody::setDensity(double density) {
     requirePositive("rigid body density", density);
     if (world_) {
-        const MassProperties unit = computeMassProperties(world_->shape(id_));
+        const double mass = massDataForDensity(world_->shape(id_), density).mass;
         world_->setType(id_, BodyType::Dynamic);
-        world_->setMass(id_, density * unit.area);
+        world_->setMass(id_, mass);
         return;
     }
     def_.type = BodyType::Dynamic;
