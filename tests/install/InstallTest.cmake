@@ -18,6 +18,12 @@ foreach(f IN LISTS package_files)
     endif()
   endforeach()
 endforeach()
+# The runner's internals stay out of the installed API (they live in src/framework).
+foreach(internal IN ITEMS Controls FixedStepAccumulator PaceMeter Stats Summary)
+  if(EXISTS "${WORK_DIR}/prefix/include/physim/framework/${internal}.hpp")
+    message(FATAL_ERROR "the runner's internal ${internal}.hpp was installed")
+  endif()
+endforeach()
 # No ROOT_DIR given: the package must find ROOT by itself.
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/consumer" -B "${WORK_DIR}/consumer"
   -G Ninja -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc)
