@@ -1,6 +1,9 @@
 # Finds physim's dependencies. scripts/setup.sh installs them; ROOT comes from its PyPI wheel in a venv.
 
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+# oneTBB: the step's worker threads (src/core/Executor.hpp). Found here, for the whole tree, since the ROOT wheel
+# below may supply the library that programs run (physim_link_root_tbb).
+find_package(TBB REQUIRED)
 
 if(PHYSIM_BUILD_FRAMEWORK)
   find_package(SFML 2.5 REQUIRED COMPONENTS graphics window system)
@@ -17,6 +20,7 @@ if(PHYSIM_BUILD_FRAMEWORK)
   endif()
   find_package(ROOT 6.30 CONFIG REQUIRED COMPONENTS Core Hist Gpad Graf RIO Tree)
   physim_root_wheel_link_dir(PHYSIM_ROOT_LIBS_DIR "${ROOT_DIR}")
+  physim_link_root_tbb()
 endif()
 
 if(PHYSIM_BUILD_TESTS)

@@ -111,23 +111,22 @@ void Gallery::drawParameters(Runner& runner) {
 void Gallery::drawRunControls(Runner& runner) {
     ImGui::Separator();
     Simulation& sim = runner.simulation();
-    Controls& controls = runner.controls();
     ImGui::Checkbox("Paused", &sim.paused);
     ImGui::SameLine();
     if (ImGui::Button("Step")) {
         sim.paused = true;
-        controls.requestSingleStep();
+        runner.requestSingleStep();
     }
     ImGui::SameLine();
     if (ImGui::Button("Restart")) runner.restart();
     ImGui::SameLine();
-    if (ImGui::Button("Fit view")) controls.requestFit();
-    float scale = static_cast<float>(controls.timeScale());
+    if (ImGui::Button("Fit view")) runner.requestFit();
+    float scale = static_cast<float>(runner.timeScale());
     ImGui::TextUnformatted("Time scale (simulated s per real s)");
     ImGui::SetNextItemWidth(-1.f);
-    if (ImGui::SliderFloat("##timescale", &scale, static_cast<float>(Controls::minTimeScale),
-                           static_cast<float>(Controls::maxTimeScale), "%.3gx", ImGuiSliderFlags_Logarithmic))
-        controls.setTimeScale(std::clamp<double>(scale, Controls::minTimeScale, Controls::maxTimeScale));
+    if (ImGui::SliderFloat("##timescale", &scale, static_cast<float>(Runner::minTimeScale),
+                           static_cast<float>(Runner::maxTimeScale), "%.3gx", ImGuiSliderFlags_Logarithmic))
+        runner.setTimeScale(std::clamp<double>(scale, Runner::minTimeScale, Runner::maxTimeScale));
 }
 
 void Gallery::drawDebugSwitches(Runner& runner) {
@@ -143,8 +142,8 @@ void Gallery::drawDebugSwitches(Runner& runner) {
     ImGui::Checkbox("Centres of mass", &d.centres);
     ImGui::SameLine(150.f);
     ImGui::Checkbox("Sleep (dimmed)", &d.sleep);
-    bool stats = runner.controls().statsShown();
-    if (ImGui::Checkbox("Statistics", &stats)) runner.controls().setStatsShown(stats);
+    bool stats = runner.statsShown();
+    if (ImGui::Checkbox("Statistics", &stats)) runner.setStatsShown(stats);
 }
 
 }  // namespace physim::examples

@@ -6,6 +6,7 @@
 #include "WorldImpl.hpp"
 
 #include "physim/core/Collide.hpp"
+#include "physim/core/MassData.hpp"
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>
@@ -59,19 +60,18 @@ void validate(const BodyDef& def) {
     checkPrecision(def.precision);
 }
 
-// Mass and inertia of a dynamic body with `mass` kg spread uniformly over its shape; it turns about the shape's
-// centroid. Throws (naming the value) unless the mass and the inertia come out positive and finite.
+// Mass and inertia of a dynamic body with `mass` kg spread over its shape, by the one mass rule (MassData.hpp).
+// Throws (naming the value) unless the mass and the inertia come out positive and finite.
 void assignMass(BodyData& b, double mass) {
     requireInRange("body mass (kg)", mass, kMinMass, kMaxMass);
-    const double density = mass / b.unitMass.area;
-    const double inertia = density * b.unitMass.secondMoment;
-    requireInRange("body inertia (kg m^2, from the mass and shape)", inertia, kMinInertia,
+    const MassData data = massDataForMass(b.unitMass, mass);
+    requireInRange("body inertia (kg m^2, from the mass and shape)", data.inertia, kMinInertia,
                    std::numeric_limits<double>::max());
     b.mass = mass;
-    b.density = density;
+    b.density = data.density;
     b.invMass = 1.0 / mass;
-    b.inertia = inertia;
-    b.invInertia = b.fixedRotation ? 0.0 : 1.0 / inertia;
+    b.inertia = data.inertia;
+    b.invInertia = b.fixedRotation ? 0.0 : 1.0 / data.inertia;
 }
 
 void clearMass(BodyData& b) { b.mass = b.inertia = b.invMass = b.invInertia = 0.0; }
@@ -94,9 +94,9 @@ void validate(const WorldSettings& s) {
             throw std::invalid_argument(std::string("physim: ") + name + " must be in [" + std::to_string(lo) +
                                         ", " + std::to_string(hi) + "], got " + std::to_string(value));
     };
-    requireCount("substeps", s.substeps, 1, 1000);
-    requireCount("velocityIterations", s.velocityIterations, 1, 1000);
-    requireCount("relaxIterations", s.relaxIterations, 0, 1000);
+    requireCount("substeps", s.substeps, 1, WorldSettings::maxSubsteps);
+    requireCount("velocityIterations", s.velocityIterations, 1, WorldSettings::maxIterations);
+    requireCount("relaxIterations", s.relaxIterations, 0, WorldSettings::maxIterations);
     requireCount("threads", s.threads, 0, 256);
     requirePositive("contactHertz", s.contactHertz);
     requireNonNegative("contactDampingRatio", s.contactDampingRatio);

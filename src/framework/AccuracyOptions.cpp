@@ -1,39 +1,17 @@
 #include "AccuracyOptions.hpp"
 
+#include "NumberOption.hpp"
+
+#include "physim/core/WorldSettings.hpp"
 #include "physim/framework/RigidBody.hpp"
 #include "physim/framework/Simulation.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
-
 namespace physim {
-namespace {
-
-double number(const std::string& flag, const std::string& text) {
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || !std::isfinite(v))
-        throw UsageError(flag + " expects a number, got '" + text + "'");
-    return v;
-}
-
-// The same bounds the core's WorldSettings validation holds (a count of passes per step).
-int count(const std::string& flag, const std::string& text) {
-    const double v = number(flag, text);
-    if (!(v >= 1 && v <= 1000) || v != std::floor(v))
-        throw UsageError(flag + " must be a whole number in [1, 1000], got " + text);
-    return static_cast<int>(v);
-}
-
-}  // namespace
-
 bool parseAccuracyOption(const std::string& flag, const std::function<const std::string&()>& value, RunOptions& o) {
     if (flag == "--substeps") {
-        o.substeps = count(flag, value());
+        o.substeps = parseCountOption(flag, value(), 1, WorldSettings::maxSubsteps);
     } else if (flag == "--iterations") {
-        o.iterations = count(flag, value());
+        o.iterations = parseCountOption(flag, value(), 1, WorldSettings::maxIterations);
     } else if (flag == "--ccd") {
         const std::string& text = value();
         if (text == "discrete") o.ccd = CollisionDetection::Discrete;
@@ -42,7 +20,7 @@ bool parseAccuracyOption(const std::string& flag, const std::function<const std:
         else throw UsageError("--ccd must be discrete, sampled or exact, got '" + text + "'");
     } else if (flag == "--precision") {
         const std::string& text = value();
-        const double p = number(flag, text);
+        const double p = parseNumberOption(flag, text);
         if (!(p > 0.0 && p <= 1.0)) throw UsageError("--precision must be in (0, 1] (a fraction of the step), got " + text);
         o.precision = p;
     } else {

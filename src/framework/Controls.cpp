@@ -1,7 +1,8 @@
-#include "physim/framework/Controls.hpp"
+#include "Controls.hpp"
 
 #include "physim/core/Collide.hpp"
 #include "physim/core/Validate.hpp"
+#include "physim/framework/Runner.hpp"
 #include "physim/framework/Simulation.hpp"
 
 #include <SFML/Window/Event.hpp>
@@ -44,12 +45,12 @@ std::optional<BodyId> bodyAt(const World& world, const Vec2& point, double pixel
 }  // namespace
 
 void Controls::setTimeScale(double scale) {
-    requireInRange("time scale", scale, minTimeScale, maxTimeScale);
+    requireInRange("time scale", scale, Runner::minTimeScale, Runner::maxTimeScale);
     timeScale_ = scale;
 }
 
-void Controls::slower() { timeScale_ = std::max(minTimeScale, timeScale_ / 2.0); }
-void Controls::faster() { timeScale_ = std::min(maxTimeScale, timeScale_ * 2.0); }
+void Controls::slower() { timeScale_ = std::max(Runner::minTimeScale, timeScale_ / 2.0); }
+void Controls::faster() { timeScale_ = std::min(Runner::maxTimeScale, timeScale_ * 2.0); }
 
 bool Controls::takeSingleStep() { return std::exchange(singleStep_, false); }
 bool Controls::takeFitRequest() { return std::exchange(fit_, false); }

@@ -175,8 +175,8 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
     if (options.velocities)
         for (BodyId id : bodies)
             if (world.type(id) != BodyType::Static && world.velocity(id) != Vec2::Zero())
-                lines.arrow(px(world.position(id)), px(world.position(id) + kVelocitySeconds * world.velocity(id)),
-                            kVelocity);
+                lines.arrow(px(world.centerOfMass(id)),
+                            px(world.centerOfMass(id) + kVelocitySeconds * world.velocity(id)), kVelocity);
     if (options.joints)
         for (JointId id : world.joints()) {
             const auto [a, b] = world.jointAnchors(id);
@@ -193,7 +193,7 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
     if (options.centres)
         for (BodyId id : bodies) {
             if (world.type(id) == BodyType::Static) continue;
-            const sf::Vector2f c = px(world.position(id));
+            const sf::Vector2f c = px(world.centerOfMass(id));
             lines.add(c - sf::Vector2f(kCrossPixels, 0), c + sf::Vector2f(kCrossPixels, 0), kCentre);
             lines.add(c - sf::Vector2f(0, kCrossPixels), c + sf::Vector2f(0, kCrossPixels), kCentre);
         }

@@ -1,4 +1,4 @@
-#include "physim/framework/PaceMeter.hpp"
+#include "PaceMeter.hpp"
 
 namespace physim {
 namespace {

@@ -1,6 +1,7 @@
 #include "physim/framework/RigidBody.hpp"
 
 #include "physim/core/Collide.hpp"
+#include "physim/core/MassData.hpp"
 #include "physim/core/TimeOfImpact.hpp"
 #include "physim/core/Validate.hpp"
 #include "physim/core/World.hpp"
@@ -11,10 +12,15 @@ namespace physim {
 
 RigidBody::RigidBody(Entity* parent) : Behavior(parent) {}
 
+// Before the body joins a world: the world's own rule (MassData.hpp) on the settings it will be created with.
+MassData RigidBody::pendingMassData() const {
+    if (massOverride_ > 0.0) return massDataForMass(computeMassProperties(def_.shape), massOverride_);
+    return massDataForDensity(def_.shape, def_.density);
+}
+
 double RigidBody::mass() const {
     if (world_) return world_->mass(id_);
-    if (def_.type != BodyType::Dynamic) return 0.0;
-    return massOverride_ > 0.0 ? massOverride_ : def_.density * computeMassProperties(def_.shape).area;
+    return def_.type == BodyType::Dynamic ? pendingMassData().mass : 0.0;
 }
 double RigidBody::inv_mass() const {
     if (world_) return world_->inverseMass(id_);
@@ -23,14 +29,17 @@ double RigidBody::inv_mass() const {
 }
 double RigidBody::inertia() const {
     if (world_) return world_->inertia(id_);
-    if (def_.type != BodyType::Dynamic || def_.fixedRotation) return 0.0;
-    const MassProperties unit = computeMassProperties(def_.shape);
-    return mass() / unit.area * unit.secondMoment + mass() * unit.centroid.squaredNorm();
+    return def_.type == BodyType::Dynamic ? pendingMassData().inertia : 0.0;
 }
 double RigidBody::inv_inertia() const {
     if (world_) return world_->inverseInertia(id_);
     const double i = inertia();
-    return i > 0.0 ? 1.0 / i : 0.0;
+    return i > 0.0 && !def_.fixedRotation ? 1.0 / i : 0.0;
+}
+Vec2 RigidBody::centerOfMass() const {
+    if (world_) return world_->centerOfMass(id_);
+    const Transform xf{def_.position, Rotation::fromAngle(def_.angle)};
+    return xf.apply(computeMassProperties(def_.shape).centroid);
 }
 
 void RigidBody::setGeometry(const Geometry& shape) {
@@ -53,9 +62,9 @@ void RigidBody::setMass(double mass) {
 void RigidBody::setDensity(double density) {
     requirePositive("rigid body density", density);
     if (world_) {
-        const MassProperties unit = computeMassProperties(world_->shape(id_));
+        const double mass = massDataForDensity(world_->shape(id_), density).mass;
         world_->setType(id_, BodyType::Dynamic);
-        world_->setMass(id_, density * unit.area);
+        world_->setMass(id_, mass);
         return;
     }
     def_.type = BodyType::Dynamic;

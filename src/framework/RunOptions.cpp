@@ -1,35 +1,12 @@
 #include "physim/framework/RunOptions.hpp"
 
 #include "AccuracyOptions.hpp"
+#include "NumberOption.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <sstream>
 
 namespace physim {
-namespace {
-
-double parseNumber(const std::string& flag, const std::string& text) {
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE)
-        throw UsageError(flag + " expects a number, got '" + text + "'");
-    return v;
-}
-
-int parseInt(const std::string& flag, const std::string& text, int lo, int hi) {
-    const double v = parseNumber(flag, text);
-    if (!(v >= lo && v <= hi) || v != std::floor(v))
-        throw UsageError(flag + " must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                         "], got " + text);
-    return static_cast<int>(v);
-}
-
-}  // namespace
-
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -57,14 +34,14 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             o.quiet = true;
         } else if (a == "--seconds") {
             const std::string& text = value();
-            const double s = parseNumber(a, text);
-            if (!(std::isfinite(s) && s >= 0.0 && s <= RunOptions::maxSeconds))
+            const double s = parseNumberOption(a, text);
+            if (!(s >= 0.0 && s <= RunOptions::maxSeconds))
                 throw UsageError("--seconds must be in [0, 1e7] s, got " + text);
             o.seconds = s;
         } else if (a == "--hz") {
             const std::string& text = value();
-            const double hz = parseNumber(a, text);
-            if (!(std::isfinite(hz) && hz >= RunOptions::minHz && hz <= RunOptions::maxHz))
+            const double hz = parseNumberOption(a, text);
+            if (!(hz >= RunOptions::minHz && hz <= RunOptions::maxHz))
                 throw UsageError("--hz must be in [1, 10000] Hz, got " + text);
             o.hz = hz;
         } else if (a == "--out") {
@@ -80,16 +57,16 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             const auto eq = text.find('=');
             if (eq == std::string::npos || eq == 0)
                 throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
-            const double v = parseNumber("--param " + text.substr(0, eq), text.substr(eq + 1));
+            const double v = parseNumberOption("--param " + text.substr(0, eq), text.substr(eq + 1));
             o.parameters.emplace_back(text.substr(0, eq), v);
         } else if (a == "--max-steps-per-frame") {
-            o.maxStepsPerFrame = parseInt(a, value(), 1, 1000);
+            o.maxStepsPerFrame = parseCountOption(a, value(), 1, 1000);
         } else if (a == "--size") {
             const std::string& text = value();
             const auto x = text.find('x');
             if (x == std::string::npos) throw UsageError("--size expects WIDTHxHEIGHT, got '" + text + "'");
-            o.width = parseInt(a, text.substr(0, x), 64, 16384);
-            o.height = parseInt(a, text.substr(x + 1), 64, 16384);
+            o.width = parseCountOption(a, text.substr(0, x), 64, 16384);
+            o.height = parseCountOption(a, text.substr(x + 1), 64, 16384);
         } else if (!parseAccuracyOption(a, value, o)) {
             throw UsageError("unknown argument '" + args[i] + "' (see --help)");
         }

@@ -1,10 +1,14 @@
 #include "physim/framework/Runner.hpp"
 
 #include "AccuracyOptions.hpp"
+#include "Controls.hpp"
+#include "FixedStepAccumulator.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
+#include "PaceMeter.hpp"
 #include "Progress.hpp"
-#include "physim/framework/Summary.hpp"
+#include "Stats.hpp"
+#include "Summary.hpp"
 #ifdef PHYSIM_WITH_CUDA
 #include "physim/cuda/ContinuousSolver.hpp"
 #endif
@@ -72,8 +76,18 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
 
 }  // namespace
 
+struct Runner::Loop {
+    explicit Loop(int maxStepsPerFrame) : accumulator(1.0 / 40.0, maxStepsPerFrame) {}  // restart() sets the rate
+
+    FixedStepAccumulator accumulator;
+    Controls controls;
+    PaceMeter pace;
+    StepTimes stepTimes;
+};
+
 Runner::Runner(SimulationFactory factory, RunOptions options)
-    : factory_(std::move(factory)), options_(std::move(options)), accumulator_(1.0 / 40.0, options_.maxStepsPerFrame),
+    : factory_(std::move(factory)), options_(std::move(options)),
+      loop_(std::make_unique<Loop>(options_.maxStepsPerFrame)),
       windowSize_(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)) {
     if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
 #ifdef PHYSIM_WITH_CUDA
@@ -93,6 +107,18 @@ Simulation& Runner::simulation() {
 
 Runner::~Runner() = default;
 
+double Runner::timeScale() const { return loop_->controls.timeScale(); }
+void Runner::setTimeScale(double scale) { loop_->controls.setTimeScale(scale); }
+void Runner::requestSingleStep() { loop_->controls.requestSingleStep(); }
+void Runner::requestFit() { loop_->controls.requestFit(); }
+bool Runner::statsShown() const { return loop_->controls.statsShown(); }
+void Runner::setStatsShown(bool shown) { loop_->controls.setStatsShown(shown); }
+
+const FixedStepAccumulator& Runner::accumulator() const { return loop_->accumulator; }
+Controls& Runner::controls() { return loop_->controls; }
+const PaceMeter& Runner::pace() const { return loop_->pace; }
+const StepTimes& Runner::stepTimes() const { return loop_->stepTimes; }
+
 void Runner::restart() {
     // A restart of the same simulation keeps what the user chose: parameter values and debug drawing.
     std::optional<Parameters> keptParameters;
@@ -101,7 +127,7 @@ void Runner::restart() {
         keptParameters = simulation_->parameters;
         keptDrawing = simulation_->debugDraw;
     }
-    controls_.forgetDrag();  // its joint lives in the old world
+    loop_->controls.forgetDrag();  // its joint lives in the old world
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
@@ -128,9 +154,9 @@ void Runner::restart() {
     accuracyApplied_ = sim.entities().size();
     if (keptDrawing) sim.debugDraw = *keptDrawing;
     sim.start = true;
-    accumulator_ = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
-    stepTimes_.clear();
-    pace_.clear();
+    loop_->accumulator = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
+    loop_->stepTimes.clear();
+    loop_->pace.clear();
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
 }
@@ -149,7 +175,8 @@ sf::FloatRect Runner::sceneArea() const {
     if (overlay_ && simulation_) {
         // The bar at its tallest (paused, the catch-up warning shown), so the scene stays clear of it.
         const std::vector<Overlay::Item> items =
-            overlayItems(*simulation_, controls_, pace_, accumulator_.maxStepsPerFrame(), framesPerSecond_, true);
+            overlayItems(*simulation_, loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
+                         framesPerSecond_, true);
         top = overlay_->barHeight(items, static_cast<float>(windowSize_.x) - left);
     }
     return {left, top, static_cast<float>(windowSize_.x) - left, static_cast<float>(windowSize_.y) - top};
@@ -169,17 +196,18 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         accuracyApplied_ = sim.entities().size();
     }
     int steps = 0;
-    const std::uint64_t droppedBefore = accumulator_.droppedSteps();
-    const bool singleStep = controls_.takeSingleStep();  // O: one step, asked for while paused
-    if (!sim.paused) steps = accumulator_.advance(frameSeconds * controls_.timeScale());
+    const std::uint64_t droppedBefore = loop_->accumulator.droppedSteps();
+    const bool singleStep = loop_->controls.takeSingleStep();  // O: one step, asked for while paused
+    if (!sim.paused) steps = loop_->accumulator.advance(frameSeconds * loop_->controls.timeScale());
     else if (singleStep) steps = 1;
     for (int i = 0; i < steps; ++i) {
         sim.fixedStep();
-        stepTimes_.record(sim.world().profile());
+        loop_->stepTimes.record(sim.world().profile());
     }
-    pace_.record(frameSeconds, steps * sim.fixedTimeStep(), accumulator_.droppedSteps() - droppedBefore, sim.paused);
+    loop_->pace.record(frameSeconds, steps * sim.fixedTimeStep(), loop_->accumulator.droppedSteps() - droppedBefore,
+                       sim.paused);
     sim.onDrawGraphs();
-    if (controls_.takeFitRequest()) fitView();
+    if (loop_->controls.takeFitRequest()) fitView();
     if (window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
@@ -210,9 +238,9 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
             if (event.key.code == sf::Keyboard::Space) restart();
             else if (event.key.code == sf::Keyboard::P) sim.paused = !sim.paused;
             else if (event.key.code == sf::Keyboard::Escape) quit_ = true;
-            else controls_.handleEvent(event, sim, window ? window->getSize() : windowSize_);
+            else loop_->controls.handleEvent(event, sim, window ? window->getSize() : windowSize_);
             break;
-        default: controls_.handleEvent(event, sim, window ? window->getSize() : windowSize_); break;
+        default: loop_->controls.handleEvent(event, sim, window ? window->getSize() : windowSize_); break;
     }
 }
 
@@ -259,10 +287,10 @@ float Runner::drawOverlay(sf::RenderWindow& window) {
     const float left = panel_ ? panel_->width() : 0.f;
     const float height =
         overlay_->drawBar(window, left, static_cast<float>(window.getSize().x) - left,
-                          overlayItems(simulation(), controls_, pace_, accumulator_.maxStepsPerFrame(),
+                          overlayItems(simulation(), loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
                                        framesPerSecond_, false));
-    if (controls_.statsShown())
-        overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), stepTimes_));
+    if (loop_->controls.statsShown())
+        overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), loop_->stepTimes));
     return height;
 }
 

@@ -1,4 +1,4 @@
-#include "physim/framework/Stats.hpp"
+#include "Stats.hpp"
 
 #include "physim/core/World.hpp"
 #include "physim/framework/DebugDraw.hpp"

@@ -1,4 +1,4 @@
-#include "physim/framework/Summary.hpp"
+#include "Summary.hpp"
 
 #include "physim/framework/RigidBody.hpp"
 #include "physim/framework/Simulation.hpp"

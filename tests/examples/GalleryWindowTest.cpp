@@ -2,6 +2,7 @@
 // user's mouse would: clicking each scene's entry switches to that scene and runs it; letting go of a slider
 // restarts the scene with the new value; a click in the scene still grabs a body, a click on the panel does not.
 
+#include "Controls.hpp"  // src/framework: the runner's internals, to see the drag
 #include "Gallery.hpp"
 #include "support/SfmlEvents.hpp"
 

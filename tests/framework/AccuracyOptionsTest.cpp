@@ -37,6 +37,8 @@ TEST(AccuracyOptions, BadValuesNameTheValue) {
     EXPECT_NE(errorOf({"--substeps", "0"}).find("--substeps"), std::string::npos);
     EXPECT_NE(errorOf({"--substeps", "2.5"}).find("2.5"), std::string::npos);
     EXPECT_NE(errorOf({"--substeps", "1001"}).find("1001"), std::string::npos);
+    EXPECT_NE(errorOf({"--substeps", "1001"}).find(std::to_string(WorldSettings::maxSubsteps)), std::string::npos)
+        << "the core's bound, named in the message";
     EXPECT_NE(errorOf({"--iterations", "x"}).find("'x'"), std::string::npos);
     EXPECT_NE(errorOf({"--iterations"}).find("needs a value"), std::string::npos);
     EXPECT_NE(errorOf({"--ccd", "fast"}).find("'fast'"), std::string::npos);

@@ -3,6 +3,8 @@
 // promises: a dragged body follows the cursor, O runs exactly one step, the time scale sets how many steps a
 // real second runs, zoom keeps the point under the cursor, a pan drags the scene with the cursor.
 
+#include "Controls.hpp"
+#include "PaceMeter.hpp"
 #include "support/Scenes.hpp"
 #include "support/SfmlEvents.hpp"
 
@@ -157,7 +159,7 @@ TEST(Controls, TimeScaleChangesStepsPerRealSecond) {
     EXPECT_EQ(runner.controls().timeScale(), 2.0);
     EXPECT_NEAR(runFrames(runner, 60), 80, 1);
     for (int i = 0; i < 10; ++i) runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
-    EXPECT_EQ(runner.controls().timeScale(), Controls::maxTimeScale) << "capped";
+    EXPECT_EQ(runner.controls().timeScale(), Runner::maxTimeScale) << "capped";
     EXPECT_THROW(runner.controls().setTimeScale(0.0), std::invalid_argument);
     EXPECT_THROW(runner.controls().setTimeScale(NAN), std::invalid_argument);
 }

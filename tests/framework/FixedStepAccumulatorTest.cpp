@@ -1,4 +1,4 @@
-#include <physim/framework/FixedStepAccumulator.hpp>
+#include "FixedStepAccumulator.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,6 @@
 // The paper's frame loop (section 2) and fixed-step phases (section 4.3), recorded call by call.
 
+#include "FixedStepAccumulator.hpp"
 #include "support/Recorder.hpp"
 
 #include <physim/framework/Runner.hpp>

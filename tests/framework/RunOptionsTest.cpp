@@ -59,6 +59,7 @@ TEST(RunOptions, AbsurdValuesAreRefused) {
     EXPECT_NE(errorOf({"--param", "speed"}).find("NAME=VALUE"), std::string::npos);
     EXPECT_NE(errorOf({"--param", "=3"}).find("NAME=VALUE"), std::string::npos);
     EXPECT_NE(errorOf({"--param", "speed=fast"}).find("fast"), std::string::npos);
+    EXPECT_NE(errorOf({"--param", "speed=inf"}).find("inf"), std::string::npos) << "one number rule: finite";
 }
 
 TEST(RunOptions, BadArgumentsNameTheValue) {

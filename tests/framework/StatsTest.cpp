@@ -3,7 +3,7 @@
 #include <physim/core/World.hpp>
 #include "support/Scenes.hpp"
 #include <physim/framework/DebugDraw.hpp>
-#include <physim/framework/Stats.hpp>
+#include "Stats.hpp"
 
 #include <gtest/gtest.h>
 

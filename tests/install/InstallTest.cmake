@@ -18,6 +18,12 @@ foreach(f IN LISTS package_files)
     endif()
   endforeach()
 endforeach()
+# The runner's internals stay out of the installed API (they live in src/framework).
+foreach(internal IN ITEMS Controls FixedStepAccumulator PaceMeter Stats Summary)
+  if(EXISTS "${WORK_DIR}/prefix/include/physim/framework/${internal}.hpp")
+    message(FATAL_ERROR "the runner's internal ${internal}.hpp was installed")
+  endif()
+endforeach()
 # No ROOT_DIR given: the package must find ROOT by itself.
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/consumer" -B "${WORK_DIR}/consumer"
   -G Ninja -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc)
@@ -31,5 +37,22 @@ endif()
 execute_process(COMMAND "${WORK_DIR}/consumer/consumer" RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer program failed: ${rc}")
+endif()
+# The core alone, by its component, with the ROOT wheel out of reach (an empty dependency folder): it must not
+# need ROOT, SFML or X11.
+file(MAKE_DIRECTORY "${WORK_DIR}/no-deps")
+execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=ROOT_DIR PHYSIM_DEPS_DIR=${WORK_DIR}/no-deps
+  ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/core_consumer" -B "${WORK_DIR}/core_consumer"
+  -G Ninja -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "find_package(physim COMPONENTS core) from the installed tree failed: ${rc}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK_DIR}/core_consumer" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "building against the installed physim core failed: ${rc}")
+endif()
+execute_process(COMMAND "${WORK_DIR}/core_consumer/core_consumer" RESULT_VARIABLE rc)
+if(rc)
+  message(FATAL_ERROR "the core consumer program failed: ${rc}")
 endif()
 file(REMOVE_RECURSE "${WORK_DIR}")

@@ -1,9 +1,9 @@
 #pragma once
-// Collision geometry as plain data in body-local metres. The body's origin is its centre of mass, so the
-// factories below build shapes centred on the local origin unless an offset is asked for. makePolygon keeps
-// the coordinates it is given: a polygon whose centroid is not at the origin still rotates about the origin,
-// and the World adds the parallel-axis term to its inertia. Centre the points on their centroid
-// (computeMassProperties(...).centroid) to make a body rotate about its own centre.
+// Collision geometry as plain data in body-local metres, relative to the body origin (BodyDef::position). The
+// factories below build shapes centred on the local origin unless an offset is asked for; makePolygon keeps the
+// coordinates it is given. Wherever the shape lies, the body turns about its centre of mass (the shape's
+// centroid) and its inertia is taken about that point (MassData.hpp, the one rule before and after a body joins
+// a world).
 
 #include "physim/core/Aabb.hpp"
 #include "physim/core/Math.hpp"

@@ -7,9 +7,9 @@
 namespace physim {
 
 /// A convex polygon of 3 to Polygon::maxVertices vertices, given in either winding (see makePolygon).
-/// The points are in the shape's own frame, metres, and are kept as given: the shape rotates about its local
-/// origin, so centre the points on their centroid (getMassProperties().centroid) to rotate about the centre of
-/// mass.
+/// The points are in the shape's own frame (the body's frame: the body origin is the local origin), metres, and
+/// are kept as given. A body with this shape turns about its centroid (getMassProperties().centroid), wherever
+/// that lies.
 class PolygonShape final : public CollisionShape {
 public:
     /// Throws std::invalid_argument naming the problem (count, non-finite, coincident, collinear, non-convex).

@@ -76,7 +76,9 @@ public:
     Aabb bounds(BodyId id) const;
     double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
     double inverseMass(BodyId id) const;  ///< 1/kg; 0 when immovable
-    double inertia(BodyId id) const;      ///< kg m^2 about the centre of mass; 0 when it cannot rotate
+    /// kg m^2 about the centre of mass (MassData.hpp); 0 for static and kinematic bodies. A body with fixed
+    /// rotation keeps its shape's inertia; its inverse inertia is 0.
+    double inertia(BodyId id) const;
     double inverseInertia(BodyId id) const;
     double restitution(BodyId id) const;
     double staticFriction(BodyId id) const;

@@ -5,6 +5,11 @@
 namespace physim {
 
 struct WorldSettings {
+    /// Bounds validate() holds: substeps in [1, maxSubsteps]; velocityIterations in [1, maxIterations] and
+    /// relaxIterations in [0, maxIterations].
+    static constexpr int maxSubsteps = 1000;
+    static constexpr int maxIterations = 1000;
+
     Vec2 gravity{0.0, -9.81};         ///< m/s^2, y up
     int substeps = 8;                 ///< each step is this many substeps of dt / substeps (docs/dynamics.md)
     int velocityIterations = 1;       ///< solve passes (with the soft push-out) over all rows per substep

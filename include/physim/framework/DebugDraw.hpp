@@ -18,9 +18,9 @@ class World;
 struct DebugDrawOptions {
     bool contacts = false;    ///< contact points (red) and normals (blue, from A to B); resting ones dimmed
     bool boxes = false;       ///< bounding boxes
-    bool velocities = false;  ///< velocity arrows: the distance each body covers in 0.1 s
+    bool velocities = false;  ///< velocity arrows from each centre of mass: the distance it covers in 0.1 s
     bool joints = false;      ///< joint lines between their anchors; a mouse joint to its target
-    bool centres = false;     ///< centres of mass (body origins)
+    bool centres = false;     ///< centres of mass (the body origin only for a shape centred on it)
     bool sleep = false;       ///< sleeping bodies dimmed
 
     bool any() const { return contacts || boxes || velocities || joints || centres || sleep; }

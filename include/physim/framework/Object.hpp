@@ -26,12 +26,17 @@ public:
     /// A 1 m x 1 m box.
     Object();
 
-    /// Centre of mass, m. Allowed before and after the object is added to a simulation.
+    /// Places the body origin, m: the point the shape's and the mesh's coordinates are relative to (as a body's
+    /// position in Box2D or a transform's in Unity). It is the centre of mass only for a shape centred on its
+    /// origin (boxes, circles, centred polygons); getCenterOfMass() says where that is. Allowed before and after
+    /// the object is added to a simulation.
     void setPosition(const Vec2& position);
-    /// Rotation about the centre of mass, rad (counter-clockwise).
+    /// Sets the angle, rad (counter-clockwise), turning the object about its origin (the origin stays put).
     void setRotation(double angle);
-    Vec2 getPosition() const { return rb.position(); }
+    Vec2 getPosition() const { return rb.position(); }  ///< the body origin, m
     double getRotation() const { return rb.angle(); }
+    /// World centre of mass, m: the point the body turns about as it moves.
+    Vec2 getCenterOfMass() const { return rb.centerOfMass(); }
 
     void fixedUpdate() override;
     void render(sf::RenderWindow* window) override;

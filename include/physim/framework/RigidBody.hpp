@@ -4,6 +4,7 @@
 // write goes to the world. SI units: kg, m, s, rad.
 
 #include "physim/core/Body.hpp"
+#include "physim/core/MassData.hpp"
 #include "physim/core/Math.hpp"
 #include "physim/framework/Behavior.hpp"
 
@@ -29,10 +30,17 @@ class RigidBody : public Behavior {
 public:
     explicit RigidBody(Entity* parent = nullptr);
 
+    // Mass data follow one rule before and after the entity is added to a simulation (physim/core/MassData.hpp):
+    // the mass spread uniformly over the shape, the inertia about the centre of mass (the shape's centroid).
     double mass() const;         ///< kg; 0 means static (immovable), as in the paper
     double inv_mass() const;     ///< 1/kg; 0 for static bodies
-    double inertia() const;      ///< kg m^2 about the centre of mass; 0 for static bodies
+    /// kg m^2 about the centre of mass; 0 for static and kinematic bodies. With fixed rotation the shape's
+    /// inertia stays and inv_inertia() is 0.
+    double inertia() const;
     double inv_inertia() const;
+    /// World centre of mass, m: the point the body turns about. It is the body origin (position()) only when the
+    /// shape's centroid is at the local origin.
+    Vec2 centerOfMass() const;
     /// mass > 0: dynamic with that mass (inertia follows the shape). mass == 0: static (immovable), as in the
     /// paper. Throws std::invalid_argument for negative or NaN mass.
     void setMass(double mass);
@@ -96,11 +104,15 @@ public:
     /// Used by the entity that owns this body (Object): create the body in `world`.
     void attach(World& world);
     void detach();
+    /// The body origin, m (the point the shape's coordinates are relative to) and its angle, rad.
     Vec2 position() const;
     double angle() const;
+    /// Places the body origin at `position` (m) with `angle` (rad): the body turns about its origin here.
     void setPose(const Vec2& position, double angle);
 
 private:
+    MassData pendingMassData() const;  // before attach: what the world will compute
+
     World* world_ = nullptr;  // non-owning; the simulation owns the world and outlives attachment
     BodyId id_;
     BodyDef def_;

@@ -3,12 +3,8 @@
 //   onCreate once; then per frame: onUpdate, update of each entity, zero or more fixed steps,
 //   onDrawGraphs, render of each entity, onRender, graphs refresh.
 
-#include "physim/framework/Controls.hpp"
-#include "physim/framework/FixedStepAccumulator.hpp"
-#include "physim/framework/PaceMeter.hpp"
 #include "physim/framework/RunOptions.hpp"
 #include "physim/framework/Simulation.hpp"
-#include "physim/framework/Stats.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
 
@@ -27,7 +23,12 @@ class RenderWindow;
 
 namespace physim {
 
-class Overlay;  // src/framework/Overlay.hpp
+// The runner's internals (src/framework): not part of the installed API.
+class Controls;
+class FixedStepAccumulator;
+class Overlay;
+class PaceMeter;
+class StepTimes;
 class Runner;
 
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
@@ -72,10 +73,27 @@ public:
     bool quitRequested() const { return quit_; }
 
     Simulation& simulation();
-    const FixedStepAccumulator& accumulator() const { return accumulator_; }
-    Controls& controls() { return controls_; }
-    const PaceMeter& pace() const { return pace_; }
-    const StepTimes& stepTimes() const { return stepTimes_; }
+
+    // What a panel changes in a running simulation, as the window's keys do (pausing is Simulation::paused).
+    static constexpr double minTimeScale = 1.0 / 16.0;
+    static constexpr double maxTimeScale = 8.0;
+    /// Simulated seconds per real second, in [minTimeScale, maxTimeScale]; setTimeScale throws
+    /// std::invalid_argument outside.
+    double timeScale() const;
+    void setTimeScale(double scale);
+    /// One fixed step at the next frame, as O does (pause first: a running simulation steps anyway).
+    void requestSingleStep();
+    /// Fits the view to the scene at the next frame, as F does.
+    void requestFit();
+    /// The statistics panel (Tab).
+    bool statsShown() const;
+    void setStatsShown(bool shown);
+
+    // The runner's internals, for physim's own tests: their headers are in src/framework, not installed.
+    const FixedStepAccumulator& accumulator() const;
+    Controls& controls();
+    const PaceMeter& pace() const;
+    const StepTimes& stepTimes() const;
     /// The next restart makes its simulation with `factory` (the gallery switching scenes), with that
     /// simulation's own parameter values and debug drawing.
     void setFactory(SimulationFactory factory);
@@ -98,14 +116,12 @@ private:
     RunOptions options_;
     std::unique_ptr<Simulation> simulation_;
     std::shared_ptr<ContinuousSolver> continuousSolver_;  // the CUDA layer's, in a `cuda` build; else null (CPU)
-    FixedStepAccumulator accumulator_;
+    struct Loop;                  // the frame loop's state: step accumulator, controls, pace, step times
+    std::unique_ptr<Loop> loop_;  // never null
     bool quit_ = false;
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
     bool factoryChanged_ = false;  // setFactory since the last restart: start from the new scene's defaults
     bool viewSetByScene_ = false;  // onCreate set the view: the runner does not refit it on resize
-    Controls controls_;
-    PaceMeter pace_;
-    StepTimes stepTimes_;
     std::unique_ptr<RunnerPanel> panel_;
     std::unique_ptr<Overlay> overlay_;  // window runs only
     sf::Vector2u windowSize_;           // px: the window's, or --size's without one

@@ -46,6 +46,10 @@ public:
     virtual void onCreate() {}
     virtual void onEvent(sf::Event) {}
     virtual void onUpdate() {}
+    /// Once per frame, after the frame's fixed steps. Headless, a frame is exactly one fixed step, so this runs
+    /// once per step; in a window a frame runs zero or more steps (none while paused, several when catching up),
+    /// so it may see several steps at once or the same step twice. Plot here; detect events (a contact, a
+    /// crossing) in a per-step hook instead: an entity's checkCollisions or fixedUpdate.
     virtual void onDrawGraphs() {}
     virtual void onRender(sf::RenderWindow*) {}
     /// Shown in the window title and --help.

@@ -28,8 +28,6 @@ class Simulation;
 
 class Controls {
 public:
-    static constexpr double minTimeScale = 1.0 / 16.0;
-    static constexpr double maxTimeScale = 8.0;
     /// The mouse joint's spring (Box2D's samples use the same): stiff enough to follow the cursor closely,
     /// soft enough that a grabbed body never jerks.
     static constexpr double dragHertz = 5.0;
@@ -42,8 +40,8 @@ public:
     /// when the event was one of the controls'.
     bool handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u windowSize);
 
-    /// Simulated seconds per real second, in [minTimeScale, maxTimeScale]. Throws std::invalid_argument
-    /// outside.
+    /// Simulated seconds per real second, in [Runner::minTimeScale, Runner::maxTimeScale]. Throws
+    /// std::invalid_argument outside.
     double timeScale() const { return timeScale_; }
     void setTimeScale(double scale);
     void slower();

@@ -1,0 +1,33 @@
+#pragma once
+// The one mass rule: how a body's mass, centre of mass and rotational inertia follow from its shape. The World
+// uses it when a body is created or its mass or type changes, and the framework's RigidBody uses it for a body
+// not yet in a world, so both report the same values.
+
+#include "physim/core/Geometry.hpp"
+#include "physim/core/Math.hpp"
+
+namespace physim {
+
+/// A dynamic body's mass data: its mass spread uniformly over its shape. The body turns about its centre of mass
+/// (the shape's centroid, which need not be the body origin), so the inertia is taken about that point.
+struct MassData {
+    double mass = 0.0;           ///< kg
+    double density = 0.0;        ///< kg/m^2: mass / area
+    Vec2 center = Vec2::Zero();  ///< centre of mass, m, body-local (the shape's centroid)
+    double inertia = 0.0;        ///< kg m^2 about the centre of mass
+};
+
+/// `mass` kg (> 0) spread over a shape of per-unit-density properties `unit` (computeMassProperties).
+inline MassData massDataForMass(const MassProperties& unit, double mass) {
+    const double density = mass / unit.area;
+    return {mass, density, unit.centroid, density * unit.secondMoment};
+}
+
+/// A shape of `density` kg/m^2 (> 0): mass = density * area, then massDataForMass. The World's rule for a body
+/// created from a BodyDef.
+inline MassData massDataForDensity(const Geometry& shape, double density) {
+    const MassProperties unit = computeMassProperties(shape);
+    return massDataForMass(unit, density * unit.area);
+}
+
+}  // namespace physim
