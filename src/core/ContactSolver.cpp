@@ -12,16 +12,6 @@
 
 namespace physim {
 
-Softness makeSoftness(double hertz, double dampingRatio, double h) {
-    if (hertz <= 0.0) return {};  // rigid
-    constexpr double kMaxHertzPerSubstepRate = 0.25;
-    const double omega = 2.0 * 3.14159265358979323846 * std::min(hertz, kMaxHertzPerSubstepRate * (1.0 / h));
-    const double a1 = 2.0 * dampingRatio + h * omega;
-    const double a2 = h * omega * a1;
-    const double a3 = 1.0 / (1.0 + a2);
-    return {omega / a1, a2 * a3, a3};
-}
-
 namespace {
 
 // A normal impulse on one row (the bounce path and push records), with the moments prepared once per step.
