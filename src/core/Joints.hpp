@@ -17,6 +17,7 @@
 
 #include "JointData.hpp"
 
+#include <type_traits>
 #include <variant>
 #include <vector>
 

@@ -194,7 +194,7 @@ public:
     std::vector<JointId> joints() const;
     /// The force the joint applied to body B in the last step, N, at B's anchor (its reaction, -force, acts on A,
     /// or on the world point): the joint's impulse over a substep divided by the substep, so a pendulum's rod at
-    /// rest reports its bob's weight. A spring reports its force now. Zero before the first step.
+    /// rest reports its bob's weight; zero before the first step. A spring reports its force now.
     Vec2 jointReactionForce(JointId id) const;
     /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
     /// A): a revolute joint's motor and limits, a weld's hold on the angle; 0 for the other kinds.

@@ -4,6 +4,8 @@
 
 #include "../WorldImpl.hpp"
 
+#include <variant>
+
 namespace physim {
 
 void SpringEffect::apply(WorldImpl& w, double h) const {
