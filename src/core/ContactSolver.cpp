@@ -231,7 +231,8 @@ template <class Field>
 const ContactData kEmptyContact{};
 const SolverBodySim kNoBody{};
 
-// Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
+// Preparing a block asks for the contacts of the block this far ahead: far enough to hide a miss, near enough that
+// the lines are still there.
 constexpr std::size_t kPrefetchBlocks = 2;
 static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactData) == kCacheLine,
               "what preparation reads of a contact is three lines");
@@ -349,8 +350,8 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // point's normal: the warm start and other contacts' push-out) is left out of the speeds the blow answers, for the
 // same reason: it stays on the bodies, and the rows that gave it keep or take it back in later passes. A blow that
 // answered a warm start reflected a guess at this substep's impulses: when the guess was then taken back, the
-// bodies kept the reflection's energy (a thin box spinning at 10^4 rad/s, stopped by one wall's rows, warm-started
-// into another wall, gained up to 114% in a step: docs/dynamics.md).
+// bodies kept the reflection's energy (a thin box spinning fast, stopped by one wall's rows and warm-started into
+// another wall, gained energy: docs/dynamics.md).
 // The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
                   const double (&vn)[2], const double (&delta)[2], const double (&provisional)[2], MotionSide& blowA,
