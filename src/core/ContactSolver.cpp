@@ -12,16 +12,6 @@
 
 namespace physim {
 
-Softness makeSoftness(double hertz, double dampingRatio, double h) {
-    if (hertz <= 0.0) return {};  // rigid
-    constexpr double kMaxHertzPerSubstepRate = 0.25;
-    const double omega = 2.0 * 3.14159265358979323846 * std::min(hertz, kMaxHertzPerSubstepRate * (1.0 / h));
-    const double a1 = 2.0 * dampingRatio + h * omega;
-    const double a2 = h * omega * a1;
-    const double a3 = 1.0 / (1.0 + a2);
-    return {omega / a1, a2 * a3, a3};
-}
-
 namespace {
 
 // A normal impulse on one row (the bounce path and push records), with the moments prepared once per step.
@@ -241,7 +231,8 @@ template <class Field>
 const ContactData kEmptyContact{};
 const SolverBodySim kNoBody{};
 
-// Preparing a block asks for the contacts of the block this far ahead (measured: 2 beats 4).
+// Preparing a block asks for the contacts of the block this far ahead: far enough to hide a miss, near enough that
+// the lines are still there.
 constexpr std::size_t kPrefetchBlocks = 2;
 static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactData) == kCacheLine,
               "what preparation reads of a contact is three lines");
@@ -359,8 +350,8 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // point's normal: the warm start and other contacts' push-out) is left out of the speeds the blow answers, for the
 // same reason: it stays on the bodies, and the rows that gave it keep or take it back in later passes. A blow that
 // answered a warm start reflected a guess at this substep's impulses: when the guess was then taken back, the
-// bodies kept the reflection's energy (a thin box spinning at 10^4 rad/s, stopped by one wall's rows, warm-started
-// into another wall, gained up to 114% in a step: docs/dynamics.md).
+// bodies kept the reflection's energy (a thin box spinning fast, stopped by one wall's rows and warm-started into
+// another wall, gained energy: docs/dynamics.md).
 // The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
                   const double (&vn)[2], const double (&delta)[2], const double (&provisional)[2], MotionSide& blowA,

@@ -26,6 +26,7 @@
 // time").
 
 #include "Impulse.hpp"
+#include "Softness.hpp"
 #include "SolverData.hpp"
 #include "Wide.hpp"
 
@@ -38,16 +39,6 @@
 namespace physim {
 
 struct ContactData;
-
-/// A soft constraint's coefficients for a substep h: a spring of `hertz` with `dampingRatio`, implicit in time.
-struct Softness {
-    double biasRate = 0.0;      // 1/s: velocity bias per metre of error
-    double massScale = 1.0;
-    double impulseScale = 0.0;
-};
-/// The spring is capped at a quarter of the substep rate (the stiffest the one-pass Gauss-Seidel solve keeps
-/// stable: measured on pyramids, a quarter holds, half already shakes a 40-box base apart).
-Softness makeSoftness(double hertz, double dampingRatio, double h);
 
 struct ContactConstraintPoint {
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // lever arms from the centres of mass at the start, m

@@ -1,15 +1,15 @@
 #pragma once
 // Everything a World holds, as plain data shared by the step's stages (one file each). Internal.
 //
-//   World.cpp          the public API: bodies, joints, settings, step()
+//   World.cpp          the public API: bodies, settings, step()
 //   BroadPhase.cpp     dynamic trees, new candidate pairs
 //   Contacts.cpp       persistent contacts: creation, the narrow-phase update, begin / end
 //   Islands.cpp        persistent islands: merging, splitting, sleeping and waking
 //   Solver.cpp         the soft step: gather, colour, substeps, restitution, finalize
 //   ContactSolver.cpp  the contact constraint rows
-//   Joints.cpp         the joint rows (distance, mouse)
+//   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
-//   WorldEffects.cpp   the public API of the effects and of the revolute, weld and spring joints
+//   WorldEffects.cpp   the public API of the effects
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
 #include "BodyData.hpp"

@@ -27,6 +27,7 @@ struct JointId {
     }
 };
 
+/// A joint's kind (World::jointType); each has its definition below and its World::createXJoint.
 enum class JointType { Distance, Mouse, Spring, Revolute, Weld };
 
 struct DistanceJointDef {

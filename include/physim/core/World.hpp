@@ -35,6 +35,7 @@ namespace physim {
 struct WorldImpl;        // internal, src/core/WorldImpl.hpp
 struct BodyData;
 struct JointData;
+struct JointDefinition;
 class ContinuousSolver;  // physim/core/ContinuousBatch.hpp
 
 class World {
@@ -193,6 +194,13 @@ public:
     std::pair<Vec2, Vec2> jointAnchors(JointId id) const;
     /// The joints in creation-slot order (for drawing and inspection).
     std::vector<JointId> joints() const;
+    /// The force the joint applied to body B in the last step, N, at B's anchor (its reaction, -force, acts on A,
+    /// or on the world point): the joint's impulse over a substep divided by the substep, so a pendulum's rod at
+    /// rest reports its bob's weight; zero before the first step. A spring reports its force now.
+    Vec2 jointReactionForce(JointId id) const;
+    /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
+    /// A): a revolute joint's motor and limits, a weld's hold on the angle; 0 for the other kinds.
+    double jointReactionTorque(JointId id) const;
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),
@@ -218,6 +226,10 @@ private:
     BodyData& mutableBody(BodyId id, const char* call);  // checked, not during the step
     BodyData& wake(BodyId id, const char* call);         // mutableBody, and its island woken
     const JointData& joint(JointId id) const;
+    /// Every createXJoint's one path (src/core/WorldJoints.cpp): checks the bodies and that no step runs, lets the
+    /// kind check its definition and fill its data, and adds the joint (linked to its bodies, which wake and join
+    /// one island).
+    JointId createJoint(const JointDefinition& definition);
 
     std::unique_ptr<WorldImpl> impl_;
 };

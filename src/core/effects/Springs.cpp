@@ -4,17 +4,20 @@
 
 #include "../WorldImpl.hpp"
 
+#include <variant>
+
 namespace physim {
 
 void SpringEffect::apply(WorldImpl& w, double h) const {
     for (const std::uint32_t index : members_.items()) {
         const JointData& j = w.joints[index];
+        const SpringJoint& spring = std::get<SpringJoint>(j.params);
         const BodyNow B = bodyNow(w, j.b);
         const Vec2 rB = B.q.apply(j.localB - w.bodies[j.b].localCenter);
         BodyNow A;
         Vec2 rA = Vec2::Zero();
-        if (j.toPoint) {
-            A.center = j.target;
+        if (j.toWorld) {
+            A.center = j.localA;
         } else {
             A = bodyNow(w, j.a);
             rA = A.q.apply(j.localA - w.bodies[j.a].localCenter);
@@ -24,7 +27,8 @@ void SpringEffect::apply(WorldImpl& w, double h) const {
         if (!(length > 1e-12)) continue;  // coincident anchors: no direction (a zero-length spring at rest)
         const Vec2 u = d / length;
         const double stretchRate = u.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
-        const Vec2 P = -h * (j.stiffness * (length - j.length) + j.damping * stretchRate) * u;  // on B, N s
+        // On B, N s (SpringJoint::reaction is the same force, N).
+        const Vec2 P = -h * (spring.stiffness * (length - spring.restLength) + spring.damping * stretchRate) * u;
         if (B.invMass > 0.0) {
             SolverBody& s = w.states[static_cast<std::size_t>(B.index)];
             s.v += B.invMass * P;

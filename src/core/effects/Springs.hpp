@@ -1,7 +1,7 @@
 #pragma once
-// Spring joints (physim/core/Joint.hpp, SpringJointDef): Hooke's law with damping, a force every substep.
-// Their storage is the world's joints (so they link islands and go with their bodies); this keeps the list of
-// the spring joints, so a step visits only them. Internal.
+// Spring joints (physim/core/Joint.hpp, SpringJointDef; joints/SpringJoint.hpp): Hooke's law with damping, a force
+// every substep. Their storage is the world's joints (so they link islands and go with their bodies); this keeps
+// the list of the spring joints, so a step visits only them. Internal.
 
 #include "Members.hpp"
 

@@ -1,0 +1,175 @@
+// The World's API for joints that every kind shares: the one creation path, destruction and the queries. Each kind's
+// createXJoint and setters live in its own file (joints/); the rows' dispatch in Joints.hpp.
+
+#include "physim/core/World.hpp"
+
+#include "Joints.hpp"
+#include "Slots.hpp"
+#include "WorldImpl.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+
+namespace physim {
+namespace {
+
+void linkJoint(WorldImpl& w, std::uint32_t index) {
+    JointData& j = w.joints[index];
+    const std::uint32_t ends[2] = {j.a, j.b};
+    for (int side = j.twoBodies() ? 0 : 1; side < 2; ++side) {
+        BodyData& body = w.bodies[ends[side]];
+        const std::int32_t key = static_cast<std::int32_t>(index) * 2 + side;
+        j.prev[side] = kNullIndex;
+        j.next[side] = body.jointHead;
+        if (body.jointHead != kNullIndex)
+            w.joints[static_cast<std::size_t>(body.jointHead >> 1)].prev[body.jointHead & 1] = key;
+        body.jointHead = key;
+    }
+}
+
+void unlinkJoint(WorldImpl& w, std::uint32_t index) {
+    JointData& j = w.joints[index];
+    const std::uint32_t ends[2] = {j.a, j.b};
+    for (int side = j.twoBodies() ? 0 : 1; side < 2; ++side) {
+        BodyData& body = w.bodies[ends[side]];
+        if (j.prev[side] != kNullIndex)
+            w.joints[static_cast<std::size_t>(j.prev[side] >> 1)].next[j.prev[side] & 1] = j.next[side];
+        else
+            body.jointHead = j.next[side];
+        if (j.next[side] != kNullIndex)
+            w.joints[static_cast<std::size_t>(j.next[side] >> 1)].prev[j.next[side] & 1] = j.prev[side];
+    }
+}
+
+}  // namespace
+
+std::uint32_t WorldImpl::addJoint(const JointData& data) {
+    const std::uint32_t index = takeSlot(joints, freeJoints);
+    JointData& j = joints[index];
+    const std::uint32_t generation = j.generation;
+    j = data;
+    j.generation = generation;
+    j.alive = true;
+    linkJoint(*this, index);
+    ++jointCount;
+    if (j.isRow()) ++rowJointCount;
+    else effects.springs.add(index);  // a joint that is not a row is a force: the springs effect applies it
+    rowsStale = true;
+    wakeBody(j.b);
+    if (j.twoBodies()) {
+        wakeBody(j.a);
+        if (bodies[j.a].type == BodyType::Dynamic && bodies[j.b].type == BodyType::Dynamic) linkBodies(j.a, j.b);
+    }
+    return index;
+}
+
+JointId World::createJoint(const JointDefinition& definition) {
+    WorldImpl& w = *impl_;
+    return std::visit(
+        [&](const auto& d) {
+            using Kind = typename std::decay_t<decltype(d)>::Type;
+            const JointEnds ends = Kind::ends(*d.def);
+            const BodyData* A = ends.toWorld ? nullptr : &at(ends.a);
+            const BodyData& B = at(ends.b);
+            w.requireNotStepping(d.call);
+            const std::string name = std::string("physim: a ") + Kind::kName + " joint needs ";
+            if (ends.toWorld) {
+                if (B.type != BodyType::Dynamic) throw std::invalid_argument(name + "a dynamic body");
+                A = &B;
+            } else {
+                if (ends.a == ends.b) throw std::invalid_argument(name + "two different bodies");
+                if (A->type != BodyType::Dynamic && B.type != BodyType::Dynamic)
+                    throw std::invalid_argument(name + "at least one dynamic body");
+            }
+            JointData joint;
+            joint.a = ends.toWorld ? ends.b.index : ends.a.index;
+            joint.b = ends.b.index;
+            joint.toWorld = ends.toWorld;
+            joint.params = Kind::make(*d.def, *A, B, joint.localA, joint.localB);
+            const std::uint32_t index = w.addJoint(joint);
+            return JointId{index, w.joints[index].generation};
+        },
+        definition.kind);
+}
+
+bool World::contains(JointId id) const {
+    const auto& joints = impl_->joints;
+    return !id.isNull() && id.index < joints.size() && joints[id.index].alive &&
+           joints[id.index].generation == id.generation;
+}
+
+const JointData& World::joint(JointId id) const {
+    if (!contains(id))
+        throw std::invalid_argument("physim: joint id (index " + std::to_string(id.index) +
+                                    ") is not a live joint of this world");
+    return impl_->joints[id.index];
+}
+
+void World::destroyJoint(JointId id) {
+    const JointData& j = joint(id);
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("destroyJoint");
+    w.wakeBody(j.b);
+    if (j.twoBodies()) {
+        w.wakeBody(j.a);
+        if (w.bodies[j.a].type == BodyType::Dynamic && w.bodies[j.b].type == BodyType::Dynamic)
+            w.unlinkBodies(j.a, j.b);
+    }
+    unlinkJoint(w, id.index);
+    if (j.isRow()) --w.rowJointCount;
+    else w.effects.springs.remove(id.index);
+    w.rowsStale = true;
+    w.joints[id.index].alive = false;
+    w.freeJoints.push_back(id.index);
+    --w.jointCount;
+}
+
+std::size_t World::jointCount() const { return impl_->jointCount; }
+JointType World::jointType(JointId id) const { return joint(id).type(); }
+
+double World::jointLength(JointId id) const {
+    const JointData& j = joint(id);
+    if (const auto* rod = std::get_if<DistanceJoint>(&j.params)) return rod->length;
+    if (const auto* spring = std::get_if<SpringJoint>(&j.params)) return spring->restLength;
+    throw std::invalid_argument("physim: jointLength needs a distance joint or a spring");
+}
+
+double World::jointAngle(JointId id) const {
+    const JointData& j = joint(id);
+    double reference = 0.0;
+    if (const auto* pin = std::get_if<RevoluteJoint>(&j.params)) reference = pin->referenceAngle;
+    else if (const auto* weld = std::get_if<WeldJoint>(&j.params)) reference = weld->referenceAngle;
+    else throw std::invalid_argument("physim: jointAngle needs a revolute or weld joint");
+    return impl_->bodies[j.b].angle - impl_->bodies[j.a].angle - reference;
+}
+
+std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
+    const JointData& j = joint(id);
+    const Vec2 onB = impl_->bodies[j.b].xf.apply(j.localB);
+    if (!j.twoBodies()) return {j.localA, onB};
+    return {impl_->bodies[j.a].xf.apply(j.localA), onB};
+}
+
+std::vector<JointId> World::joints() const {
+    std::vector<JointId> ids;
+    for (std::uint32_t i = 0; i < impl_->joints.size(); ++i)
+        if (impl_->joints[i].alive) ids.push_back(JointId{i, impl_->joints[i].generation});
+    return ids;
+}
+
+namespace {
+
+// The last step's joint reaction: impulses accumulated per substep become a force and a torque over it.
+JointReaction reactionOf(const WorldImpl& w, const JointData& j) {
+    const double invH = w.dt > 0.0 ? 1.0 / (w.dt / w.settings.substeps) : 0.0;
+    return jointReaction(j, w.bodies, invH);
+}
+
+}  // namespace
+
+Vec2 World::jointReactionForce(JointId id) const { return reactionOf(*impl_, joint(id)).force; }
+double World::jointReactionTorque(JointId id) const { return reactionOf(*impl_, joint(id)).torque; }
+
+}  // namespace physim

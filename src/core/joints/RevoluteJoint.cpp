@@ -1,0 +1,129 @@
+#include "RevoluteJoint.hpp"
+
+#include "../WorldImpl.hpp"
+
+#include "physim/core/Validate.hpp"
+#include "physim/core/World.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <variant>
+
+namespace physim {
+namespace {
+
+void requireLimits(double lower, double upper) {
+    requireFinite("revolute joint lowerAngle", lower);
+    requireFinite("revolute joint upperAngle", upper);
+    if (lower > upper)
+        throw std::invalid_argument("physim: revolute joint lowerAngle must be <= upperAngle, got " +
+                                    std::to_string(lower) + " > " + std::to_string(upper));
+}
+
+void requireMotor(double speed, double maxTorque) {
+    requireFinite("revolute joint motorSpeed", speed);
+    requireNonNegative("revolute joint maxMotorTorque", maxTorque);
+}
+
+// The revolute joint a setter changes (std::invalid_argument for another kind), its bodies woken.
+RevoluteJoint& revoluteToChange(WorldImpl& w, const JointData& j, JointId id, const char* call) {
+    w.requireNotStepping(call);
+    if (j.type() != JointType::Revolute)
+        throw std::invalid_argument(std::string("physim: ") + call + " needs a revolute joint");
+    w.wakeBody(j.a);
+    w.wakeBody(j.b);
+    return std::get<RevoluteJoint>(w.joints[id.index].params);
+}
+
+// A one-sided angle row: C = sign (jointAngle - limit) must stay >= 0. Apart, it is speculative (stops the bodies at
+// the limit within the substep); past it, pushed back softly with the bias, rigidly in the relax pass.
+void solveLimit(const JointConstraint& row, double C, double sign, double& accumulated, MotionSide& A,
+                MotionSide& B, bool useBias) {
+    double bias = 0.0, massScale = 1.0, impulseScale = 0.0;
+    if (C > 0.0) {
+        bias = C * row.invH;
+    } else if (useBias) {
+        bias = row.softness.biasRate * C;
+        massScale = row.softness.massScale;
+        impulseScale = row.softness.impulseScale;
+    }
+    const double Cdot = sign * (B.w - A.w);
+    const double lambda = -row.axialMass * massScale * (Cdot + bias) - impulseScale * accumulated;
+    const double total = std::max(accumulated + lambda, 0.0);
+    turn(row, A, B, sign * (total - accumulated));
+    accumulated = total;
+}
+
+}  // namespace
+
+JointId World::createRevoluteJoint(const RevoluteJointDef& def) {
+    return createJoint({KindDefinition<RevoluteJoint>{&def, "createRevoluteJoint"}});
+}
+
+void World::setJointMotor(JointId id, bool enable, double speed, double maxTorque) {
+    requireMotor(speed, maxTorque);
+    RevoluteJoint& m = revoluteToChange(*impl_, joint(id), id, "setJointMotor");
+    m.enableMotor = enable;
+    m.motorSpeed = speed;
+    m.maxMotorTorque = maxTorque;
+    if (!enable) m.motorImpulse = 0.0;
+}
+
+void World::setJointLimits(JointId id, bool enable, double lower, double upper) {
+    requireLimits(lower, upper);
+    RevoluteJoint& m = revoluteToChange(*impl_, joint(id), id, "setJointLimits");
+    m.enableLimit = enable;
+    m.lowerAngle = lower;
+    m.upperAngle = upper;
+    if (!enable) m.lowerImpulse = m.upperImpulse = 0.0;
+}
+
+RevoluteJoint RevoluteJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA,
+                                  Vec2& localB) {
+    requireFinite("revolute joint anchor", def.anchor);
+    requireLimits(def.lowerAngle, def.upperAngle);
+    requireMotor(def.motorSpeed, def.maxMotorTorque);
+    RevoluteJoint j;
+    j.referenceAngle = pinAt(def.anchor, A, B, localA, localB);
+    j.enableLimit = def.enableLimit;
+    j.lowerAngle = def.lowerAngle;
+    j.upperAngle = def.upperAngle;
+    j.enableMotor = def.enableMotor;
+    j.motorSpeed = def.motorSpeed;
+    j.maxMotorTorque = def.maxMotorTorque;
+    return j;
+}
+
+void RevoluteJoint::prepare(JointConstraint& row, const BodyData& A, const BodyData& B, double h,
+                            const Softness& rodSoftness) const {
+    preparePinned(row, referenceAngle, A, B, h, rodSoftness);
+    row.maxImpulse = maxMotorTorque * h;
+}
+
+void RevoluteJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const {
+    applyImpulse(row, A, B, A.dq.apply(row.anchorA), B.dq.apply(row.anchorB), linearImpulse);
+    // Summed from +0.0, so a motor capped at zero torque (its impulse clamped to -0.0) adds +0.0 to the spins.
+    turn(row, A, B, 0.0 + motorImpulse + lowerImpulse - upperImpulse);
+}
+
+void RevoluteJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias) {
+    if (enableMotor && row.axialMass > 0.0) {
+        const double Cdot = B.w - A.w - motorSpeed;
+        const double old = motorImpulse;
+        motorImpulse = std::clamp(old - row.axialMass * Cdot, -row.maxImpulse, row.maxImpulse);
+        turn(row, A, B, motorImpulse - old);
+    }
+    if (enableLimit && row.axialMass > 0.0) {
+        const double angle = row.deltaAngle + B.dAngle - A.dAngle;
+        solveLimit(row, angle - lowerAngle, 1.0, lowerImpulse, A, B, useBias);
+        solveLimit(row, upperAngle - angle, -1.0, upperImpulse, A, B, useBias);
+    }
+    solvePoint(row, linearImpulse, A, B, useBias);
+}
+
+JointReaction RevoluteJoint::reaction(const JointEndsNow&, double invH) const {
+    return {linearImpulse * invH, (motorImpulse + lowerImpulse - upperImpulse) * invH};
+}
+
+}  // namespace physim

@@ -1,0 +1,35 @@
+#pragma once
+// The revolute joint (RevoluteJointDef), a pin: the shared point as the rod (stiff with the bias, exact in the relax
+// pass); the motor, an angular velocity row capped at maxMotorTorque; each limit a one-sided angle row, speculative
+// while apart. Internal.
+
+#include "JointShared.hpp"
+
+#include "physim/core/Joint.hpp"
+
+namespace physim {
+
+struct RevoluteJoint {
+    using Def = RevoluteJointDef;
+    static constexpr JointType kType = JointType::Revolute;
+    static constexpr const char* kName = "revolute";
+    static constexpr bool kRow = true;
+
+    double referenceAngle = 0.0;                    // angle(B) - angle(A) at creation, rad
+    bool enableLimit = false, enableMotor = false;
+    double lowerAngle = 0.0, upperAngle = 0.0;      // limits relative to the reference, rad
+    double motorSpeed = 0.0, maxMotorTorque = 0.0;  // rad/s, N m
+    // Accumulated per substep: the point's (N s), the motor's and the limits' (N m s).
+    Vec2 linearImpulse = Vec2::Zero();
+    double motorImpulse = 0.0, lowerImpulse = 0.0, upperImpulse = 0.0;
+
+    static JointEnds ends(const Def& def) { return {def.bodyA, def.bodyB, false}; }
+    static RevoluteJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
+    void prepare(JointConstraint& row, const BodyData& A, const BodyData& B, double h,
+                 const Softness& rodSoftness) const;
+    void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;
+    void solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias);
+    JointReaction reaction(const JointEndsNow& now, double invH) const;
+};
+
+}  // namespace physim

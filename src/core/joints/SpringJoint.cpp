@@ -1,0 +1,40 @@
+#include "SpringJoint.hpp"
+
+#include "../JointData.hpp"
+
+#include "physim/core/Validate.hpp"
+#include "physim/core/World.hpp"
+
+namespace physim {
+
+JointId World::createSpringJoint(const SpringJointDef& def) {
+    return createJoint({KindDefinition<SpringJoint>{&def, "createSpringJoint"}});
+}
+
+SpringJoint SpringJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB) {
+    const bool toPoint = def.bodyA.isNull();
+    requireFinite(toPoint ? "spring point" : "spring anchor A", def.localAnchorA);
+    requireFinite("spring anchor B", def.localAnchorB);
+    requireFinite("spring restLength", def.restLength);
+    requirePositive("spring stiffness", def.stiffness);
+    requireNonNegative("spring damping", def.damping);
+    localA = def.localAnchorA;
+    localB = def.localAnchorB;
+    const Vec2 endA = toPoint ? def.localAnchorA : A.xf.apply(def.localAnchorA);
+    SpringJoint j;
+    j.restLength = def.restLength >= 0.0 ? def.restLength : (B.xf.apply(def.localAnchorB) - endA).norm();
+    j.stiffness = def.stiffness;
+    j.damping = def.damping;
+    return j;
+}
+
+JointReaction SpringJoint::reaction(const JointEndsNow& now, double) const {
+    const Vec2 d = now.pointB - now.pointA;
+    const double length = d.norm();
+    if (!(length > 1e-12)) return {};  // coincident anchors: no direction, no force
+    const Vec2 u = d / length;
+    const double stretchRate = u.dot(now.velocityB - now.velocityA);
+    return {-(stiffness * (length - restLength) + damping * stretchRate) * u, 0.0};
+}
+
+}  // namespace physim

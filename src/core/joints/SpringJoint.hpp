@@ -1,0 +1,29 @@
+#pragma once
+// The spring joint (SpringJointDef): Hooke's law with damping between an anchor on each body, or from a body's
+// anchor to a world point (the joint's world end, JointData::localA). A force, not a row: the springs effect
+// (effects/Springs.cpp) applies it every substep; it is stored as a joint so that it links islands and goes with
+// its bodies. Internal.
+
+#include "JointShared.hpp"
+
+#include "physim/core/Joint.hpp"
+
+namespace physim {
+
+struct SpringJoint {
+    using Def = SpringJointDef;
+    static constexpr JointType kType = JointType::Spring;
+    static constexpr const char* kName = "spring";
+    static constexpr bool kRow = false;
+
+    double restLength = 0.0;  // m
+    double stiffness = 0.0;   // N/m
+    double damping = 0.0;     // N s/m
+
+    static JointEnds ends(const Def& def) { return {def.bodyA, def.bodyB, def.bodyA.isNull()}; }
+    static SpringJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
+    /// Its force on B now (the reaction: a force has no impulses to report).
+    JointReaction reaction(const JointEndsNow& now, double invH) const;
+};
+
+}  // namespace physim
