@@ -2,6 +2,8 @@
 
 #include "physim/core/ContinuousBatch.hpp"
 
+#include "KernelBridge.hpp"
+
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>

@@ -3,8 +3,9 @@
 
 #include "physim/core/TimeOfImpact.hpp"
 
+#include "KernelBridge.hpp"
+
 #include "physim/core/Collide.hpp"
-#include "physim/core/ContinuousBatch.hpp"
 
 #include <algorithm>
 #include <cmath>
