@@ -53,6 +53,10 @@ struct Xf {
     PHYSIM_HOST_DEVICE Vec applyInverse(Vec world) const { return q.applyInverse(world - p); }
 };
 
+/// The shape kinds, each coded by its index in the core's Geometry (src/core/shapes/ShapeKinds.hpp checks it; the
+/// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
+/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon), turningReach, and its
+/// checks in shapeHolds.
 enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1 };
 constexpr int kMaxVertices = 8;
 
