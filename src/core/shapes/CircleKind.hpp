@@ -1,5 +1,7 @@
 #pragma once
 // The circle's room: everything a circle provides (ShapeKind.hpp lists what a kind must). Internal.
+// CollideCircles.cpp holds its narrow phase; its kernel side is kernel::kCircle in ContinuousKernel.hpp (circleCircle,
+// turningReach, shapeHolds).
 
 #include "ShapeKind.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The convex polygon's room: everything a polygon provides (ShapeKind.hpp lists what a kind must). Internal.
 // Polygon.cpp builds polygons (makeBox, makePolygon), CollidePolygons.cpp and CollideCircles.cpp hold its narrow
-// phase.
+// phase; its kernel side is kernel::kPolygon in ContinuousKernel.hpp (polygonCircle, polygonPolygon, polygonHolds).
 
 #include "ShapeKind.hpp"
 
