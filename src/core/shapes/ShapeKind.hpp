@@ -3,7 +3,7 @@
 //
 // A kind is an alternative of Geometry (physim/core/Geometry.hpp) with a room of its own under src/core/shapes/:
 // a header that specialises ShapeKind<S> and the sources behind it. ShapeKinds.hpp lists the rooms and is the one
-// place that dispatches from a Geometry to its kind; nothing else names a kind. ShapeKind<S> holds, as static
+// place that dispatches from a Geometry to its kind (the kernel aside). ShapeKind<S> holds, as static
 // members (S is the kind's data, m in body-local coordinates unless a Transform places it):
 //
 //   name                         "circle": for messages
