@@ -2,7 +2,7 @@
 // Internal to physim::cuda: the device side of the continuous batch, kept free of Eigen so nvcc compiles only the
 // shared kernel (ContinuousKernel.hpp) and CUDA's own headers.
 
-#include "physim/core/ContinuousKernel.hpp"
+#include "ContinuousKernel.hpp"
 #include "physim/cuda/GpuTimings.hpp"
 
 #include <cstddef>

@@ -4,6 +4,7 @@
 #include "physim/cuda/ContinuousSolver.hpp"
 
 #include "ContinuousLaunch.hpp"
+#include "KernelBridge.hpp"
 #include "physim/cuda/Device.hpp"
 
 #include <chrono>

@@ -3,11 +3,11 @@
 
 #include "Contacts.hpp"
 #include "BodyLanes.hpp"
+#include "ContinuousKernel.hpp"
 #include "Manifolds.hpp"
 #include "Prefetch.hpp"
 #include "Slots.hpp"
 #include "WorldImpl.hpp"
-#include "physim/core/ContinuousKernel.hpp"
 
 #include <algorithm>
 #include <atomic>

@@ -2,6 +2,9 @@
 
 #include "physim/core/ContinuousBatch.hpp"
 
+#include "KernelBridge.hpp"
+#include "shapes/ShapeKinds.hpp"
+
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>
@@ -17,7 +20,6 @@ static_assert(static_cast<int>(ToiState::Separated) == kernel::kSeparated && sta
                   static_cast<int>(ToiState::Touching) == kernel::kTouching &&
                   static_cast<int>(ToiState::Failed) == kernel::kFailed,
               "the batch's state codes are ToiState's");
-static_assert(Polygon::maxVertices == kernel::kMaxVertices, "the kernel holds every polygon the core makes");
 
 namespace {
 
@@ -62,48 +64,43 @@ void requireIndex(const char* array, std::size_t i, std::int32_t value, std::siz
     }
 }
 
+// The kinds by their codes, "0 circle, 1 polygon".
+std::string kindCodes() {
+    std::string list;
+    for (std::size_t code = 0; code < kKindCount; ++code)
+        withKindCode(static_cast<std::int32_t>(code), [&](auto kind) {
+            list += (code == 0 ? "" : ", ") + std::to_string(code) + " " + kind.name;
+        });
+    return list;
+}
+
 // Shape i failed kernel::shapeHolds: say which entry is wrong and why.
 [[noreturn]] void explainShape(const ContinuousBatch::Shapes& s, std::size_t i, std::size_t vertices) {
-    const std::int32_t kind = s.kind[i];
-    if (kind != kernel::kCircle && kind != kernel::kPolygon)
-        reject("unsupported shape kind " + std::to_string(kind) + " at " + at("shapes.kind", i) +
-               " (0 circle, 1 polygon)");
-    const std::int32_t first = s.firstVertex[i], count = s.vertexCount[i];
-    const bool circle = kind == kernel::kCircle;
-    if (count < (circle ? 1 : 3) || count > (circle ? 1 : kernel::kMaxVertices))
-        reject(at("shapes.vertexCount", i) + " = " + std::to_string(count) + ", but a " +
-               (circle ? "circle has 1 (its centre)" : "polygon has 3 to 8"));
-    if (first < 0 || static_cast<std::size_t>(first) + static_cast<std::size_t>(count) > vertices)
-        reject(at("shapes.firstVertex", i) + " = " + std::to_string(first) + " with " + std::to_string(count) +
-               " vertices runs past the " + std::to_string(vertices) + " vertex entries");
-    if (!circle && s.radius[i] != 0.0)
-        reject(at("shapes.radius", i) + " = " + std::to_string(s.radius[i]) + ", but a polygon has radius 0");
-    // The geometry through the core's own checks, which name the problem (non-convex, bad normal, ...).
-    Geometry g;
-    if (circle) {
-        g = Circle{{s.vertexX[first], s.vertexY[first]}, s.radius[i]};
-    } else {
-        Polygon p;
-        p.count = count;
-        for (int k = 0; k < count; ++k) {
-            p.vertices[k] = {s.vertexX[first + k], s.vertexY[first + k]};
-            p.normals[k] = {s.normalX[first + k], s.normalY[first + k]};
+    const std::int32_t code = s.kind[i];
+    withKindCode(code, [&](auto kind) {
+        const std::int32_t first = s.firstVertex[i], count = s.vertexCount[i];
+        if (count < kind.minVertices || count > kind.maxVertices)
+            reject(at("shapes.vertexCount", i) + " = " + std::to_string(count) + ", but a " + kind.name + " has " +
+                   kind.vertexCounts);
+        if (first < 0 || static_cast<std::size_t>(first) + static_cast<std::size_t>(count) > vertices)
+            reject(at("shapes.firstVertex", i) + " = " + std::to_string(first) + " with " + std::to_string(count) +
+                   " vertices runs past the " + std::to_string(vertices) + " vertex entries");
+        const std::string radius = kind.radiusProblem(s.radius[i]);
+        if (!radius.empty()) reject(at("shapes.radius", i) + " = " + std::to_string(s.radius[i]) + ", but " + radius);
+        // The geometry through the core's own checks, which name the problem (non-convex, bad normal, ...).
+        const auto shape = kind.fromBatch(s, i);
+        try {
+            kind.validate(shape);
+        } catch (const std::invalid_argument& e) {
+            reject("shape " + std::to_string(i) + ": " + e.what());
         }
-        g = p;
-    }
-    try {
-        validate(g);
-    } catch (const std::invalid_argument& e) {
-        reject("shape " + std::to_string(i) + ": " + e.what());
-    }
-    if (!circle) {  // validate(Geometry) allows normals 1e-9 off; the kernel's inside test may still refuse them
-        ContinuousBatch one;
-        one.addShape(g);
-        if (!kernel::shapeHolds(viewOf(one), 0))
-            reject("shape " + std::to_string(i) + ": a vertex lies on or outside another edge's line");
-    }
-    reject(at("shapes.boundingRadius", i) + " = " + std::to_string(s.boundingRadius[i]) +
-           " does not bound the shape (at least " + std::to_string(boundingRadius(g)) + " m)");
+        const std::string refused = kind.kernelProblem(shape);
+        if (!refused.empty()) reject("shape " + std::to_string(i) + ": " + refused);
+        reject(at("shapes.boundingRadius", i) + " = " + std::to_string(s.boundingRadius[i]) +
+               " does not bound the shape (at least " + std::to_string(kind.boundingRadius(shape)) + " m)");
+    });
+    reject("unsupported shape kind " + std::to_string(code) + " at " + at("shapes.kind", i) + " (" + kindCodes() +
+           ")");
 }
 
 }  // namespace
@@ -230,21 +227,7 @@ kernel::ResultView viewOf(ContinuousBatchResult& r) {
 kernel::Shape toKernel(const Geometry& g) {
     kernel::Shape k{};
     k.boundingRadius = boundingRadius(g);
-    if (const auto* c = std::get_if<Circle>(&g)) {
-        k.kind = kernel::kCircle;
-        k.count = 1;
-        k.radius = c->radius;
-        k.vertices[0] = {c->center.x(), c->center.y()};
-        return k;
-    }
-    const auto& p = std::get<Polygon>(g);
-    k.kind = kernel::kPolygon;
-    k.count = p.count;
-    k.radius = 0.0;
-    for (int i = 0; i < p.count; ++i) {
-        k.vertices[i] = {p.vertices[i].x(), p.vertices[i].y()};
-        k.normals[i] = {p.normals[i].x(), p.normals[i].y()};
-    }
+    withKind(g, [&](auto kind, const auto& s) { kind.toKernel(s, k); });
     return k;
 }
 

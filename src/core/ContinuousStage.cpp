@@ -1,6 +1,7 @@
 #include "ContinuousStage.hpp"
 
 #include "WorldImpl.hpp"
+#include "shapes/ShapeKinds.hpp"
 
 #include "physim/core/Collide.hpp"
 
@@ -18,11 +19,9 @@ double deepest(const Geometry& a, const Transform& xa, const Geometry& b, const 
     return separation;
 }
 
-// How far the outline can move per radian the body turns about its origin, m: a circle's outline turns onto
-// itself, so only its centre's offset counts (a rolling ball is not carried into the ground by its spin).
+// How far the outline can move per radian the body turns about its origin, m (ShapeKind.hpp).
 double turningRadius(const Geometry& g) {
-    if (const auto* c = std::get_if<Circle>(&g)) return c->center.norm();
-    return boundingRadius(g);
+    return withKind(g, [](auto kind, const auto& s) { return kind.turningRadius(s); });
 }
 
 }  // namespace

@@ -14,6 +14,8 @@
 // all consistent). Exact pairs against moving bodies are solved as one batch by the ContinuousSolver (the CPU,
 // or the GPU through the CUDA layer).
 
+#include "KernelBridge.hpp"
+
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/TimeOfImpact.hpp"
 

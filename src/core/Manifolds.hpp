@@ -1,5 +1,6 @@
 #pragma once
-// The narrow-phase routines behind collide() (src/core/NarrowPhase.cpp dispatches to them). Internal.
+// The narrow phase's result and constants. Internal. The routines for each pair of shape kinds are in the kinds'
+// rooms (src/core/shapes), and NarrowPhase.cpp dispatches to them by a table of kind pairs.
 //
 // Every routine returns the contact manifold (normal from the first shape to the second, up to two points
 // midway between the surfaces, stable feature ids) and the signed distance between the shapes along that
@@ -18,15 +19,7 @@ struct NarrowResult {
     double separation = 0.0;  ///< m along manifold.normal; only meaningful when manifold.pointCount > 0
 };
 
-NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& b, const Transform& xb,
-                            double margin = 0.0);
-/// Normal from the polygon to the circle.
-NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, const Circle& b, const Transform& xb,
-                                     double margin = 0.0);
-NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb,
-                             double margin = 0.0);
-
-/// Dispatch on the pair of geometry types (NarrowPhase.cpp); the normal points from a to b.
+/// Dispatch on the pair of shape kinds (NarrowPhase.cpp); the normal points from a to b.
 NarrowResult collideGeometries(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,
                                double margin = 0.0);
 

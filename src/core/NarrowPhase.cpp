@@ -1,10 +1,12 @@
-// Narrow-phase dispatch on the pair of geometry types, and the paper's Colliding built from the result.
+// Narrow-phase dispatch on the pair of shape kinds, and the paper's Colliding built from the result.
 
 #include "Manifolds.hpp"
+#include "shapes/ShapeKinds.hpp"
 
 #include "physim/core/Collide.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace physim {
 namespace {
@@ -15,18 +17,33 @@ NarrowResult swapped(NarrowResult r) {
     return r;
 }
 
+using PairFunction = NarrowResult (*)(const Geometry&, const Transform&, const Geometry&, const Transform&, double);
+
+// Kinds I and J: the later kind's room collides it with every earlier kind (ShapeKind.hpp); the other order is
+// that result swapped.
+template <std::size_t I, std::size_t J>
+NarrowResult collidePair(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,
+                         double margin) {
+    if constexpr (I >= J)
+        return ShapeKind<KindAt<I>>::collide(*std::get_if<I>(&a), xa, *std::get_if<J>(&b), xb, margin);
+    else
+        return swapped(ShapeKind<KindAt<J>>::collide(*std::get_if<J>(&b), xb, *std::get_if<I>(&a), xa, margin));
+}
+
+template <std::size_t... P>
+constexpr std::array<PairFunction, sizeof...(P)> pairTable(std::index_sequence<P...>) {
+    return {&collidePair<P / kKindCount, P % kKindCount>...};
+}
+
+// Entry a.index() * kKindCount + b.index().
+constexpr auto kPairs = pairTable(std::make_index_sequence<kKindCount * kKindCount>{});
+
 }  // namespace
 
 NarrowResult collideGeometries(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb,
                                double margin) {
-    const auto* ca = std::get_if<Circle>(&a);
-    const auto* cb = std::get_if<Circle>(&b);
-    if (ca && cb) return collideCircles(*ca, xa, *cb, xb, margin);
-    if (cb) return collidePolygonAndCircle(std::get<Polygon>(a), xa, *cb, xb, margin);
-    if (ca) return swapped(collidePolygonAndCircle(std::get<Polygon>(b), xb, *ca, xa, margin));
-    return collidePolygons(std::get<Polygon>(a), xa, std::get<Polygon>(b), xb, margin);
+    return kPairs[a.index() * kKindCount + b.index()](a, xa, b, xb, margin);
 }
-
 Manifold collide(const Geometry& a, const Transform& xa, const Geometry& b, const Transform& xb) {
     return collideGeometries(a, xa, b, xb).manifold;
 }

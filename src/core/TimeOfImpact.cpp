@@ -1,10 +1,12 @@
 // Distance between convex shapes and conservative-advancement time of impact (both in the shared kernel,
-// ContinuousKernel.hpp), the paper's sampled method and swept boxes. docs/ccd.md explains the choices and measures them.
+// ContinuousKernel.hpp), the paper's sampled method and swept boxes. docs/ccd.md explains the choices.
 
 #include "physim/core/TimeOfImpact.hpp"
 
+#include "KernelBridge.hpp"
+#include "shapes/ShapeKinds.hpp"
+
 #include "physim/core/Collide.hpp"
-#include "physim/core/ContinuousBatch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,20 +27,7 @@ void checkPrecision(double precision) {
 }
 
 double boundingRadius(const Geometry& g) {
-    if (const auto* c = std::get_if<Circle>(&g)) return std::hypot(c->center.x(), c->center.y()) + c->radius;
-    const auto& p = std::get<Polygon>(g);
-    double r = 0.0;
-    for (int i = 0; i < p.count; ++i) r = std::max(r, std::hypot(p.vertices[i].x(), p.vertices[i].y()));
-    return r;
-}
-
-double coreRadius(const Geometry& g) {
-    if (const auto* c = std::get_if<Circle>(&g)) return c->radius;
-    const auto& p = std::get<Polygon>(g);
-    const Vec2 centroid = computeMassProperties(g).centroid;
-    double r = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < p.count; ++i) r = std::min(r, p.normals[i].dot(p.vertices[i] - centroid));
-    return r;
+    return withKind(g, [](auto kind, const auto& s) { return kind.boundingRadius(s); });
 }
 
 namespace {

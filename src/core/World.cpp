@@ -5,6 +5,7 @@
 
 #include "Slots.hpp"
 #include "WorldImpl.hpp"
+#include "shapes/ShapeKinds.hpp"
 
 #include "physim/core/Collide.hpp"
 #include "physim/core/MassData.hpp"
@@ -79,11 +80,12 @@ void clearMass(BodyData& b) { b.mass = b.inertia = b.invMass = b.invInertia = 0.
 
 // Largest distance from the centre of mass to the shape (how far a point moves per radian of turn).
 double extentAbout(const Geometry& g, const Vec2& center) {
-    if (const auto* c = std::get_if<Circle>(&g)) return (c->center - center).norm() + c->radius;
-    const Polygon& p = std::get<Polygon>(g);
-    double r = 0.0;
-    for (int i = 0; i < p.count; ++i) r = std::max(r, (p.vertices[i] - center).norm());
-    return r;
+    return withKind(g, [&](auto kind, const auto& s) { return kind.extentAbout(s, center); });
+}
+
+// Radius (m) of the largest circle about the shape's centroid inside it (for a circle, its radius).
+double coreRadius(const Geometry& g) {
+    return withKind(g, [](auto kind, const auto& s) { return kind.coreRadius(s); });
 }
 
 }  // namespace

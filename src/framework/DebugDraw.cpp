@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace physim {
 namespace {
@@ -77,32 +77,16 @@ void drawContacts(sf::RenderTarget& target, const sf::Transform& toPixels, const
     }
 }
 
-// The body's collision shape in pixels, filled with `fill` (a veil over a sleeping body's mesh).
-void drawShape(sf::RenderTarget& target, const sf::Transform& toPixels, double pixelsPerMetre, const Geometry& g,
-               const Transform& xf, sf::Color fill) {
-    std::visit(
-        [&](const auto& s) {
-            using S = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<S, Circle>) {
-                const Vec2 c = xf.apply(s.center);
-                const auto r = static_cast<float>(s.radius * pixelsPerMetre);
-                sf::CircleShape circle(r, 40);
-                circle.setOrigin(r, r);
-                circle.setPosition(toPixels.transformPoint(static_cast<float>(c.x()), static_cast<float>(c.y())));
-                circle.setFillColor(fill);
-                target.draw(circle);
-            } else {
-                sf::ConvexShape polygon(static_cast<std::size_t>(s.count));
-                for (int i = 0; i < s.count; ++i) {
-                    const Vec2 v = xf.apply(s.vertices[static_cast<std::size_t>(i)]);
-                    polygon.setPoint(static_cast<std::size_t>(i),
-                                     toPixels.transformPoint(static_cast<float>(v.x()), static_cast<float>(v.y())));
-                }
-                polygon.setFillColor(fill);
-                target.draw(polygon);
-            }
-        },
-        g);
+// The body's collision shape in pixels, filled with `fill` (a veil over a sleeping body's mesh): every kind is
+// convex, so its outline (computed by the core) fills as one convex polygon.
+void drawShape(sf::RenderTarget& target, const sf::Transform& toPixels, const Geometry& g, const Transform& xf,
+               sf::Color fill) {
+    const std::vector<Vec2> points = outline(g, xf);
+    sf::ConvexShape shape(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i)
+        shape.setPoint(i, toPixels.transformPoint(static_cast<float>(points[i].x()), static_cast<float>(points[i].y())));
+    shape.setFillColor(fill);
+    target.draw(shape);
 }
 
 // Bodies that the step treats as not moving: asleep, static, or kinematic at rest.
@@ -162,7 +146,7 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
     if (options.sleep)
         for (BodyId id : bodies)
             if (world.type(id) == BodyType::Dynamic && !world.isAwake(id))
-                drawShape(target, toPixels, view.pixelsPerMetre, world.shape(id), world.transform(id), kSleepVeil);
+                drawShape(target, toPixels, world.shape(id), world.transform(id), kSleepVeil);
     if (options.boxes)
         for (BodyId id : bodies) {
             const Aabb box = computeAabb(world.shape(id), world.transform(id));

@@ -3,6 +3,8 @@
 // included; a closed-form time of impact, threads that change nothing, bad input named at the boundary, and a
 // World whose continuous stage goes through the solver.
 
+#include "KernelBridge.hpp"
+
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/World.hpp"
 

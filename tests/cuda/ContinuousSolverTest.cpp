@@ -5,6 +5,8 @@
 #include <physim/cuda/ContinuousSolver.hpp>
 #include <physim/cuda/Device.hpp>
 
+#include "ContinuousKernel.hpp"
+
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>

@@ -8,6 +8,8 @@
 
 #include <physim/cuda/ContinuousSolver.hpp>
 
+#include "ContinuousKernel.hpp"
+
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>

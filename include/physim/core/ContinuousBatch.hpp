@@ -9,7 +9,6 @@
 //   bodies: a shape and a motion (pose at t = 0 and at t = 1, linear in between).
 //   pairs:  two bodies each; result i belongs to pair i.
 
-#include "physim/core/ContinuousKernel.hpp"
 #include "physim/core/Geometry.hpp"
 #include "physim/core/TimeOfImpact.hpp"
 
@@ -22,7 +21,7 @@ namespace physim {
 
 struct ContinuousBatch {
     struct Shapes {
-        std::vector<std::int32_t> kind;         ///< kernel::kCircle (0) or kernel::kPolygon (1)
+        std::vector<std::int32_t> kind;         ///< index of the kind in Geometry: 0 circle, 1 polygon
         std::vector<std::int32_t> firstVertex;  ///< index into the vertex arrays
         std::vector<std::int32_t> vertexCount;  ///< circle 1, polygon 3 to 8
         std::vector<double> radius;             ///< m; circle > 0, polygon 0
@@ -58,7 +57,7 @@ struct ContinuousBatch {
     std::size_t pairCount() const { return pairs.a.size(); }
 };
 
-/// One entry per pair: state is a ToiState code (kernel::kSeparated, kHit, kTouching, kFailed; kInvalid only inside
+/// One entry per pair: state is a ToiState code (Separated 0, Hit 1, Touching 2, Failed 3; -1, invalid, only inside
 /// a solve); at a Hit or Touching, t is the time of impact (fraction of the motion), gap the distance then (m,
 /// < tolerance), normal (a to b) and point (m, world) the contact's; normal and point are zero when the shapes
 /// overlap at t. Separated pairs have t = 1. Failed pairs (no convergence within maxIterations: no impact found,
@@ -76,7 +75,7 @@ struct ContinuousBatchResult {
 };
 
 /// Throws std::invalid_argument naming the array or the value when the batch is not one the kernel can read:
-/// arrays of one group with different sizes, a shape kind other than circle or polygon, a vertex count or range
+/// arrays of one group with different sizes, an unknown shape kind, a vertex count or range
 /// that does not fit, a polygon that is not strictly convex and counter-clockwise with its outward unit normals
 /// (validate(Geometry) names the problem), a bounding radius that does not bound its shape, a non-finite
 /// coordinate or pose, a body or pair index out of range, a pair of one body with itself, tolerance <= 0 or
@@ -84,19 +83,10 @@ struct ContinuousBatchResult {
 void validate(const ContinuousBatch& batch);
 
 /// The part of validate() that costs O(1) and makes the arrays safe to index: the groups' sizes, tolerance and
-/// maxIterations. Solvers call it before any work; the kernel checks every pair's entries as it solves it
-/// (kernel::pairHolds), and reportInvalidPairs turns a failed pair into validate()'s named error.
+/// maxIterations. Solvers call it before any work; the kernel checks every pair's entries as it solves it,
+/// and reportInvalidPairs turns a failed pair into validate()'s named error.
 void checkLayout(const ContinuousBatch& batch);
 void reportInvalidPairs(const ContinuousBatch& batch, const ContinuousBatchResult& result);
-
-/// Raw pointers into the batch's and the result's arrays (result must already be resized), for a kernel.
-kernel::BatchView viewOf(const ContinuousBatch& batch);
-kernel::ResultView viewOf(ContinuousBatchResult& result);
-
-/// The kernel's plain structs from the core's types.
-kernel::Shape toKernel(const Geometry& g);
-kernel::Motion toKernel(const Sweep& s);
-kernel::Xf toKernel(const Transform& xf);
 
 /// Who solves a continuous batch. The World hands its continuous stage's pairs to one (World::setContinuousSolver);
 /// the CUDA layer provides a GPU one (physim/cuda/ContinuousSolver.hpp).

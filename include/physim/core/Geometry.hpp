@@ -61,6 +61,10 @@ MassProperties computeMassProperties(const Geometry& g);
 /// World-space bounding box of a geometry placed by `xf`.
 Aabb computeAabb(const Geometry& g, const Transform& xf);
 
+/// World points (m) around the boundary of a geometry placed by `xf`, counter-clockwise, for drawing it as a filled
+/// convex polygon: a polygon's vertices, 40 points on a circle.
+std::vector<Vec2> outline(const Geometry& g, const Transform& xf);
+
 }  // namespace physim
 
 namespace physim {

@@ -44,9 +44,6 @@ struct Sweep {
 /// Largest distance (m) from the body origin to a point of the shape: how far a point can move per radian.
 double boundingRadius(const Geometry& g);
 
-/// Radius (m) of the largest circle about the shape's centroid inside it (for a circle, its radius).
-double coreRadius(const Geometry& g);
-
 /// Closest points of two placed shapes. distance is 0 when they touch or overlap (then the other fields are
 /// left zero); otherwise pointA (on a) and pointB (on b) are closest points and normal = (pointB - pointA) / distance.
 struct DistanceOutput {

@@ -1,7 +1,7 @@
 #pragma once
 // Continuous collision on the GPU (built only with the `cuda` preset): a ContinuousSolver that sends a whole batch
 // of time-of-impact pairs to the device in one launch, one thread per pair, running the kernel code the CPU runs
-// (physim/core/ContinuousKernel.hpp). Small batches stay on the CPU, where a launch would cost more than it saves;
+// (src/core/ContinuousKernel.hpp). Small batches stay on the CPU, where a launch would cost more than it saves;
 // any CUDA error is logged with its message and the batch (and every later one) is solved on the CPU instead, so
 // no result is lost. docs/cuda.md has the design and the measured crossover.
 //

@@ -1,6 +1,7 @@
 #include "Drag.hpp"
 
 #include "../WorldImpl.hpp"
+#include "../shapes/ShapeKinds.hpp"
 
 #include "physim/core/Validate.hpp"
 
@@ -13,11 +14,7 @@ constexpr std::size_t kGrain = 256;
 
 // Mean width of a convex shape over all directions: perimeter / pi (Cauchy's formula), m.
 double meanWidth(const Geometry& g) {
-    if (const auto* c = std::get_if<Circle>(&g)) return 2.0 * c->radius;
-    const Polygon& p = std::get<Polygon>(g);
-    double perimeter = 0.0;
-    for (int i = 0; i < p.count; ++i) perimeter += (p.vertices[(i + 1) % p.count] - p.vertices[i]).norm();
-    return perimeter / M_PI;
+    return withKind(g, [](auto kind, const auto& s) { return kind.meanWidth(s); });
 }
 
 }  // namespace

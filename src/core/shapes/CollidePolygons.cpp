@@ -1,7 +1,7 @@
 // Narrow phase for two convex polygons: separating axes (SAT) over both polygons' face normals, then a
 // contact manifold from clipping the incident edge against the reference face.
 
-#include "Manifolds.hpp"
+#include "PolygonKind.hpp"
 
 #include <algorithm>
 #include <limits>

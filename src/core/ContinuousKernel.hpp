@@ -1,14 +1,15 @@
 #pragma once
 // The geometry of continuous collision detection, written once for the CPU and the GPU: shape distance and
 // time of impact by conservative advancement as __host__ __device__ functions over plain structs. g++ compiles
-// it into the core (TimeOfImpact.cpp, ContinuousBatch.cpp), nvcc into the CUDA kernel (cuda/ContinuousSolver.cu),
+// it into the core (TimeOfImpact.cpp, ContinuousBatch.cpp), nvcc into the CUDA kernel (cuda/ContinuousKernel.cu),
 // so both run the same arithmetic in the same order. The CUDA layer is built with --fmad=false (no fused
 // multiply-add the host does not do); the only remaining difference is the last bit of cos and sin, which
 // docs/cuda.md measures.
 //
 // Rules for this file: no Eigen, no std:: types or algorithms, no exceptions, no allocation, no globals. Inputs are
 // valid (ContinuousBatch validate() or the Geometry factories checked them). SI units: metres, radians; time is
-// the fraction t in [0, 1] of the motion.
+// the fraction t in [0, 1] of the motion. Internal (not installed): users reach it through TimeOfImpact.hpp and
+// ContinuousBatch.hpp.
 
 #include <cmath>
 #include <cstdint>
@@ -52,6 +53,10 @@ struct Xf {
     PHYSIM_HOST_DEVICE Vec applyInverse(Vec world) const { return q.applyInverse(world - p); }
 };
 
+/// The shape kinds, each coded by its index in the core's Geometry (src/core/shapes/ShapeKinds.hpp checks it; the
+/// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
+/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon), turningReach, and its
+/// checks in shapeHolds.
 enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1 };
 constexpr int kMaxVertices = 8;
 

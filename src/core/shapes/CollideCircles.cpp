@@ -1,6 +1,7 @@
 // Narrow phase for pairs with a circle: circle-circle and polygon-circle, both exact.
 
-#include "Manifolds.hpp"
+#include "CircleKind.hpp"
+#include "PolygonKind.hpp"
 
 #include <cmath>
 #include <limits>
