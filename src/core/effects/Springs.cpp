@@ -26,12 +26,12 @@ void SpringEffect::apply(WorldImpl& w, double h) const {
         const double stretchRate = u.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
         const Vec2 P = -h * (j.stiffness * (length - j.length) + j.damping * stretchRate) * u;  // on B, N s
         if (B.invMass > 0.0) {
-            SolverBody& s = w.states[static_cast<std::size_t>(B.index)];
+            SolverBody& s = w.solver.states()[static_cast<std::size_t>(B.index)];
             s.v += B.invMass * P;
             s.w += B.invInertia * cross(rB, P);
         }
         if (A.invMass > 0.0) {
-            SolverBody& s = w.states[static_cast<std::size_t>(A.index)];
+            SolverBody& s = w.solver.states()[static_cast<std::size_t>(A.index)];
             s.v -= A.invMass * P;
             s.w -= A.invInertia * cross(rA, P);
         }
