@@ -1,5 +1,6 @@
 #include "ContinuousStage.hpp"
 
+#include "ContinuousCpu.hpp"
 #include "WorldImpl.hpp"
 
 #include "physim/core/Collide.hpp"
@@ -177,7 +178,7 @@ void ContinuousStage::run(WorldImpl& w) {
     }
     if (batch_.pairCount() > 0) {
         if (solver_) solver_->solve(batch_, batchResult_);
-        else solveOnCpu(batch_, batchResult_, 1);
+        else solveOnCpu(batch_, batchResult_, w.executor);  // on the step's threads
         for (std::size_t p = 0; p < pairCandidate_.size(); ++p) {
             Candidate& c = candidates_[pairCandidate_[p]];
             const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
