@@ -261,7 +261,7 @@ template <bool V>
 
 // A large scene's contacts and bodies are no longer in the cache, and the contacts name their bodies in no order a
 // hardware prefetcher follows: ask for a contact's record twice as far ahead as its bodies' records. A small
-// scene's are in the cache, and asking costs more than it saves (docs/performance.md, "Tenth measurement").
+// scene's are in the cache, and asking costs more than it saves.
 constexpr std::size_t kAhead = 4;
 [[gnu::always_inline]] inline void askAhead(const RefreshPass& p, std::size_t i, std::size_t end) {
     if (i + 2 * kAhead < end) prefetchLines(&p.contacts[p.awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
@@ -329,7 +329,7 @@ static_assert(offsetof(ManifoldCache, margin) == 0 && offsetof(ManifoldCache, of
 // Contacts [i, i + kLanes) of the pass. The common case, two discrete bodies with a cached manifold, is worked out
 // four contacts at once, lane by lane with refreshManifold's formulas; any other contact takes refreshOne. The same
 // bits either way. The lanes pay for their gathers where points are placed: four contacts none of which holds a
-// face (a pile of circles: one point or none) take refreshOne too (docs/performance.md, "Thirtieth measurement").
+// face (a pile of circles: one point or none) take refreshOne too.
 template <bool V>
 [[gnu::always_inline]] inline void refreshFour(const RefreshPass& p, std::size_t i) {
     const ContactData* c[kLanes];
