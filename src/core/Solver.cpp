@@ -401,9 +401,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     break;
                 }
                 case SubstepStage::WarmStart: {
-                    if (!anyRows) break;
+                    const bool overRows = sub == 0 || !bodiesWarmStart;  // else integrateVelocities did it
+                    if (!anyRows || !(overRows || oneSequence)) break;
                     auto timer = stage(Stage::Solve);
-                    if (sub == 0 || !bodiesWarmStart) {
+                    if (overRows) {
                         pass([&](std::size_t b, std::size_t e) {
                                  if (sub == 0) {
                                      const PreparedRows prepared = prepareContacts(
