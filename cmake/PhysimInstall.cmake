@@ -1,6 +1,6 @@
 # Installs the libraries, headers and a CMake package with one component per library:
-#   find_package(physim REQUIRED COMPONENTS core)       -> physim::core (Eigen; the static core also links oneTBB
-#                                                         and Threads)
+#   find_package(physim REQUIRED COMPONENTS core)       -> physim::core (Eigen; the static core also links
+#                                                         oneTBB)
 #   find_package(physim REQUIRED COMPONENTS framework)  -> physim::framework and physim::graphs (SFML, X11, ROOT)
 # A component looks only for its own dependencies; find_package(physim) with none loads every installed one.
 include(CMakePackageConfigHelpers)

@@ -490,7 +490,8 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
 void WorldImpl::addAwakeContact(std::uint32_t index) {
     contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
     awakeContacts.push_back(index);
-    rowsStale = awakeContactsChanged = true;
+    solver.layoutChanged();
+    awakeContactsChanged = true;
 }
 
 void WorldImpl::removeAwakeContact(std::uint32_t index) {
@@ -500,7 +501,8 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
     contacts[last].awakeIndex = at;
     awakeContacts.pop_back();
     contacts[index].awakeIndex = kNullIndex;
-    rowsStale = awakeContactsChanged = true;
+    solver.layoutChanged();
+    awakeContactsChanged = true;
 }
 
 void WorldImpl::updatePairs() {
@@ -534,7 +536,7 @@ void WorldImpl::updateContacts() {
                            &pointsChanged};
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) { refreshContacts(pass, begin, end); });
 
-    if (pointsChanged.load()) rowsStale = true;
+    if (pointsChanged.load()) solver.layoutChanged();
 
     // Changes in a fixed order (the awake list's), serially: they link islands, wake sleepers and destroy.
     changedContacts.clear();

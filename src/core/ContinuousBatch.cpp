@@ -1,6 +1,6 @@
 // Continuous batches: filling, validation at the API boundary, and the CPU solve over the shared kernel.
 
-#include "physim/core/ContinuousBatch.hpp"
+#include "ContinuousCpu.hpp"
 
 #include "KernelBridge.hpp"
 #include "shapes/ShapeKinds.hpp"
@@ -235,34 +235,22 @@ kernel::Motion toKernel(const Sweep& s) { return {{s.p0.x(), s.p0.y()}, {s.p1.x(
 
 kernel::Xf toKernel(const Transform& xf) { return {{xf.p.x(), xf.p.y()}, {xf.q.c, xf.q.s}}; }
 
-void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, unsigned threads) {
+void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, Executor& executor) {
     result.resize(batch.pairCount());
     const kernel::BatchView in = viewOf(batch);
     const kernel::ResultView out = viewOf(result);
-    auto solveRange = [&](std::int64_t begin, std::int64_t end) {
-        for (auto i = static_cast<std::int32_t>(begin); i < end; ++i) kernel::solvePair(in, out, i);
-    };
-    // Below about 2000 pairs per thread, starting a thread costs a noticeable share of the work (~1 us a pair).
-    constexpr std::int64_t kMinPairsPerThread = 2048;
-    const std::int64_t n = in.pairCount;
-    const std::int64_t workers =
-        std::max<std::int64_t>(1, std::min<std::int64_t>(threads, (n + kMinPairsPerThread - 1) / kMinPairsPerThread));
-    if (workers <= 1) {
-        solveRange(0, n);
-        return;
-    }
-    std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(workers - 1));
-    const std::int64_t chunk = (n + workers - 1) / workers;
-    try {
-        for (std::int64_t w = 1; w < workers; ++w)
-            pool.emplace_back(solveRange, std::min(n, w * chunk), std::min(n, (w + 1) * chunk));
-    } catch (...) {  // a thread that could not start: join those that did, then report it
-        for (std::thread& t : pool) t.join();
-        throw;
-    }
-    solveRange(0, std::min(n, chunk));
-    for (std::thread& t : pool) t.join();
+    // Each pair is solved alone, so any split of the pairs gives the same results.
+    executor.parallelFor(batch.pairCount(), kPairGrain, [&](std::size_t begin, std::size_t end, int) {
+        for (auto i = static_cast<std::int32_t>(begin); i < static_cast<std::int32_t>(end); ++i)
+            kernel::solvePair(in, out, i);
+    });
+}
+
+void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, unsigned threads) {
+    // A thread for each kPairGrain pairs at most: a batch that takes one thread makes no arena at all.
+    const std::size_t useful = std::max<std::size_t>(1, batch.pairCount() / kPairGrain);
+    Executor executor(static_cast<int>(std::min<std::size_t>(std::max(threads, 1u), useful)));
+    solveOnCpu(batch, result, executor);
 }
 
 CpuContinuousSolver::CpuContinuousSolver(unsigned threads)

@@ -1,5 +1,6 @@
 #include "ContinuousStage.hpp"
 
+#include "ContinuousCpu.hpp"
 #include "WorldImpl.hpp"
 #include "shapes/ShapeKinds.hpp"
 
@@ -29,7 +30,7 @@ double turningRadius(const Geometry& g) {
 Sweep ContinuousStage::sweepOf(const WorldImpl& w, std::uint32_t slot) const {
     const BodyData& b = w.bodies[slot];
     if (!b.awake()) return {b.xf.p, b.xf.p, b.angle, b.angle};
-    const SolverBodySim& sim = w.sims[static_cast<std::size_t>(b.awakeIndex)];
+    const SolverBodySim& sim = w.solver.sim(static_cast<std::size_t>(b.awakeIndex));
     // The origin's start pose; its path is taken as straight (exact when the centre of mass is the origin).
     const Vec2 start = sim.center0 - sim.q0.apply(b.localCenter);
     return {start, b.xf.p, sim.angle0, b.angle};
@@ -176,7 +177,7 @@ void ContinuousStage::run(WorldImpl& w) {
     }
     if (batch_.pairCount() > 0) {
         if (solver_) solver_->solve(batch_, batchResult_);
-        else solveOnCpu(batch_, batchResult_, 1);
+        else solveOnCpu(batch_, batchResult_, w.executor);  // on the step's threads
         for (std::size_t p = 0; p < pairCandidate_.size(); ++p) {
             Candidate& c = candidates_[pairCandidate_[p]];
             const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
@@ -200,7 +201,7 @@ void ContinuousStage::run(WorldImpl& w) {
         b.angle = c.sweep.angleAt(c.t);
         b.center = b.xf.apply(b.localCenter);
         b.aabb = computeAabb(b.shape, b.xf);
-        if (w.proxyOutgrown(b)) w.enlarged[c.awakeIndex] |= 4;  // moved once, after this stage
+        if (w.proxyOutgrown(b)) w.solver.deferProxy(c.awakeIndex);  // moved once, after this stage
     }
 }
 

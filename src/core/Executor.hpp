@@ -1,5 +1,6 @@
 #pragma once
-// The step's worker threads: oneTBB's task arena, limited to WorldSettings::threads. Internal.
+// The core's worker threads: a oneTBB task arena of a given thread count (WorldSettings::threads for the step, the
+// CPU continuous solver's own for its batches); the core starts no thread of its own. Internal.
 //
 // Every parallel loop in the step writes only to its own items or to per-worker buffers that are merged in a
 // fixed order afterwards, so results are bit-identical for any thread count.
@@ -39,9 +40,9 @@ public:
 
     /// Calls fn(begin, end, worker) over disjoint ranges covering [0, n); on one thread, or when n is below two
     /// grains, a single call fn(0, n, 0). Inside run() the ranges are chunks of at most `grain` items of each
-    /// thread's equal share, shared by run()'s team (Team.hpp); elsewhere the range is split evenly between the threads up front
-    /// into ranges of at least half a grain (static partitioner: the loops are short and even, and one task per
-    /// thread costs less than stealing finer tasks; docs/performance.md).
+    /// thread's equal share, shared by run()'s team (Team.hpp); elsewhere the range is split evenly between the
+    /// threads up front into ranges of at least half a grain (static partitioner: the loops are short and even, and
+    /// one task per thread costs less than stealing finer tasks).
     template <class Fn>
     void parallelFor(std::size_t n, std::size_t grain, Fn&& fn) {
         if (n == 0) return;

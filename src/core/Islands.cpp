@@ -108,7 +108,7 @@ void WorldImpl::addAwakeBody(std::uint32_t slot) {
     if (b.awake() || b.type == BodyType::Static) return;
     b.awakeIndex = static_cast<std::int32_t>(awake.size());
     awake.push_back(slot);
-    rowsStale = true;
+    solver.layoutChanged();
 }
 
 void WorldImpl::removeAwakeBody(std::uint32_t slot) {
@@ -119,7 +119,7 @@ void WorldImpl::removeAwakeBody(std::uint32_t slot) {
     bodies[last].awakeIndex = b.awakeIndex;
     awake.pop_back();
     b.awakeIndex = kNullIndex;
-    rowsStale = true;
+    solver.layoutChanged();
 }
 
 void WorldImpl::wakeBody(std::uint32_t slot) {

@@ -6,12 +6,12 @@ namespace physim {
 
 std::string_view stageName(Stage s) {
     switch (s) {
-        case Stage::Forces: return "forces";
         case Stage::BroadPhase: return "broad phase";
         case Stage::NarrowPhase: return "narrow phase";
-        case Stage::Continuous: return "continuous";
+        case Stage::Forces: return "forces";
         case Stage::Solve: return "solve";
         case Stage::Integrate: return "integrate";
+        case Stage::Continuous: return "continuous";
         case Stage::Sleep: return "sleep";
         case Stage::Count: break;
     }

@@ -18,8 +18,8 @@
 // joins whatever stage is current, and one that starts after the end returns at once. Which thread runs a chunk
 // never changes what the chunk computes (the loops write only their own items), so results stay bit-identical.
 //
-// On two threads a loop pays for every cache line that moves between the cores (a round trip took 90 to 470 ns on
-// the machines measured, docs/performance.md), so each loop moves as few as it can, and no thread waits on a store:
+// On two threads a loop pays for every cache line that moves between the cores (a round trip of hundreds of
+// nanoseconds), so each loop moves as few as it can, and no thread waits on a store:
 //   - the stage's number and description share one line, written by the driver as a sequence lock (odd while
 //     it writes), so a helper gets the whole stage in one move;
 //   - a member's chunk counter is written by the others only when they take from its run: a counter tagged with

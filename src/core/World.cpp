@@ -163,7 +163,7 @@ void World::setSettings(const WorldSettings& settings) {
     const bool sleepWasOn = impl_->settings.enableSleep;
     impl_->settings = settings;
     impl_->executor.setThreads(settings.threads);
-    impl_->rowsStale = true;  // the rows' groups depend on the thread count
+    impl_->solver.layoutChanged();  // the rows' groups depend on the thread count
     if (!settings.enableSleep) {
         for (std::uint32_t i = 0; i < impl_->bodies.size(); ++i)
             if (impl_->bodies[i].alive) impl_->wakeBody(i);
@@ -388,7 +388,7 @@ void World::setType(BodyId id, BodyType type) {
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
     const bool wasStatic = b.type == BodyType::Static;
     b.type = type;
-    w.rowsStale = true;
+    w.solver.layoutChanged();
     b.mass = trial.mass;
     b.density = trial.density;
     b.invMass = trial.invMass;
@@ -454,7 +454,7 @@ void World::setCollisionDetection(BodyId id, CollisionDetection mode, double pre
     if (mode != CollisionDetection::Discrete) ++impl_->continuousCount;
     b.detection = mode;
     b.precision = precision;
-    impl_->rowsStale = true;  // an exact-continuous body's island keeps the warm start on its rows
+    impl_->solver.layoutChanged();  // an exact-continuous body's island keeps the warm start on its rows
 }
 
 CollisionDetection World::collisionDetection(BodyId id) const { return at(id).detection; }
@@ -550,13 +550,13 @@ void World::step(double dt) {
     if (narrowPhase || solve)
         w.executor.run([&] {
             runStage(w.profile, Stage::NarrowPhase, narrowPhase, [&] { w.updateContacts(); });
-            if (solve) w.solve();
+            if (solve) w.solver.solve(w);
         });
-    runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.fastBodies) && !w.awake.empty(),
+    runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.solver.fastBodies()) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
-    runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.moveDeferredProxies(); });
+    runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.solver.moveDeferredProxies(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
-    w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.rowContacts.size() : 0;
+    w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.solver.rowCount() : 0;
     ++w.stepCount;
 }
 

@@ -5,7 +5,8 @@
 //   BroadPhase.cpp     dynamic trees, new candidate pairs
 //   Contacts.cpp       persistent contacts: creation, the narrow-phase update, begin / end
 //   Islands.cpp        persistent islands: merging, splitting, sleeping and waking
-//   Solver.cpp         the soft step: gather, colour, substeps, restitution, finalize
+//   Solver.cpp         the soft step: gather, substeps, restitution, finalize (its scratch in Solver.hpp)
+//   ConstraintGraph.cpp the rows' layout: colours, this step's islands and groups, the halves of two threads
 //   ContactSolver.cpp  the contact constraint rows
 //   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
@@ -15,13 +16,12 @@
 #include "BodyData.hpp"
 #include "BroadPhase.hpp"
 #include "ContactData.hpp"
-#include "ContactSolver.hpp"
 #include "ContinuousStage.hpp"
 #include "Executor.hpp"
 #include "IslandData.hpp"
 #include "JointData.hpp"
 #include "PairSet.hpp"
-#include "SolverData.hpp"
+#include "Solver.hpp"
 #include "effects/Effects.hpp"
 
 #include "physim/core/Contact.hpp"
@@ -68,6 +68,7 @@ struct WorldImpl {
     std::vector<std::uint32_t> freeIslands;
 
     BroadPhase broadPhase;
+    Solver solver;
     ContinuousStage continuous;
     Effects effects;
 
@@ -75,63 +76,10 @@ struct WorldImpl {
     std::vector<BodyPair> newPairs;
     std::vector<std::uint8_t> contactFlags;      // per awake contact: what the narrow phase found changed
     std::vector<std::pair<std::uint32_t, std::uint8_t>> changedContacts;
-    std::vector<SolverBody> solverBodies;        // a still body, then one per awake body
-    SolverBody* states = nullptr;                // &solverBodies[1]: states[i] is awake body i, states[-1] still
-    std::vector<PushVelocity> pushVelocities;    // per awake body: the solve passes' push-out (ContactSolver)
-    std::vector<RowsBase> rowsBase;              // per awake body: velocity before the substep's rows (Solver)
-    std::vector<WarmStartVelocity> warmStarts;   // per awake body: what the substep's warm start gave it (bounces)
-    std::vector<SolverBodySim> sims;
-    // The awake bodies are solved in groups of whole islands (Solver.cpp); a segment is one group's rows of one
-    // colour, or its overflow: segment g * (colours + 1) + c.
-    std::vector<std::int32_t> bodyRoot;          // per awake body: union-find parent, then its island's root
-    std::vector<std::uint32_t> islandSize;       // per root: its island's bodies
-    std::vector<std::uint32_t> bodyGroup;        // per awake body: its group
-    // Per awake body, then per island root: its island keeps the warm start as a pass over the rows (it has a joint
-    // or an exact-continuous bullet; Solver.cpp); such islands are grouped apart from the others.
-    std::vector<std::uint8_t> rowsWarmStart;
-    std::vector<std::uint8_t> groupRowsWarmStart;  // per group: the same for all its islands
-    std::vector<std::uint32_t> groupBodies;      // awake indices, group by group
-    std::vector<std::uint32_t> groupBodyStart;   // group g's bodies: [groupBodyStart[g], groupBodyStart[g + 1])
-    std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise
-    std::vector<RowRef> rowContacts;             // the contact of each row, segment by segment
-    std::vector<std::uint32_t> segmentStart;     // rows of segment s: [segmentStart[s], segmentStart[s + 1])
-    // The rows, kLanes to a block (an overflow row alone), and the rest of each block's rows: a group's blocks live
-    // only while it is solved, in a region of `regionBlocks` blocks per worker (Solver.cpp), reused group after group.
-    std::vector<ContactBlock> contactBlocks;
-    std::vector<ContactBlockCold> contactCold;
-    std::size_t regionBlocks = 0;
-    std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
-    std::vector<BlockRows> blockRows;            // per block: its first row and how many lanes it uses
-    std::vector<std::uint32_t> shareHeads;       // on two threads, per group and colour: where the halves' heads end
-    std::vector<std::uint8_t> bodyShares;        // markShareHeads: which halves touch each awake body (bits)
-    std::vector<std::size_t> headBlocks;         // markShareHeads: per group, blocks in heads and all blocks
-    std::vector<std::uint32_t> shareBodies;      // on two threads, each group's bodies by half: head, first, second
-    std::vector<std::uint32_t> shareBodyCuts;    // per group: where the first half's head ends, and the second's starts
-    std::vector<std::int8_t> rowImpact;          // per block lane in use: its impact event's point; -1: none
-    std::vector<double> rowImpactSpeed;          // per block lane with an impact: how fast it met, m/s
-    std::vector<std::uint32_t> segmentFill;      // counting sorts' next free place
-    ContactPass contactPassSettings;             // this step's pass constants
-    std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
-    std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
-    std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
-    std::vector<std::uint32_t> rowOrder;         // layOutRows' counting sort: per awake body, where its rows go
-    std::vector<std::uint32_t> sortedRows;       // the coloured rows (as rowRefs' indices) by first body
-    std::vector<JointConstraint> jointConstraints;  // group by group
-    // The rows' layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their
-    // order, the bodies' types and detection, which contacts have points), the joints and the thread count: while
-    // none of that changes, a step keeps the last one's (layOutRows). Whatever changes it sets rowsStale.
-    bool rowsStale = true;
-    bool rowsByIsland = true;  // the layout's byIsland
     // The narrow phase tests each awake contact's proxies for overlap only when a box or the awake contacts changed
     // since it last did (Contacts.cpp): every contact it then kept overlapped, and still does.
     bool awakeContactsChanged = true;
     std::uint64_t checkedBoxRevision = 0;
-    std::vector<JointConstraint> groupedJoints;
-    std::vector<std::int32_t> deferredKeys;  // moveDeferredProxies' proxies and their new boxes
-    std::vector<Aabb> deferredBoxes;
-    std::vector<std::uint8_t> enlarged;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
-                                         // proxy to move after the Continuous stage (bit 2)
-    bool fastBodies = false;                     // a dynamic body moved more than half its core radius
     std::vector<std::uint32_t> touched;          // bodies changed since the last step: proxies to check
     std::vector<double> islandSleep;             // per island: least sleep time of its awake bodies
     std::vector<std::uint32_t> splitStack;
@@ -185,23 +133,6 @@ struct WorldImpl {
     void updateSleep();      // the Sleep stage
     void splitIsland(std::uint32_t island);
     void sleepIsland(std::uint32_t island);
-
-    // Solver.cpp
-    void solve();            // the Forces, Solve and Integrate stages
-    /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).
-    std::size_t layOutRows(bool byIsland, double h, const Softness& rodSoftness);
-    void markShareHeads();
-    bool halvesInOrder(std::size_t g) const;  // on two threads, group g's halves meet in few blocks: run in order
-    bool spreads(std::size_t g) const;  // group g's loops are spread over the threads (else it goes to one whole)
-    /// Joint `joint`'s row for this step (substep h).
-    JointConstraint jointRow(std::uint32_t joint, double h, const Softness& rodSoftness) const;
-    void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
-    void groupIslands(bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
-    void startBody(std::size_t i);   // awake body i's solver state and sims from its record
-    void finishBody(std::size_t i);  // its record from the solver's state: pose, box, sleep timer, enlarged
-    /// A group's rows, substeps and impulses, its blocks in `worker`'s region; returns its turning rows.
-    std::size_t solveGroup(std::size_t g, bool timed, int worker);
-    void moveDeferredProxies();  // after the Continuous stage: the proxies of bodies it may have put back
 };
 
 }  // namespace physim

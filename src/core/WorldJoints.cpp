@@ -56,7 +56,7 @@ std::uint32_t WorldImpl::addJoint(const JointData& data) {
     ++jointCount;
     if (j.isRow()) ++rowJointCount;
     else effects.springs.add(index);  // a joint that is not a row is a force: the springs effect applies it
-    rowsStale = true;
+    solver.layoutChanged();
     wakeBody(j.b);
     if (j.twoBodies()) {
         wakeBody(j.a);
@@ -120,7 +120,7 @@ void World::destroyJoint(JointId id) {
     unlinkJoint(w, id.index);
     if (j.isRow()) --w.rowJointCount;
     else w.effects.springs.remove(id.index);
-    w.rowsStale = true;
+    w.solver.layoutChanged();
     w.joints[id.index].alive = false;
     w.freeJoints.push_back(id.index);
     --w.jointCount;

@@ -6,15 +6,16 @@
 
 namespace physim {
 
-/// The stages of one fixed step, in order. A stage the scene's content does not call for is skipped before
-/// it does any work (StepProfile::ran tells which ran).
+/// The stages of one fixed step, in the order the step runs them (docs/architecture.md, "The engine step"); the
+/// force callbacks, which open the step before the broad phase, count in Forces. A stage the scene's content does
+/// not call for is skipped before it does any work (StepProfile::ran tells which ran).
 enum class Stage : std::size_t {
-    Forces,       ///< gravity, accumulated forces and the force effects into velocities
     BroadPhase,   ///< candidate pairs whose bounding boxes overlap
     NarrowPhase,  ///< contact manifolds of the candidate pairs
-    Continuous,   ///< time of impact for fast bodies
+    Forces,       ///< gravity, accumulated forces and the force effects into velocities
     Solve,        ///< contact impulses
     Integrate,    ///< velocities into positions, position correction
+    Continuous,   ///< time of impact for fast bodies
     Sleep,        ///< bodies at rest stop being simulated
     Count
 };

@@ -65,8 +65,8 @@ void DragEffect::apply(WorldImpl& w, double h) const {
             const BodyData& b = w.bodies[slots[k]];
             if (!b.awake() || b.type != BodyType::Dynamic) continue;
             const std::size_t i = static_cast<std::size_t>(b.awakeIndex);
-            SolverBody& s = w.states[i];
-            const SolverBodySim& sim = w.sims[i];
+            SolverBody& s = w.solver.states()[i];
+            const SolverBodySim& sim = w.solver.sim(i);
             const Coefficients& c = coefficients_[k];
             // The velocity the substep's kick is about to give (the other effects' kicks are in s.v already).
             const Vec2 v = s.v + h * sim.acceleration;

@@ -17,8 +17,8 @@ BodyNow bodyNow(const WorldImpl& w, std::uint32_t slot) {
         return now;
     }
     const std::size_t i = static_cast<std::size_t>(b.awakeIndex);
-    const SolverBody& s = w.states[i];
-    const SolverBodySim& sim = w.sims[i];
+    const SolverBody& s = w.solver.states()[i];
+    const SolverBodySim& sim = w.solver.sim(i);
     now.center = sim.center0 + s.dp;
     now.q = compose(s.dq, sim.q0);
     now.v = s.v;

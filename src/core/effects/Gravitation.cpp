@@ -41,7 +41,7 @@ void GravitationEffect::apply(WorldImpl& w, double h) {
             if (!b.awake() || b.type != BodyType::Dynamic) continue;
             const Vec2 a = tree ? tree_.acceleration(k, G, eps2, theta)
                                 : directAcceleration(positions_, masses_, k, G, eps2);
-            w.states[static_cast<std::size_t>(b.awakeIndex)].v += h * a;
+            w.solver.states()[static_cast<std::size_t>(b.awakeIndex)].v += h * a;
         }
     });
 }

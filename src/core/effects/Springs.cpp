@@ -30,12 +30,12 @@ void SpringEffect::apply(WorldImpl& w, double h) const {
         // On B, N s (SpringJoint::reaction is the same force, N).
         const Vec2 P = -h * (spring.stiffness * (length - spring.restLength) + spring.damping * stretchRate) * u;
         if (B.invMass > 0.0) {
-            SolverBody& s = w.states[static_cast<std::size_t>(B.index)];
+            SolverBody& s = w.solver.states()[static_cast<std::size_t>(B.index)];
             s.v += B.invMass * P;
             s.w += B.invInertia * cross(rB, P);
         }
         if (A.invMass > 0.0) {
-            SolverBody& s = w.states[static_cast<std::size_t>(A.index)];
+            SolverBody& s = w.solver.states()[static_cast<std::size_t>(A.index)];
             s.v -= A.invMass * P;
             s.w -= A.invInertia * cross(rA, P);
         }

@@ -1,0 +1,71 @@
+#pragma once
+// The soft step's solver: the Forces, Solve and Integrate stages over the awake bodies, and its scratch, kept
+// between steps so a running scene allocates nothing. Internal.
+//
+// Per step: gather the awake bodies into contiguous arrays, lay the rows out in the constraint graph (colours,
+// groups, blocks; ConstraintGraph.hpp), then per group the substeps of integrate velocities -> warm start -> solve
+// -> integrate positions -> relax, and finalize (poses, boxes, sleep timers, proxies that left their boxes).
+
+#include "ConstraintGraph.hpp"
+#include "ContactSolver.hpp"
+#include "SolverData.hpp"
+
+#include "physim/core/Aabb.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace physim {
+
+struct WorldImpl;
+
+class Solver {
+public:
+    /// The Forces, Solve and Integrate stages over w.awake.
+    void solve(WorldImpl& w);
+    /// After the Continuous stage: the proxies of bodies it may have put back.
+    void moveDeferredProxies(WorldImpl& w);
+
+    /// Something the rows' layout depends on changed (ConstraintGraph::stale): the next step lays them out anew.
+    void layoutChanged() { graph_.stale = true; }
+    /// The contact rows of the last layout.
+    std::size_t rowCount() const { return graph_.rowContacts.size(); }
+
+    /// While the step runs: awake body i's state (states()[i]; states()[-1] is the still body) and what the
+    /// substeps read of its record.
+    SolverBody* states() const { return states_; }
+    const SolverBodySim& sim(std::size_t i) const { return sims_[i]; }
+    /// A dynamic body moved far for its size this step: the Continuous stage has work.
+    bool fastBodies() const { return fastBodies_; }
+    /// The Continuous stage put awake body i back and its proxy must move: it does once, after that stage.
+    void deferProxy(std::size_t i) { enlarged_[i] |= 4; }
+
+private:
+    void startBody(WorldImpl& w, std::size_t i);   // awake body i's solver state and sims from its record
+    void finishBody(WorldImpl& w, std::size_t i);  // its record from the solver's state: pose, box, sleep, enlarged
+    /// A group's rows, substeps and impulses, its blocks in `worker`'s region; returns its turning rows.
+    std::size_t solveGroup(WorldImpl& w, std::size_t g, bool timed, int worker);
+
+    ConstraintGraph graph_;
+    std::vector<SolverBody> solverBodies_;       // a still body, then one per awake body
+    SolverBody* states_ = nullptr;               // &solverBodies_[1]: states_[i] is awake body i, states_[-1] still
+    std::vector<SolverBodySim> sims_;
+    std::vector<PushVelocity> pushVelocities_;   // per awake body: the solve passes' push-out (ContactSolver)
+    std::vector<RowsBase> rowsBase_;             // per awake body: velocity before the substep's rows
+    std::vector<WarmStartVelocity> warmStarts_;  // per awake body: what the substep's warm start gave it (bounces)
+    // The rows, kLanes to a block (an overflow row alone), and the rest of each block's rows: a group's blocks live
+    // only while it is solved, in its worker's region (ConstraintGraph::regionBlocks), reused group after group.
+    std::vector<ContactBlock> contactBlocks_;
+    std::vector<ContactBlockCold> contactCold_;
+    std::vector<std::int8_t> rowImpact_;         // per block lane in use: its impact event's point; -1: none
+    std::vector<double> rowImpactSpeed_;         // per block lane with an impact: how fast it met, m/s
+    ContactPass contactPassSettings_;            // this step's pass constants
+    std::vector<std::uint8_t> enlarged_;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
+                                          // proxy to move after the Continuous stage (bit 2)
+    bool fastBodies_ = false;             // a dynamic body moved more than half its core radius
+    std::vector<std::int32_t> deferredKeys_;  // moveDeferredProxies' proxies and their new boxes
+    std::vector<Aabb> deferredBoxes_;
+};
+
+}  // namespace physim
