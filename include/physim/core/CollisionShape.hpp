@@ -40,7 +40,7 @@ public:
     const Transform& transform() const { return transform_; }
     Vec2 getPosition() const { return transform_.p; }
     double getRotation() const { return angle_; }  ///< rad
-    /// Places the shape: its local origin (the body's centre of mass) at `position`, rotated by `angle` rad.
+    /// Places the shape: its local origin (the body origin) at `position`, rotated by `angle` rad.
     void setTransform(const Vec2& position, double angle);
 
 protected:

@@ -2,7 +2,7 @@
 // Many exact time-of-impact queries at once (the paper's section 5.2.4 made to pay off: one launch for all pairs
 // instead of one per pair). The data is a structure of arrays, so the GPU threads of a warp read neighbouring
 // memory and the whole batch moves to the device in a few copies; the CPU solves the same arrays with the same
-// code (ContinuousKernel.hpp). docs/cuda.md has the design and the measurements.
+// code (the shared kernel, src/core/ContinuousKernel.hpp). docs/cuda.md explains the design.
 //
 //   shapes: one entry per distinct shape; a polygon's vertices and normals sit in the flat vertex arrays from
 //           firstVertex, a circle's centre is its one vertex.

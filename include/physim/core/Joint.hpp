@@ -33,7 +33,7 @@ enum class JointType { Distance, Mouse, Spring, Revolute, Weld };
 struct DistanceJointDef {
     BodyId bodyA;
     BodyId bodyB;
-    Vec2 localAnchorA = Vec2::Zero();  ///< m, in A's frame (its centre of mass is the origin)
+    Vec2 localAnchorA = Vec2::Zero();  ///< m, in A's frame (relative to its body origin)
     Vec2 localAnchorB = Vec2::Zero();  ///< m, in B's frame
     /// m, > 0; <= 0 (the default) takes the anchors' distance when the joint is created.
     double length = 0.0;

@@ -28,7 +28,8 @@ constexpr double kToiTolerance = 1e-4;
 /// Throws std::invalid_argument naming the value unless 0 < precision <= 1 (NaN rejected).
 void checkPrecision(double precision);
 
-/// A body's motion over the interval: origin (centre of mass) and angle move linearly from (p0, a0) to (p1, a1).
+/// A body's motion over the interval: its origin and angle move linearly from (p0, a0) to (p1, a1). (The World
+/// turns a body about its centre of mass, so for an off-centre shape this straight path is an approximation.)
 struct Sweep {
     Vec2 p0 = Vec2::Zero();  ///< m
     Vec2 p1 = Vec2::Zero();  ///< m
