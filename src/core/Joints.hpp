@@ -12,16 +12,26 @@
 //   reaction(now, 1/h)        its force on B and torque, N and N m: the accumulated impulses over the substep
 // and its World::createXJoint, with any setters of its own. A kind keeps its accumulated impulses in its own record:
 // solve adds to them in place, and they are the next step's warm start, so nothing is stored after the last pass.
-// A kind that is not a row (a spring: a force, effects/Springs.cpp) provides only the creation and the reaction.
+// A kind that is not a row (a spring: a force, effects/Springs.cpp) provides, instead of the row's functions,
+//   addTo, removeFrom(effects, joint)  hand the joint to the effect that applies its force, and take it back
+// A kind may also provide (World::jointLength and jointAngle refuse the others):
+//   jointLength()             its length, m
+//   jointAngle(A, B)          its angle between the bodies, rad
 // The functions below visit the kind once per call (a switch): the only place that dispatches on it.
 
 #include "JointData.hpp"
 
+#include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
 
 namespace physim {
+
+struct Effects;
 
 namespace detail {
 // Calls f(kind) for a joint solved as a row.
@@ -32,6 +42,27 @@ void visitRow(Params& params, F&& f) {
             if constexpr (std::decay_t<decltype(kind)>::kRow) f(kind);
         },
         params);
+}
+
+// Whether a kind provides jointLength() or jointAngle(A, B).
+template <class Kind, class = void>
+struct HasLength : std::false_type {};
+template <class Kind>
+struct HasLength<Kind, std::void_t<decltype(std::declval<const Kind&>().jointLength())>> : std::true_type {};
+template <class Kind, class = void>
+struct HasAngle : std::false_type {};
+template <class Kind>
+struct HasAngle<Kind, std::void_t<decltype(std::declval<const Kind&>().jointAngle(std::declval<const BodyData&>(),
+                                                                                   std::declval<const BodyData&>()))>>
+    : std::true_type {};
+
+// "a distance or spring joint": the kinds that have what `call` reads, for refusing the one at hand.
+template <template <class, class> class Has, class... Kinds>
+[[noreturn]] void refuseKind(const char* call, const char* kind, JointKindList<Kinds...>) {
+    std::string names;
+    ((Has<Kinds, void>::value ? (names += (names.empty() ? "" : " or ") + std::string(Kinds::kName), 0) : 0), ...);
+    throw std::invalid_argument(std::string("physim: ") + call + " needs a " + names + " joint, not a " + kind +
+                                " joint");
 }
 }  // namespace detail
 
@@ -90,6 +121,48 @@ inline JointReaction jointReaction(const JointData& joint, const std::vector<Bod
         now.velocityA = A.v + cross(A.w, rA);
     }
     return std::visit([&](const auto& kind) { return kind.reaction(now, invH); }, joint.params);
+}
+
+/// World::jointLength: the joint's length, m; std::invalid_argument for a kind without one.
+inline double jointLength(const JointData& joint) {
+    return std::visit(
+        [](const auto& kind) -> double {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (detail::HasLength<Kind>::value) return kind.jointLength();
+            else detail::refuseKind<detail::HasLength>("jointLength", Kind::kName, JointKinds{});
+        },
+        joint.params);
+}
+
+/// World::jointAngle: the joint's angle between its bodies, rad; std::invalid_argument for a kind without one.
+inline double jointAngle(const JointData& joint, const std::vector<BodyData>& bodies) {
+    return std::visit(
+        [&](const auto& kind) -> double {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (detail::HasAngle<Kind>::value) return kind.jointAngle(bodies[joint.a], bodies[joint.b]);
+            else detail::refuseKind<detail::HasAngle>("jointAngle", Kind::kName, JointKinds{});
+        },
+        joint.params);
+}
+
+/// A joint that is not a row is a force: its kind hands it to the effect that applies it (a row: nothing to do).
+inline void addForceJoint(const JointData& joint, std::uint32_t index, Effects& effects) {
+    std::visit(
+        [&](const auto& kind) {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (!Kind::kRow) Kind::addTo(effects, index);
+        },
+        joint.params);
+}
+
+/// The joint is going: a force's kind takes it back from its effect.
+inline void removeForceJoint(const JointData& joint, std::uint32_t index, Effects& effects) {
+    std::visit(
+        [&](const auto& kind) {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (!Kind::kRow) Kind::removeFrom(effects, index);
+        },
+        joint.params);
 }
 
 }  // namespace physim

@@ -55,7 +55,7 @@ std::uint32_t WorldImpl::addJoint(const JointData& data) {
     linkJoint(*this, index);
     ++jointCount;
     if (j.isRow()) ++rowJointCount;
-    else effects.springs.add(index);  // a joint that is not a row is a force: the springs effect applies it
+    else addForceJoint(j, index, effects);
     solver.layoutChanged();
     wakeBody(j.b);
     if (j.twoBodies()) {
@@ -119,7 +119,7 @@ void World::destroyJoint(JointId id) {
     }
     unlinkJoint(w, id.index);
     if (j.isRow()) --w.rowJointCount;
-    else w.effects.springs.remove(id.index);
+    else removeForceJoint(j, id.index, w.effects);
     w.solver.layoutChanged();
     w.joints[id.index].alive = false;
     w.freeJoints.push_back(id.index);
@@ -129,21 +129,8 @@ void World::destroyJoint(JointId id) {
 std::size_t World::jointCount() const { return impl_->jointCount; }
 JointType World::jointType(JointId id) const { return joint(id).type(); }
 
-double World::jointLength(JointId id) const {
-    const JointData& j = joint(id);
-    if (const auto* rod = std::get_if<DistanceJoint>(&j.params)) return rod->length;
-    if (const auto* spring = std::get_if<SpringJoint>(&j.params)) return spring->restLength;
-    throw std::invalid_argument("physim: jointLength needs a distance joint or a spring");
-}
-
-double World::jointAngle(JointId id) const {
-    const JointData& j = joint(id);
-    double reference = 0.0;
-    if (const auto* pin = std::get_if<RevoluteJoint>(&j.params)) reference = pin->referenceAngle;
-    else if (const auto* weld = std::get_if<WeldJoint>(&j.params)) reference = weld->referenceAngle;
-    else throw std::invalid_argument("physim: jointAngle needs a revolute or weld joint");
-    return impl_->bodies[j.b].angle - impl_->bodies[j.a].angle - reference;
-}
+double World::jointLength(JointId id) const { return physim::jointLength(joint(id)); }
+double World::jointAngle(JointId id) const { return physim::jointAngle(joint(id), impl_->bodies); }
 
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);

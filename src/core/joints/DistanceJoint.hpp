@@ -26,6 +26,8 @@ struct DistanceJoint {
     void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;
     void solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias);
     JointReaction reaction(const JointEndsNow& now, double invH) const;
+    /// World::jointLength: the rod's length, m.
+    double jointLength() const { return length; }
 };
 
 }  // namespace physim

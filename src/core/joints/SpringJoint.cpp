@@ -1,6 +1,7 @@
 #include "SpringJoint.hpp"
 
 #include "../JointData.hpp"
+#include "../effects/Effects.hpp"
 
 #include "physim/core/Validate.hpp"
 #include "physim/core/World.hpp"
@@ -10,6 +11,9 @@ namespace physim {
 JointId World::createSpringJoint(const SpringJointDef& def) {
     return createJoint({KindDefinition<SpringJoint>{&def, "createSpringJoint"}});
 }
+
+void SpringJoint::addTo(Effects& effects, std::uint32_t joint) { effects.springs.add(joint); }
+void SpringJoint::removeFrom(Effects& effects, std::uint32_t joint) { effects.springs.remove(joint); }
 
 SpringJoint SpringJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB) {
     const bool toPoint = def.bodyA.isNull();

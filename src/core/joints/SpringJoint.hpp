@@ -8,7 +8,11 @@
 
 #include "physim/core/Joint.hpp"
 
+#include <cstdint>
+
 namespace physim {
+
+struct Effects;
 
 struct SpringJoint {
     using Def = SpringJointDef;
@@ -24,6 +28,11 @@ struct SpringJoint {
     static SpringJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
     /// Its force on B now (the reaction: a force has no impulses to report).
     JointReaction reaction(const JointEndsNow& now, double invH) const;
+    /// World::jointLength: the rest length, m.
+    double jointLength() const { return restLength; }
+    /// Not a row: the springs effect applies its force from the step after it is added until it is removed.
+    static void addTo(Effects& effects, std::uint32_t joint);
+    static void removeFrom(Effects& effects, std::uint32_t joint);
 };
 
 }  // namespace physim
