@@ -3,6 +3,7 @@
 // the horizontal pulls three times its weight at the bottom.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,20 +16,7 @@ namespace {
 constexpr double kG = 9.81;
 constexpr double kDt = 1.0 / 60.0;
 
-World quietWorld() {
-    WorldSettings s;
-    s.enableSleep = false;
-    return World(s);
-}
-
-BodyId fixedPoint(World& world, const Vec2& at) {
-    BodyDef d;
-    d.type = BodyType::Static;
-    d.shape = makeCircle(0.01);
-    d.position = at;
-    d.collides = false;
-    return world.createBody(d);
-}
+World quietWorld() { return World(test::awakeSettings()); }
 
 BodyId body(World& world, const Geometry& shape, const Vec2& at) {
     BodyDef d;
@@ -48,14 +36,25 @@ void expectHoldsWeight(const Vec2& force, double m, const char* what) {
     EXPECT_NEAR(force.y(), m * kG, 1e-6 * m * kG) << what;
 }
 
-TEST(JointReaction, ZeroBeforeTheFirstStep) {
+// A bob (a 5 cm disc) at `at` on a rod from a static pivot at the origin.
+struct RodPendulum {
     World world = quietWorld();
-    const BodyId pivot = fixedPoint(world, {0.0, 0.0});
-    const BodyId bob = body(world, makeCircle(0.05), {0.0, -1.0});
-    DistanceJointDef rod;
-    rod.bodyA = pivot;
-    rod.bodyB = bob;
-    const JointId j = world.createDistanceJoint(rod);
+    BodyId pivot = test::addStaticPivot(world);
+    BodyId bob;
+    JointId rod;
+
+    explicit RodPendulum(const Vec2& at) : bob(body(world, makeCircle(0.05), at)) {
+        DistanceJointDef def;
+        def.bodyA = pivot;
+        def.bodyB = bob;
+        rod = world.createDistanceJoint(def);
+    }
+};
+
+TEST(JointReaction, ZeroBeforeTheFirstStep) {
+    RodPendulum p({0.0, -1.0});
+    World& world = p.world;
+    const JointId j = p.rod;
     EXPECT_EQ(world.jointReactionForce(j), Vec2::Zero());
     EXPECT_EQ(world.jointReactionTorque(j), 0.0);
     EXPECT_THROW(world.jointReactionForce(JointId{}), std::invalid_argument);
@@ -63,13 +62,10 @@ TEST(JointReaction, ZeroBeforeTheFirstStep) {
 
 // A bob hanging still under its pivot: the rod's tension is the bob's weight, along the rod.
 TEST(JointReaction, PendulumRodAtRestHoldsTheWeight) {
-    World world = quietWorld();
-    const BodyId pivot = fixedPoint(world, {0.0, 0.0});
-    const BodyId bob = body(world, makeCircle(0.05), {0.0, -1.0});
-    DistanceJointDef rod;
-    rod.bodyA = pivot;
-    rod.bodyB = bob;
-    const JointId j = world.createDistanceJoint(rod);
+    RodPendulum p({0.0, -1.0});
+    World& world = p.world;
+    const BodyId bob = p.bob;
+    const JointId j = p.rod;
     run(world, 1.0);
     expectHoldsWeight(world.jointReactionForce(j), world.mass(bob), "rod");
     EXPECT_EQ(world.jointReactionTorque(j), 0.0);
@@ -79,13 +75,10 @@ TEST(JointReaction, PendulumRodAtRestHoldsTheWeight) {
 // vertical (m g cos + m v^2 / L, v^2 = 2 g L cos), 3 m g at the bottom. There it turns 0.074 rad per 1/60 s step,
 // so some step ends within 0.037 rad of it, where T falls short by under 1e-3; 5e-3 leaves room for the soft rod.
 TEST(JointReaction, PendulumPullsThreeTimesItsWeightAtTheBottom) {
-    World world = quietWorld();
-    const BodyId pivot = fixedPoint(world, {0.0, 0.0});
-    const BodyId bob = body(world, makeCircle(0.05), {1.0, 0.0});
-    DistanceJointDef rod;
-    rod.bodyA = pivot;
-    rod.bodyB = bob;
-    const JointId j = world.createDistanceJoint(rod);
+    RodPendulum p({1.0, 0.0});
+    World& world = p.world;
+    const BodyId bob = p.bob;
+    const JointId j = p.rod;
     double largest = 0.0;
     for (int i = 0; i * kDt < 1.0; ++i) {
         world.step(kDt);
@@ -98,7 +91,7 @@ TEST(JointReaction, PendulumPullsThreeTimesItsWeightAtTheBottom) {
 // A disc hanging from a pin at its top: the pin holds its weight and, free to turn, no torque.
 TEST(JointReaction, RevolutePinHoldsAHangingBody) {
     World world = quietWorld();
-    const BodyId pivot = fixedPoint(world, {0.0, 0.0});
+    const BodyId pivot = test::addStaticPivot(world);
     const BodyId disc = body(world, makeCircle(0.2), {0.0, -0.2});
     RevoluteJointDef pin;
     pin.bodyA = pivot;
@@ -110,42 +103,45 @@ TEST(JointReaction, RevolutePinHoldsAHangingBody) {
     EXPECT_EQ(world.jointReactionTorque(j), 0.0);
 }
 
-// A horizontal beam of length L held at one end: the hold carries its weight m g and the moment of that weight
-// about the end, m g L / 2 (counter-clockwise for a beam reaching to +x), to 1e-4 of it: the soft hold lets the
-// beam droop by some 1e-5 rad, which moves its centre of mass in by L (1 - cos), about 1e-10 L.
-double cantileverMoment(World& world, BodyId beam, double length) { return world.mass(beam) * kG * 0.5 * length; }
+// A horizontal beam of length L reaching to +x from a wall at the origin, to be held there by a joint. The hold
+// carries its weight m g and the moment of that weight about the end, m g L / 2 (counter-clockwise), to 1e-4 of it:
+// the soft hold lets the beam droop by some 1e-5 rad, which moves its centre of mass in by L (1 - cos), about 1e-10 L.
+struct Cantilever {
+    World world = quietWorld();
+    double length = 2.0;  // m
+    BodyId wall = test::addStaticPivot(world);
+    BodyId beam = body(world, makeBox(0.5 * length, 0.05), {0.5 * length, 0.0});
+
+    // A weld's or pin's definition joining the beam to the wall at the origin.
+    template <class Def>
+    Def hold() const {
+        Def def;
+        def.bodyA = wall;
+        def.bodyB = beam;
+        def.anchor = Vec2::Zero();
+        return def;
+    }
+
+    // Runs a second and checks that the hold `j` (a `what`) carries the weight and the moment.
+    void expectHeldBy(JointId j, const char* what) {
+        run(world, 1.0);
+        expectHoldsWeight(world.jointReactionForce(j), world.mass(beam), what);
+        EXPECT_NEAR(world.jointReactionTorque(j) / (world.mass(beam) * kG * 0.5 * length), 1.0, 1e-4) << what;
+    }
+};
 
 TEST(JointReaction, WeldHoldsACantilever) {
-    World world = quietWorld();
-    const double L = 2.0;
-    const BodyId wall = fixedPoint(world, {0.0, 0.0});
-    const BodyId beam = body(world, makeBox(0.5 * L, 0.05), {0.5 * L, 0.0});
-    WeldJointDef weld;
-    weld.bodyA = wall;
-    weld.bodyB = beam;
-    weld.anchor = Vec2::Zero();
-    const JointId j = world.createWeldJoint(weld);
-    run(world, 1.0);
-    expectHoldsWeight(world.jointReactionForce(j), world.mass(beam), "weld");
-    EXPECT_NEAR(world.jointReactionTorque(j) / cantileverMoment(world, beam, L), 1.0, 1e-4);
+    Cantilever c;
+    c.expectHeldBy(c.world.createWeldJoint(c.hold<WeldJointDef>()), "weld");
 }
 
 TEST(JointReaction, RevoluteMotorHoldsACantilever) {
-    World world = quietWorld();
-    const double L = 2.0;
-    const BodyId wall = fixedPoint(world, {0.0, 0.0});
-    const BodyId beam = body(world, makeBox(0.5 * L, 0.05), {0.5 * L, 0.0});
-    RevoluteJointDef pin;
-    pin.bodyA = wall;
-    pin.bodyB = beam;
-    pin.anchor = Vec2::Zero();
+    Cantilever c;
+    RevoluteJointDef pin = c.hold<RevoluteJointDef>();
     pin.enableMotor = true;
     pin.motorSpeed = 0.0;
     pin.maxMotorTorque = 1000.0;  // far above the beam's moment
-    const JointId j = world.createRevoluteJoint(pin);
-    run(world, 1.0);
-    expectHoldsWeight(world.jointReactionForce(j), world.mass(beam), "pin");
-    EXPECT_NEAR(world.jointReactionTorque(j) / cantileverMoment(world, beam, L), 1.0, 1e-4);
+    c.expectHeldBy(c.world.createRevoluteJoint(pin), "pin");
 }
 
 // A mouse joint holding a body still against gravity: its (capped, soft) pull is the body's weight.

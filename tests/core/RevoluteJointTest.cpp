@@ -2,6 +2,7 @@
 // its point, limits, the motor's speed and torque cap, a welded beam; bad input.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,15 +14,6 @@ namespace {
 
 constexpr double kG = 9.81;
 constexpr double kDt = 1.0 / 60.0;
-
-BodyId staticPivot(World& world, const Vec2& at = Vec2::Zero()) {
-    BodyDef d;
-    d.type = BodyType::Static;
-    d.shape = makeCircle(0.01);
-    d.position = at;
-    d.collides = false;
-    return world.createBody(d);
-}
 
 // A bar of length L (m) and thickness w hanging from a pin at its top end, released `degrees` from the vertical.
 struct BarPendulum {
@@ -35,7 +27,7 @@ void build(BarPendulum& p, double degrees, const RevoluteJointDef& extra = {}) {
     WorldSettings s;
     s.enableSleep = false;
     p.world.setSettings(s);
-    p.pivot = staticPivot(p.world);
+    p.pivot = test::addStaticPivot(p.world);
     BodyDef d;
     d.shape = makeBox(0.5 * p.thickness, 0.5 * p.length);
     d.collides = false;
@@ -139,7 +131,7 @@ TEST(RevoluteJoint, MotorReachesItsSpeedWithinItsTorque) {
     WorldSettings s;
     s.gravity = Vec2::Zero();
     World world(s);
-    const BodyId axle = staticPivot(world);
+    const BodyId axle = test::addStaticPivot(world);
     BodyDef d;
     d.shape = makeCircle(0.5);
     const BodyId wheel = world.createBody(d);
@@ -164,7 +156,7 @@ TEST(WeldJoint, WeldedBeamHoldsItsPose) {
     // A 1 m beam welded at its left end to a static wall: a cantilever. The weld is as stiff as the rod, so the
     // beam sags only by the soft constraint's compliance: small, and it does not creep.
     World world;
-    const BodyId wall = staticPivot(world);
+    const BodyId wall = test::addStaticPivot(world);
     BodyDef d;
     d.shape = makeBox(0.5, 0.05);
     d.position = {0.5, 0.0};

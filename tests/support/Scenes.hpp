@@ -43,6 +43,16 @@ inline BodyId addStaticBox(World& world, const Vec2& position, double halfWidth,
     return world.createBody(def);
 }
 
+/// A static point to hang joints from: a 1 cm disc at `at` that collides with nothing.
+inline BodyId addStaticPivot(World& world, const Vec2& at = Vec2::Zero()) {
+    BodyDef d;
+    d.type = BodyType::Static;
+    d.shape = makeCircle(0.01);
+    d.position = at;
+    d.collides = false;
+    return world.createBody(d);
+}
+
 /// A static slab whose top face is the line y = 0, `halfWidth` m each side of x = 0.
 inline BodyId addGround(World& world, double halfWidth = 200.0) {
     return addStaticBox(world, {0.0, -0.5}, halfWidth, 0.5);
