@@ -61,7 +61,7 @@ struct JointData {
 
     JointType type() const { return static_cast<JointType>(params.index()); }
     bool twoBodies() const { return !toWorld; }
-    /// Solved as a row of the soft step (all but springs, which are forces: the springs effect keeps them).
+    /// Solved as a row of the soft step (all but forces such as springs, which their effect applies).
     bool isRow() const {
         return std::visit([](const auto& kind) { return std::decay_t<decltype(kind)>::kRow; }, params);
     }

@@ -17,7 +17,8 @@
 // A kind may also provide (World::jointLength and jointAngle refuse the others):
 //   jointLength()             its length, m
 //   jointAngle(A, B)          its angle between the bodies, rad
-// The functions below visit the kind once per call (a switch): the only place that dispatches on it.
+// The functions below visit the kind once per call (a switch): the only place that dispatches on it (besides
+// JointData's isRow, which reads kRow, and type(), the variant's index).
 
 #include "JointData.hpp"
 
