@@ -2,6 +2,7 @@
 
 #include "physim/core/CircleShape.hpp"
 #include "physim/core/Collide.hpp"
+#include "physim/core/GeometryShape.hpp"
 #include "physim/core/PolygonShape.hpp"
 #include "physim/core/RectangleShape.hpp"
 #include "physim/core/Validate.hpp"
@@ -13,6 +14,12 @@ Polygon rectangle(const Vec2& size) {
     requirePositive("rectangle width", size.x());
     requirePositive("rectangle height", size.y());
     return makeBox(0.5 * size.x(), 0.5 * size.y());
+}
+
+// Width and height of the bounding box in the shape's own frame, m: any kind, through its room.
+Vec2 localSize(const Geometry& g) {
+    const Aabb local = computeAabb(g, Transform{});
+    return local.upper - local.lower;
 }
 
 }  // namespace
@@ -45,14 +52,15 @@ RectangleShape::RectangleShape(const Vec2& size)
 
 PolygonShape::PolygonShape(const std::vector<Vec2>& points) : CollisionShape(makePolygon(points)) {}
 
-Vec2 PolygonShape::getSize() const {
-    const Aabb local = computeAabb(geometry(), Transform{});
-    return local.upper - local.lower;
-}
+Vec2 PolygonShape::getSize() const { return localSize(geometry()); }
 
 std::vector<Vec2> PolygonShape::vertices() const {
     const auto& p = std::get<Polygon>(geometry());
     return {p.vertices.begin(), p.vertices.begin() + p.count};
 }
+
+GeometryShape::GeometryShape(Geometry geometry) : CollisionShape(std::move(geometry)) {}
+
+Vec2 GeometryShape::getSize() const { return localSize(geometry()); }
 
 }  // namespace physim

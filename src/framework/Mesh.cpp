@@ -54,6 +54,11 @@ Mesh Mesh::PolygonMesh(const std::vector<Vec2>& points, sf::Color color) {
     return Mesh(p);
 }
 
+Mesh Mesh::GeometryMesh(const Geometry& geometry, sf::Color color) {
+    validate(geometry);
+    return PolygonMesh(outline(geometry, Transform{}), color);
+}
+
 sf::Shape& Mesh::shape() {
     return std::visit([](auto& s) -> sf::Shape& { return s; }, shape_);
 }

@@ -3,10 +3,22 @@
 #include "AccuracyOptions.hpp"
 #include "NumberOption.hpp"
 
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
 namespace physim {
+namespace {
+
+// A bound as the messages show it: "1", "10000", "1e+07".
+std::string bound(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+}  // namespace
+
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
     for (std::size_t i = 0; i < args.size(); ++i) {
@@ -36,13 +48,14 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             const std::string& text = value();
             const double s = parseNumberOption(a, text);
             if (!(s >= 0.0 && s <= RunOptions::maxSeconds))
-                throw UsageError("--seconds must be in [0, 1e7] s, got " + text);
+                throw UsageError("--seconds must be in [0, " + bound(RunOptions::maxSeconds) + "] s, got " + text);
             o.seconds = s;
         } else if (a == "--hz") {
             const std::string& text = value();
             const double hz = parseNumberOption(a, text);
             if (!(hz >= RunOptions::minHz && hz <= RunOptions::maxHz))
-                throw UsageError("--hz must be in [1, 10000] Hz, got " + text);
+                throw UsageError("--hz must be in [" + bound(RunOptions::minHz) + ", " + bound(RunOptions::maxHz) +
+                                 "] Hz, got " + text);
             o.hz = hz;
         } else if (a == "--out") {
             const std::string& text = value();
@@ -88,7 +101,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << "                           (graph_<i>.csv, graphs.png, graphs.root) to DIR at the end;\n"
        << "                           DIR is created and checked before the run\n"
        << "  --quiet                  no progress on stderr for long headless runs, no closing line\n"
-       << "  --hz H                   physics rate in Hz, 1 to 10000 (default: the simulation's, 40 as in\n"
+       << "  --hz H                   physics rate in Hz, " << bound(RunOptions::minHz) << " to "
+       << bound(RunOptions::maxHz) << " (default: the simulation's, 40 as in\n"
        << "                           the paper)\n"
        << "  --param NAME=VALUE       set one of the simulation's parameters (listed below, if it has any)\n"
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"

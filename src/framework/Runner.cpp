@@ -1,13 +1,10 @@
 #include "physim/framework/Runner.hpp"
 
 #include "AccuracyOptions.hpp"
-#include "Controls.hpp"
-#include "FixedStepAccumulator.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
-#include "PaceMeter.hpp"
 #include "Progress.hpp"
-#include "Stats.hpp"
+#include "RunnerAccess.hpp"
 #include "Summary.hpp"
 #ifdef PHYSIM_WITH_CUDA
 #include "physim/cuda/ContinuousSolver.hpp"
@@ -76,15 +73,6 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
 
 }  // namespace
 
-struct Runner::Loop {
-    explicit Loop(int maxStepsPerFrame) : accumulator(1.0 / 40.0, maxStepsPerFrame) {}  // restart() sets the rate
-
-    FixedStepAccumulator accumulator;
-    Controls controls;
-    PaceMeter pace;
-    StepTimes stepTimes;
-};
-
 Runner::Runner(SimulationFactory factory, RunOptions options)
     : factory_(std::move(factory)), options_(std::move(options)),
       loop_(std::make_unique<Loop>(options_.maxStepsPerFrame)),
@@ -113,11 +101,6 @@ void Runner::requestSingleStep() { loop_->controls.requestSingleStep(); }
 void Runner::requestFit() { loop_->controls.requestFit(); }
 bool Runner::statsShown() const { return loop_->controls.statsShown(); }
 void Runner::setStatsShown(bool shown) { loop_->controls.setStatsShown(shown); }
-
-const FixedStepAccumulator& Runner::accumulator() const { return loop_->accumulator; }
-Controls& Runner::controls() { return loop_->controls; }
-const PaceMeter& Runner::pace() const { return loop_->pace; }
-const StepTimes& Runner::stepTimes() const { return loop_->stepTimes; }
 
 void Runner::restart() {
     // A restart of the same simulation keeps what the user chose: parameter values and debug drawing.

@@ -1,7 +1,8 @@
 // The paper's CollisionShape API (section 5.2): types, sizes, bounds, the AABB test and satCollision, for
-// circles, rectangles and polygons. Tolerance 1e-12 m: closed forms evaluated with a few operations on O(1) m.
+// circles, rectangles and polygons, and for a GeometryShape (any kind). Tolerance 1e-12 m: closed forms evaluated with a few operations on O(1) m.
 
 #include "physim/core/CircleShape.hpp"
+#include "physim/core/GeometryShape.hpp"
 #include "physim/core/PolygonShape.hpp"
 #include "physim/core/RectangleShape.hpp"
 
@@ -97,6 +98,50 @@ TEST(CollisionShapeApi, BoxRestingOnARotatedPolygonFace) {
     const Colliding r = box.satCollision(ground);
     EXPECT_NEAR(r.penetration, c.penetration, kTol);
     EXPECT_NEAR((r.normal + c.normal).norm(), 0.0, kTol);
+}
+
+// A GeometryShape holding a kind answers every query as that kind's paper-style wrapper does, to the bit (both
+// reach the same Geometry); only its type and, for a circle, its size differ.
+TEST(CollisionShapeApi, GeometryShapeAnswersAsThePapersWrappers) {
+    const GeometryShape box(makeBox(1.0, 0.5));
+    const GeometryShape disc(makeCircle(0.5));
+    const RectangleShape rect({2.0, 1.0});
+    const CircleShape circle(0.5);
+    EXPECT_EQ(box.getType(), ShapeType::GEOMETRY);
+    EXPECT_EQ(box.getSize(), rect.getSize());
+    EXPECT_EQ(disc.getSize(), Vec2(1.0, 1.0)) << "the bounding box's size, as for a polygon";
+    EXPECT_EQ(box.getMassProperties().secondMoment, rect.getMassProperties().secondMoment);
+    EXPECT_EQ(disc.getMassProperties().secondMoment, circle.getMassProperties().secondMoment);
+
+    GeometryShape movedBox = box;
+    RectangleShape movedRect = rect;
+    GeometryShape movedDisc = disc;
+    CircleShape movedCircle = circle;
+    movedBox.setTransform({0.3, 0.1}, 0.4);
+    movedRect.setTransform({0.3, 0.1}, 0.4);
+    movedDisc.setTransform({1.2, 0.6}, 0.0);
+    movedCircle.setTransform({1.2, 0.6}, 0.0);
+    const Colliding any = movedBox.satCollision(movedDisc);
+    const Colliding paper = movedRect.satCollision(movedCircle);
+    ASSERT_TRUE(paper.collision);
+    EXPECT_EQ(any.collision, paper.collision);
+    EXPECT_EQ(any.penetration, paper.penetration);
+    EXPECT_EQ(any.normal, paper.normal);
+    EXPECT_EQ(any.collidingPoints.pointA, paper.collidingPoints.pointA);
+    EXPECT_EQ(movedBox.getBounds().lower, movedRect.getBounds().lower);
+    EXPECT_EQ(movedBox.getBounds().upper, movedRect.getBounds().upper);
+
+    const auto copy = movedBox.clone();
+    EXPECT_EQ(copy->getType(), ShapeType::GEOMETRY);
+    EXPECT_EQ(copy->getPosition(), Vec2(0.3, 0.1));
+    EXPECT_EQ(copy->geometry().index(), box.geometry().index());
+}
+
+TEST(CollisionShapeApi, GeometryShapeRejectsWhatValidateRejects) {
+    EXPECT_THROW(GeometryShape(Circle{Vec2::Zero(), -1.0}), std::invalid_argument);
+    Polygon twoPoints = makeBox(1.0, 1.0);
+    twoPoints.count = 2;
+    EXPECT_THROW(GeometryShape{twoPoints}, std::invalid_argument);
 }
 
 }  // namespace

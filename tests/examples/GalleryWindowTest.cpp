@@ -2,8 +2,8 @@
 // user's mouse would: clicking each scene's entry switches to that scene and runs it; letting go of a slider
 // restarts the scene with the new value; a click in the scene still grabs a body, a click on the panel does not.
 
-#include "Controls.hpp"  // src/framework: the runner's internals, to see the drag
 #include "Gallery.hpp"
+#include "RunnerAccess.hpp"  // src/framework: the runner's internals, to see the drag
 #include "support/SfmlEvents.hpp"
 
 #include <SFML/Graphics/RenderWindow.hpp>
@@ -120,15 +120,15 @@ TEST_F(GalleryWindow, ThePanelTakesItsClicksTheSceneKeepsItsOwn) {
     runner->handleEvent(mouseMove(onBox), &window);
     frames(1);
     runner->handleEvent(mouseButton(sf::Event::MouseButtonPressed, onBox), &window);
-    EXPECT_TRUE(runner->controls().dragJoint().has_value()) << "a press on the box grabs it";
+    EXPECT_TRUE(RunnerAccess::controls(*runner).dragJoint().has_value()) << "a press on the box grabs it";
     runner->handleEvent(mouseButton(sf::Event::MouseButtonReleased, onBox), &window);
-    EXPECT_FALSE(runner->controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(*runner).dragJoint().has_value());
 
     const sf::Vector2i onPanel(40, 700);
     runner->handleEvent(mouseMove(onPanel), &window);
     frames(2);
     runner->handleEvent(mouseButton(sf::Event::MouseButtonPressed, onPanel), &window);
-    EXPECT_FALSE(runner->controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(*runner).dragJoint().has_value());
     runner->handleEvent(mouseButton(sf::Event::MouseButtonReleased, onPanel), &window);
 }
 

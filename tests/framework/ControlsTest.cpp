@@ -3,8 +3,7 @@
 // promises: a dragged body follows the cursor, O runs exactly one step, the time scale sets how many steps a
 // real second runs, zoom keeps the point under the cursor, a pan drags the scene with the cursor.
 
-#include "Controls.hpp"
-#include "PaceMeter.hpp"
+#include "RunnerAccess.hpp"
 #include "support/Scenes.hpp"
 #include "support/SfmlEvents.hpp"
 
@@ -78,25 +77,25 @@ TEST(Controls, DragMovesTheBodyToTheCursor) {
     Simulation& sim = runner.simulation();
     const Vec2 grabbed = Vec2::Zero();
     runner.handleEvent(mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(sim, grabbed)), nullptr);
-    ASSERT_TRUE(runner.controls().dragJoint().has_value()) << "the press landed on the box";
-    EXPECT_EQ(sim.world().jointType(*runner.controls().dragJoint()), JointType::Mouse);
+    ASSERT_TRUE(RunnerAccess::controls(runner).dragJoint().has_value()) << "the press landed on the box";
+    EXPECT_EQ(sim.world().jointType(*RunnerAccess::controls(runner).dragJoint()), JointType::Mouse);
     const sf::Vector2i target = pixelOf(sim, grabbed + Vec2(2.0, 1.0));
     runner.handleEvent(mouseMove(target), nullptr);
     runFrames(runner, 180);
-    const auto [cursor, anchor] = sim.world().jointAnchors(*runner.controls().dragJoint());
+    const auto [cursor, anchor] = sim.world().jointAnchors(*RunnerAccess::controls(runner).dragJoint());
     EXPECT_NEAR((cursor - sim.view.toWorld(target, kWindow)).norm(), 0.0, 1e-12) << "target = cursor";
     EXPECT_LT((anchor - cursor).norm(), 3e-4) << "the grabbed point is on the cursor";
     EXPECT_GT(scene(runner).box->getPosition().x(), 1.5) << "the box itself moved";
 
     runner.handleEvent(mouseButton(sf::Event::MouseButtonReleased, sf::Mouse::Left, target), nullptr);
-    EXPECT_FALSE(runner.controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(runner).dragJoint().has_value());
     EXPECT_EQ(sim.world().jointCount(), 0u);
 
     // A press on empty space grabs nothing; a press on the static floor neither.
     runner.handleEvent(mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(sim, {-3.0, 2.0})), nullptr);
-    EXPECT_FALSE(runner.controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(runner).dragJoint().has_value());
     runner.handleEvent(mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(sim, {0.0, -3.5})), nullptr);
-    EXPECT_FALSE(runner.controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(runner).dragJoint().has_value());
 }
 
 // The pull is a force, so contacts stay in charge: dragged towards a point 2.5 m inside the floor, the box stops
@@ -152,16 +151,16 @@ TEST(Controls, TimeScaleChangesStepsPerRealSecond) {
     runner.restart();
     EXPECT_NEAR(runFrames(runner, 60), 40, 1);
     runner.handleEvent(keyPress(sf::Keyboard::LBracket), nullptr);
-    EXPECT_EQ(runner.controls().timeScale(), 0.5);
+    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), 0.5);
     EXPECT_NEAR(runFrames(runner, 60), 20, 1);
     runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
     runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
-    EXPECT_EQ(runner.controls().timeScale(), 2.0);
+    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), 2.0);
     EXPECT_NEAR(runFrames(runner, 60), 80, 1);
     for (int i = 0; i < 10; ++i) runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
-    EXPECT_EQ(runner.controls().timeScale(), Runner::maxTimeScale) << "capped";
-    EXPECT_THROW(runner.controls().setTimeScale(0.0), std::invalid_argument);
-    EXPECT_THROW(runner.controls().setTimeScale(NAN), std::invalid_argument);
+    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), Runner::maxTimeScale) << "capped";
+    EXPECT_THROW(RunnerAccess::controls(runner).setTimeScale(0.0), std::invalid_argument);
+    EXPECT_THROW(RunnerAccess::controls(runner).setTimeScale(NAN), std::invalid_argument);
 }
 
 // 1000 Hz on 60 Hz frames needs 16.7 steps a frame; the cap of 8 holds the run at 8 x 60 / 1000 = 0.48 of real
@@ -174,19 +173,19 @@ TEST(Controls, PaceMeterReportsTheCatchUpCap) {
     Runner capped([] { return std::make_unique<Scene>(); }, options);
     capped.restart();
     runFrames(capped, 120);
-    EXPECT_NEAR(capped.pace().pace(), 0.48, 1e-9);
-    EXPECT_TRUE(capped.pace().cappedBelow(1.0));
+    EXPECT_NEAR(RunnerAccess::pace(capped).pace(), 0.48, 1e-9);
+    EXPECT_TRUE(RunnerAccess::pace(capped).cappedBelow(1.0));
 
     Runner free = makeRunner();
     free.restart();
     runFrames(free, 120);
-    EXPECT_NEAR(free.pace().pace(), 1.0, 0.03);
-    EXPECT_FALSE(free.pace().cappedBelow(1.0));
+    EXPECT_NEAR(RunnerAccess::pace(free).pace(), 1.0, 0.03);
+    EXPECT_FALSE(RunnerAccess::pace(free).cappedBelow(1.0));
     // One slow frame (0.5 s: a window being moved) drops steps once; it is no sustained limit.
     free.frame(0.5, nullptr);
     runFrames(free, 30);
-    EXPECT_LT(free.pace().pace(), 0.97) << "that second did run slow";
-    EXPECT_FALSE(free.pace().cappedBelow(1.0)) << "but the cap is not what holds the run back";
+    EXPECT_LT(RunnerAccess::pace(free).pace(), 0.97) << "that second did run slow";
+    EXPECT_FALSE(RunnerAccess::pace(free).cappedBelow(1.0)) << "but the cap is not what holds the run back";
 }
 
 TEST(Controls, WheelZoomsAboutTheCursor) {
@@ -215,7 +214,7 @@ TEST(Controls, RightDragPansWithTheCursorAndFRefits) {
     runner.handleEvent(mouseMove(to), nullptr);
     runner.handleEvent(mouseButton(sf::Event::MouseButtonReleased, sf::Mouse::Right, to), nullptr);
     EXPECT_LT((sim.view.toWorld(to, kWindow) - grabbed).norm(), 1e-12) << "the scene moved with the cursor";
-    EXPECT_FALSE(runner.controls().dragJoint().has_value()) << "panning grabs no body";
+    EXPECT_FALSE(RunnerAccess::controls(runner).dragJoint().has_value()) << "panning grabs no body";
     runner.handleEvent(mouseMove({0, 0}), nullptr);
     EXPECT_LT((sim.view.toWorld(to, kWindow) - grabbed).norm(), 1e-12) << "released: moving no longer pans";
 
@@ -237,9 +236,9 @@ TEST(Controls, KeysToggleDebugDrawingAndStatistics) {
         runner.handleEvent(keyPress(code), nullptr);
         EXPECT_TRUE(sim.debugDraw.*option) << code;
     }
-    EXPECT_FALSE(runner.controls().statsShown());
+    EXPECT_FALSE(RunnerAccess::controls(runner).statsShown());
     runner.handleEvent(keyPress(sf::Keyboard::Tab), nullptr);
-    EXPECT_TRUE(runner.controls().statsShown());
+    EXPECT_TRUE(RunnerAccess::controls(runner).statsShown());
 }
 
 // Space makes the simulation again with the user's parameter values and debug drawing; a new factory (the
@@ -267,9 +266,9 @@ TEST(Controls, RestartDuringADragLetsGo) {
     runner.handleEvent(
         mouseButton(sf::Event::MouseButtonPressed, sf::Mouse::Left, pixelOf(runner.simulation(), Vec2::Zero())),
         nullptr);
-    ASSERT_TRUE(runner.controls().dragJoint().has_value());
+    ASSERT_TRUE(RunnerAccess::controls(runner).dragJoint().has_value());
     runner.handleEvent(keyPress(sf::Keyboard::Space), nullptr);
-    EXPECT_FALSE(runner.controls().dragJoint().has_value());
+    EXPECT_FALSE(RunnerAccess::controls(runner).dragJoint().has_value());
     runner.handleEvent(mouseMove({10, 10}), nullptr);  // no stale joint to move
     runner.handleEvent(mouseButton(sf::Event::MouseButtonReleased, sf::Mouse::Left, {10, 10}), nullptr);
     EXPECT_EQ(runner.simulation().world().jointCount(), 0u);

@@ -1,6 +1,6 @@
 // The paper's frame loop (section 2) and fixed-step phases (section 4.3), recorded call by call.
 
-#include "FixedStepAccumulator.hpp"
+#include "RunnerAccess.hpp"
 #include "support/Recorder.hpp"
 
 #include <physim/framework/Runner.hpp>
@@ -76,7 +76,7 @@ TEST(Lifecycle, SlowFrameIsCappedNoSpiralOfDeath) {
     Runner runner = makeRunner(log);
     runner.restart();
     EXPECT_EQ(runner.frame(1.0, nullptr), 4);  // 40 steps due, cap 4
-    EXPECT_EQ(runner.accumulator().droppedSteps(), 36u);
+    EXPECT_EQ(RunnerAccess::accumulator(runner).droppedSteps(), 36u);
     EXPECT_EQ(runner.frame(0.025, nullptr), 1);  // the backlog is gone, not carried
 }
 

@@ -24,6 +24,18 @@ foreach(internal IN ITEMS Controls FixedStepAccumulator PaceMeter Stats Summary)
     message(FATAL_ERROR "the runner's internal ${internal}.hpp was installed")
   endif()
 endforeach()
+# Nor does the installed Runner.hpp name them: its tests reach them through RunnerAccess (src/framework).
+file(READ "${WORK_DIR}/prefix/include/physim/framework/Runner.hpp" runner_header)
+foreach(internal IN ITEMS Controls FixedStepAccumulator PaceMeter StepTimes)
+  string(REGEX MATCH "[^A-Za-z_]${internal}[^A-Za-z_]" named "${runner_header}")
+  if(named)
+    message(FATAL_ERROR "the installed Runner.hpp names the runner's internal ${internal}")
+  endif()
+endforeach()
+# Nor is the shared continuous kernel (src/core): the CUDA layer reaches it from the source tree.
+if(EXISTS "${WORK_DIR}/prefix/include/physim/core/ContinuousKernel.hpp")
+  message(FATAL_ERROR "the kernel's ContinuousKernel.hpp was installed")
+endif()
 # No ROOT_DIR given: the package must find ROOT by itself.
 execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/install/consumer" -B "${WORK_DIR}/consumer"
   -G Ninja -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE rc)

@@ -12,8 +12,9 @@
 
 namespace physim {
 
-/// The paper's ShapeType (CIRCLE, RECTANGLE), grown with new shapes.
-enum class ShapeType { CIRCLE, RECTANGLE, POLYGON };
+/// The paper's ShapeType (CIRCLE, RECTANGLE), grown with the polygon. GEOMETRY is a GeometryShape, which holds
+/// any Geometry kind (geometry() says which): a new kind needs no value here.
+enum class ShapeType { CIRCLE, RECTANGLE, POLYGON, GEOMETRY };
 
 class CollisionShape {
 public:
@@ -21,7 +22,7 @@ public:
 
     virtual ShapeType getType() const = 0;
     /// The paper's getSize: full width and height for a rectangle, (radius, 0) for a circle (its length is the
-    /// radius), the bounding box size in the shape's own frame for a polygon. Metres.
+    /// radius), the bounding box size in the shape's own frame for a polygon or a GeometryShape. Metres.
     virtual Vec2 getSize() const = 0;
     virtual std::unique_ptr<CollisionShape> clone() const = 0;
 

@@ -2,6 +2,7 @@
 // The paper's Mesh (section 5.3): what is drawn for an entity, which may differ from its collision shape.
 // Sizes are in metres; the view turns them into pixels when drawing.
 
+#include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
 #include "physim/framework/Behavior.hpp"
 
@@ -24,7 +25,7 @@ class Mesh : public Behavior {
 public:
     using Shape = std::variant<sf::RectangleShape, sf::CircleShape, sf::ConvexShape>;
 
-    /// `shape` in metres, with its origin at the point that follows the body's centre of mass.
+    /// `shape` in metres, in the body's frame: its origin is drawn at the body origin.
     explicit Mesh(Shape shape);
 
     /// A rectangle of `size` (m), centred.
@@ -33,6 +34,10 @@ public:
     static Mesh CircleMesh(double radius, sf::Color color);
     /// A convex polygon through `points` (m, body-local).
     static Mesh PolygonMesh(const std::vector<Vec2>& points, sf::Color color);
+    /// The outline of `geometry` (outline(), m, body-local) filled as one convex polygon, as the debug drawing
+    /// fills shapes: a mesh for any kind, those without a factory above included. Throws std::invalid_argument
+    /// when validate(geometry) does.
+    static Mesh GeometryMesh(const Geometry& geometry, sf::Color color);
 
     sf::Shape& shape();
     const sf::Shape& shape() const;

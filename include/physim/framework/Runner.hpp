@@ -23,12 +23,7 @@ class RenderWindow;
 
 namespace physim {
 
-// The runner's internals (src/framework): not part of the installed API.
-class Controls;
-class FixedStepAccumulator;
-class Overlay;
-class PaceMeter;
-class StepTimes;
+class Overlay;  // the runner's internal (src/framework), not part of the installed API
 class Runner;
 
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
@@ -89,11 +84,6 @@ public:
     bool statsShown() const;
     void setStatsShown(bool shown);
 
-    // The runner's internals, for physim's own tests: their headers are in src/framework, not installed.
-    const FixedStepAccumulator& accumulator() const;
-    Controls& controls();
-    const PaceMeter& pace() const;
-    const StepTimes& stepTimes() const;
     /// The next restart makes its simulation with `factory` (the gallery switching scenes), with that
     /// simulation's own parameter values and debug drawing.
     void setFactory(SimulationFactory factory);
@@ -106,6 +96,8 @@ public:
     std::vector<std::string> writeOutputs(const std::string& directory) const;
 
 private:
+    friend struct RunnerAccess;  // physim's own tests reach the loop's internals (src/framework/RunnerAccess.hpp)
+
     int runHeadless();
     int runWindow();
     /// The bar across the top (simulated time, physics rate, frames per second, time scale, pause, the
@@ -116,7 +108,8 @@ private:
     RunOptions options_;
     std::unique_ptr<Simulation> simulation_;
     std::shared_ptr<ContinuousSolver> continuousSolver_;  // the CUDA layer's, in a `cuda` build; else null (CPU)
-    struct Loop;                  // the frame loop's state: step accumulator, controls, pace, step times
+    struct Loop;                  // the frame loop's state (src/framework/RunnerAccess.hpp): step accumulator,
+                                  // controls, pace, step times
     std::unique_ptr<Loop> loop_;  // never null
     bool quit_ = false;
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless

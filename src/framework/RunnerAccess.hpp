@@ -1,0 +1,30 @@
+#pragma once
+// The runner's frame-loop state, and the way physim's own tests reach it. Internal: Runner.hpp names
+// RunnerAccess (its friend) and Runner::Loop only, so the installed header needs none of these types.
+
+#include "Controls.hpp"
+#include "FixedStepAccumulator.hpp"
+#include "PaceMeter.hpp"
+#include "Stats.hpp"
+
+#include "physim/framework/Runner.hpp"
+
+namespace physim {
+
+struct Runner::Loop {
+    explicit Loop(int maxStepsPerFrame) : accumulator(1.0 / 40.0, maxStepsPerFrame) {}  // restart() sets the rate
+
+    FixedStepAccumulator accumulator;
+    Controls controls;
+    PaceMeter pace;
+    StepTimes stepTimes;
+};
+
+/// A runner's internals, for tests that drive it frame by frame and look at what the window would show.
+struct RunnerAccess {
+    static const FixedStepAccumulator& accumulator(const Runner& runner) { return runner.loop_->accumulator; }
+    static Controls& controls(Runner& runner) { return runner.loop_->controls; }
+    static const PaceMeter& pace(const Runner& runner) { return runner.loop_->pace; }
+};
+
+}  // namespace physim
