@@ -12,7 +12,6 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <thread>
 
 namespace physim {
 
@@ -253,12 +252,23 @@ void solveOnCpu(const ContinuousBatch& batch, ContinuousBatchResult& result, uns
     solveOnCpu(batch, result, executor);
 }
 
+struct CpuContinuousSolver::Workers {
+    explicit Workers(int threads) : executor(threads) {}
+    Executor executor;  // made once: a solve makes no arena or team of its own
+};
+
+// 0 threads: the executor's count (its arena's default concurrency).
 CpuContinuousSolver::CpuContinuousSolver(unsigned threads)
-    : threads_(threads == 0 ? std::max(1u, std::thread::hardware_concurrency()) : threads) {}
+    : workers_(std::make_unique<Workers>(static_cast<int>(threads))),
+      threads_(static_cast<unsigned>(workers_->executor.threads())) {}
+
+CpuContinuousSolver::~CpuContinuousSolver() = default;
+CpuContinuousSolver::CpuContinuousSolver(CpuContinuousSolver&&) noexcept = default;
+CpuContinuousSolver& CpuContinuousSolver::operator=(CpuContinuousSolver&&) noexcept = default;
 
 void CpuContinuousSolver::solve(const ContinuousBatch& batch, ContinuousBatchResult& result) {
     checkLayout(batch);
-    solveOnCpu(batch, result, threads_);
+    solveOnCpu(batch, result, workers_->executor);
     reportInvalidPairs(batch, result);
 }
 

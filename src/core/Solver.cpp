@@ -45,42 +45,69 @@ int impactPoint(const ContactBlockCold& cold, int lane, double threshold) {
     return fastest;
 }
 
-// A substep's stages, in the order they run. The loop over substeps runs the list one stage after another; on two
-// threads the ordered path runs the same list as one sequence of loops (solveGroup's solveInOrder), each pass cut
-// into one loop per colour, from a substep's first solve pass on (its warm start has run by then, or is the bodies').
+// A substep's stages, in the order they run: one list that both executors expand. The loop over substeps runs
+// each stage's passes one after another; on two threads the ordered path (solveGroup's solveInOrder) runs the same
+// list as one sequence of loops, a bodies' stage one loop, a row pass one loop per colour, and the warm start none:
+// the sequence starts after a substep's warm start, and later substeps' is the bodies' (inside their velocities).
 enum class SubstepStage : std::uint8_t { Velocities, WarmStart, Solve, Positions, Relax };
 
-struct SubstepStages {
-    int solves = 0;   // solve passes (WorldSettings::velocityIterations)
-    int relaxes = 0;  // relax passes (WorldSettings::relaxIterations)
-
-    int count() const { return 3 + solves + relaxes; }
-    /// Stage k of the substep: velocities, warm start, the solve passes, positions, the relax passes.
-    SubstepStage at(int k) const {
-        if (k == 0) return SubstepStage::Velocities;
-        if (k == 1) return SubstepStage::WarmStart;
-        if (k < 2 + solves) return SubstepStage::Solve;
-        return k == 2 + solves ? SubstepStage::Positions : SubstepStage::Relax;
-    }
-    /// Which pass of its kind stage k is (a Solve or Relax stage's), from 0.
-    int pass(int k) const { return k < 2 + solves ? k - 2 : k - 3 - solves; }
-    /// The ordered path's loops per substep: the list less the warm start, a pass `colours` loops.
-    std::size_t loops(std::size_t colours) const {
-        return 2 + static_cast<std::size_t>(solves + relaxes) * colours;
-    }
-    /// The stage (as at()'s k) of the ordered path's loop `loop` of a substep, and its pass's colour.
-    int stageOfLoop(std::size_t loop, std::size_t colours, std::size_t& colour) const {
-        const std::size_t solveLoops = static_cast<std::size_t>(solves) * colours;
-        if (loop == 0) return 0;
-        if (loop <= solveLoops) {
-            colour = (loop - 1) % colours;
-            return 2 + static_cast<int>((loop - 1) / colours);
-        }
-        if (loop == solveLoops + 1) return 2 + solves;
-        colour = (loop - solveLoops - 2) % colours;
-        return 3 + solves + static_cast<int>((loop - solveLoops - 2) / colours);
-    }
+struct StagePasses {
+    SubstepStage stage;
+    int passes;
 };
+using SubstepList = std::array<StagePasses, 5>;
+
+/// The substep's stages in order, with `solves` solve and `relaxes` relax passes (WorldSettings' iterations).
+SubstepList substepStages(int solves, int relaxes) {
+    return {{{SubstepStage::Velocities, 1},
+             {SubstepStage::WarmStart, 1},
+             {SubstepStage::Solve, solves},
+             {SubstepStage::Positions, 1},
+             {SubstepStage::Relax, relaxes}}};
+}
+
+/// The ordered path's loops for one pass of `stage`, where a pass over the rows has `colours` colours.
+std::size_t loopsPerPass(SubstepStage stage, std::size_t colours) {
+    switch (stage) {
+        case SubstepStage::Velocities:
+        case SubstepStage::Positions: return 1;
+        case SubstepStage::WarmStart: return 0;
+        case SubstepStage::Solve:
+        case SubstepStage::Relax: return colours;
+    }
+    return 0;
+}
+
+/// The ordered path's loops for the stages [first, last) of the list, each stage all its passes.
+std::size_t loopsOf(const SubstepList& list, std::size_t first, std::size_t last, std::size_t colours) {
+    std::size_t loops = 0;
+    for (std::size_t s = first; s < last; ++s)
+        loops += static_cast<std::size_t>(list[s].passes) * loopsPerPass(list[s].stage, colours);
+    return loops;
+}
+
+/// Where the ordered path's loop `loop` of a substep (from 0, < loopsOf the whole list) lies in the list.
+struct OrderedLoop {
+    SubstepStage stage;
+    bool lastPass;       // the last pass of its stage
+    std::size_t colour;  // a row pass's colour, as the group's colours are counted
+};
+OrderedLoop orderedLoop(const SubstepList& list, std::size_t loop, std::size_t colours) {
+    for (const StagePasses& s : list) {
+        const std::size_t perPass = loopsPerPass(s.stage, colours);
+        const std::size_t loops = static_cast<std::size_t>(s.passes) * perPass;
+        if (loop < loops) return {s.stage, loop / perPass + 1 == static_cast<std::size_t>(s.passes), loop % perPass};
+        loop -= loops;
+    }
+    return {SubstepStage::Positions, true, 0};  // past the list: not reached
+}
+
+/// The ordered path's loops of a substep before its sequence starts: those of the stages up to the warm start.
+std::size_t loopsThroughWarmStart(const SubstepList& list, std::size_t colours) {
+    std::size_t s = 0;
+    while (s < list.size() && list[s].stage != SubstepStage::WarmStart) ++s;
+    return loopsOf(list, 0, s + 1, colours);
+}
 
 }  // namespace
 
@@ -348,40 +375,38 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     // step's substeps. Each loop gets its own copy of the passes' settings: the threads may be in different passes.
     const bool oneSequence = ordered && colourCount > 0 && graph_.groupJointStart[g + 1] == graph_.groupJointStart[g] &&
                              segments[kSegments] == segments[kColours];
-    const SubstepStages stages{w.settings.velocityIterations, w.settings.relaxIterations};
+    const SubstepList stages = substepStages(w.settings.velocityIterations, w.settings.relaxIterations);
     auto solveInOrder = [&](int firstSub, int lastSub) {
-        const std::size_t perSubstep = stages.loops(colourCount);
+        const std::size_t perSubstep = loopsOf(stages, 0, stages.size(), colourCount);
+        const std::size_t skip = loopsThroughWarmStart(stages, colourCount);  // the first substep's are done
         const std::uint32_t* const halves = graph_.shareBodies.data() + graph_.groupBodyStart[g];
         const std::size_t headEnd = graph_.shareBodyCuts[g * 2] - graph_.groupBodyStart[g];
         const std::size_t secondStart = graph_.shareBodyCuts[g * 2 + 1] - graph_.groupBodyStart[g];
         WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
-        // The first substep's velocities are done already.
-        const std::size_t loops = static_cast<std::size_t>(lastSub - firstSub + 1) * perSubstep - 1;
+        const std::size_t loops = static_cast<std::size_t>(lastSub - firstSub + 1) * perSubstep - skip;
         w.executor.forLoopsInOrder(loops, [&](std::size_t loop, int share, bool head) {
-            const int sub = firstSub + static_cast<int>((loop + 1) / perSubstep);
-            std::size_t colour = 0;
-            const int k = stages.stageOfLoop((loop + 1) % perSubstep, colourCount, colour);
-            const SubstepStage kind = stages.at(k);
-            if (kind == SubstepStage::Velocities || kind == SubstepStage::Positions) {
+            const int sub = firstSub + static_cast<int>((loop + skip) / perSubstep);
+            const OrderedLoop at = orderedLoop(stages, (loop + skip) % perSubstep, colourCount);
+            if (at.stage == SubstepStage::Velocities || at.stage == SubstepStage::Positions) {
                 // A bodies' loop: the first half's head, then each half's rest.
                 if (share == 1 && head) return;
                 const std::size_t begin = share == 0 ? (head ? 0 : headEnd) : secondStart;
                 const std::size_t end = share == 0 ? (head ? headEnd : secondStart) : bodyCount;
                 if (begin >= end) return;
-                if (kind == SubstepStage::Velocities)
+                if (at.stage == SubstepStage::Velocities)
                     integrateVelocities(st, base, keepWarm, sims_.data(), halves + begin, end - begin, h, true);
                 else
                     integratePositions(st, halves + begin, end - begin, h);
                 return;
             }
-            const bool relax = kind == SubstepStage::Relax;
-            const auto [begin, end] = halfOf(colour, share, head);
+            const bool relax = at.stage == SubstepStage::Relax;
+            const auto [begin, end] = halfOf(at.colour, share, head);
             if (begin >= end) return;
             ContactPass rows = contactPass;
             rows.substep = sub;
             rows.useBias = !relax;
             solveContacts(blockAt(begin), blockAt(end), coldAt(begin), st, rows);
-            if (relax && sub + 1 == substeps && stages.pass(k) + 1 == stages.relaxes) storeBlocks(begin, end);
+            if (relax && sub + 1 == substeps && at.lastPass) storeBlocks(begin, end);
         });
     };
 
@@ -389,67 +414,70 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         contactPass.substep = sub;
         if (w.effects.perSubstep()) w.effects.substep(w, h);  // then there is one group
         bool sequenced = false;  // solveInOrder ran the rest of the substep (and the substeps up to `sub`)
-        for (int k = 0; k < stages.count() && !sequenced; ++k) {
-            switch (stages.at(k)) {
-                case SubstepStage::Velocities: {
-                    auto timer = stage(Stage::Integrate);
-                    WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
-                    w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-                        integrateVelocities(st, base, keepWarm, sims_.data(), bodyList + begin, end - begin, h,
-                                            bodiesWarmStart && sub > 0);
-                    });
-                    break;
-                }
-                case SubstepStage::WarmStart: {
-                    const bool overRows = sub == 0 || !bodiesWarmStart;  // else integrateVelocities did it
-                    if (!anyRows || !(overRows || oneSequence)) break;
-                    auto timer = stage(Stage::Solve);
-                    if (overRows) {
-                        pass([&](std::size_t b, std::size_t e) {
-                                 if (sub == 0) {
-                                     const PreparedRows prepared = prepareContacts(
-                                         blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
-                                         graph_.rowContacts.data(), w.contacts.data(), sims_.data(), w.bodies.data());
-                                     turningRows += prepared.turning;  // one add per chunk
-                                     if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
-                                 }
-                                 warmStartContacts(blockAt(b), blockAt(e), st);
-                             },
-                             [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
-                        if (bounces.load(std::memory_order_relaxed))
-                            forBodies([&](std::size_t i) {
-                                if (sims_[i].dynamic) recordWarmStart(st[i], base[i], warm[i]);
-                            });
+        for (const StagePasses& run : stages)
+            for (int p = 0; p < run.passes && !sequenced; ++p) {
+                const bool lastPass = p + 1 == run.passes;
+                switch (run.stage) {
+                    case SubstepStage::Velocities: {
+                        auto timer = stage(Stage::Integrate);
+                        WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
+                        w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+                            integrateVelocities(st, base, keepWarm, sims_.data(), bodyList + begin, end - begin, h,
+                                                bodiesWarmStart && sub > 0);
+                        });
+                        break;
                     }
-                    if (oneSequence) {
-                        const int last = bodiesWarmStart ? substeps - 1 : sub;
-                        solveInOrder(sub, last);
-                        sub = last;
-                        sequenced = true;
-                    }
-                    break;
-                }
-                case SubstepStage::Solve:
-                    if (anyRows) {
+                    case SubstepStage::WarmStart: {
+                        const bool overRows = sub == 0 || !bodiesWarmStart;  // else integrateVelocities did it
+                        if (!anyRows || !(overRows || oneSequence)) break;
                         auto timer = stage(Stage::Solve);
-                        solvePass(true, false);
+                        if (overRows) {
+                            pass([&](std::size_t b, std::size_t e) {
+                                     if (sub == 0) {
+                                         const PreparedRows prepared = prepareContacts(
+                                             blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
+                                             graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
+                                             w.bodies.data());
+                                         turningRows += prepared.turning;  // one add per chunk
+                                         if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
+                                     }
+                                     warmStartContacts(blockAt(b), blockAt(e), st);
+                                 },
+                                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
+                            if (bounces.load(std::memory_order_relaxed))
+                                forBodies([&](std::size_t i) {
+                                    if (sims_[i].dynamic) recordWarmStart(st[i], base[i], warm[i]);
+                                });
+                        }
+                        if (oneSequence) {
+                            const int last = bodiesWarmStart ? substeps - 1 : sub;
+                            solveInOrder(sub, last);
+                            sub = last;
+                            sequenced = true;
+                        }
+                        break;
                     }
-                    break;
-                case SubstepStage::Positions: {
-                    auto timer = stage(Stage::Integrate);
-                    w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-                        integratePositions(st, bodyList + begin, end - begin, h);
-                    });
-                    break;
+                    case SubstepStage::Solve:
+                        if (anyRows) {
+                            auto timer = stage(Stage::Solve);
+                            solvePass(true, false);
+                        }
+                        break;
+                    case SubstepStage::Positions: {
+                        auto timer = stage(Stage::Integrate);
+                        w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
+                            integratePositions(st, bodyList + begin, end - begin, h);
+                        });
+                        break;
+                    }
+                    case SubstepStage::Relax:
+                        if (anyRows) {
+                            auto timer = stage(Stage::Solve);
+                            solvePass(false, sub + 1 == substeps && lastPass);
+                        }
+                        break;
                 }
-                case SubstepStage::Relax:
-                    if (anyRows) {
-                        auto timer = stage(Stage::Solve);
-                        solvePass(false, sub + 1 == substeps && stages.pass(k) + 1 == stages.relaxes);
-                    }
-                    break;
             }
-        }
     }
     if (blockCount > 0 && !storeInRelax) {
         auto timer = stage(Stage::Solve);

@@ -16,6 +16,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace physim {
 namespace {
@@ -141,6 +142,30 @@ TEST(ContinuousBatch, ThreadsChangeNothing) {
     EXPECT_EQ(one.gap, four.gap);
     EXPECT_EQ(one.pointY, four.pointY);
     EXPECT_EQ(CpuContinuousSolver(4).name(), "cpu, 4 threads");
+}
+
+// A solver keeps its threads from one batch to the next (a big batch, a small one, the big one again); a moved
+// solver keeps them too.
+TEST(ContinuousBatch, ASolverKeepsItsThreadsFromBatchToBatch) {
+    const ContinuousBatch big = testing::randomBatch(10000, 5), small = testing::randomBatch(100, 6);
+    ContinuousBatchResult oneBig, oneSmall, first, second, smallOnFour, moved;
+    CpuContinuousSolver(1).solve(big, oneBig);
+    CpuContinuousSolver(1).solve(small, oneSmall);
+    CpuContinuousSolver four(4);
+    four.solve(big, first);
+    four.solve(small, smallOnFour);
+    four.solve(big, second);
+    CpuContinuousSolver taken(std::move(four));
+    taken.solve(big, moved);
+    EXPECT_EQ(taken.threads(), 4u);
+    for (const ContinuousBatchResult* r : {&first, &second, &moved}) {
+        EXPECT_EQ(r->state, oneBig.state);
+        EXPECT_EQ(r->t, oneBig.t);
+        EXPECT_EQ(r->pointX, oneBig.pointX);
+    }
+    EXPECT_EQ(smallOnFour.state, oneSmall.state);
+    EXPECT_EQ(smallOnFour.t, oneSmall.t);
+    EXPECT_GE(CpuContinuousSolver(0).threads(), 1u);
 }
 
 TEST(ContinuousBatch, AnEmptyBatchGivesAnEmptyResult) {

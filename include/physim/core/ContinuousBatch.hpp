@@ -4,8 +4,8 @@
 // memory and the whole batch moves to the device in a few copies; the CPU solves the same arrays with the same
 // code (the shared kernel, src/core/ContinuousKernel.hpp). docs/cuda.md explains the design.
 //
-//   shapes: one entry per distinct shape; a polygon's vertices and normals sit in the flat vertex arrays from
-//           firstVertex, a circle's centre is its one vertex.
+//   shapes: one entry per distinct shape; its kind's points (and edge normals, where it has edges) sit in the flat
+//           vertex arrays from firstVertex, as addShape lays them out.
 //   bodies: a shape and a motion (pose at t = 0 and at t = 1, linear in between).
 //   pairs:  two bodies each; result i belongs to pair i.
 
@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -21,13 +22,13 @@ namespace physim {
 
 struct ContinuousBatch {
     struct Shapes {
-        std::vector<std::int32_t> kind;         ///< index of the kind in Geometry: 0 circle, 1 polygon
+        std::vector<std::int32_t> kind;         ///< the shape's kind: its alternative's index in Geometry
         std::vector<std::int32_t> firstVertex;  ///< index into the vertex arrays
-        std::vector<std::int32_t> vertexCount;  ///< circle 1, polygon 3 to 8
-        std::vector<double> radius;             ///< m; circle > 0, polygon 0
+        std::vector<std::int32_t> vertexCount;  ///< the points the kind keeps (validate() names each kind's range)
+        std::vector<double> radius;             ///< m, the kind's radius about its points (0 for a kind without)
         std::vector<double> boundingRadius;     ///< m, farthest point from the body origin
         std::vector<double> vertexX, vertexY;   ///< m, body frame
-        std::vector<double> normalX, normalY;   ///< unit outward edge normals (polygons; 0 for circles)
+        std::vector<double> normalX, normalY;   ///< unit outward edge normals (0 for a kind without edges)
     } shapes;
     struct Bodies {
         std::vector<std::int32_t> shape;              ///< index into shapes
@@ -100,16 +101,22 @@ public:
     virtual std::string name() const = 0;
 };
 
-/// The batch on the CPU: `threads` worker threads over contiguous ranges of pairs (0: one per hardware thread;
-/// batches under a few thousand pairs use one thread, where starting threads would cost more than it saves).
+/// The batch on the CPU: `threads` worker threads over contiguous ranges of pairs (0: as many as the core's thread
+/// pool has by default, about one per hardware thread), kept from one solve to the next; a batch under a few
+/// thousand pairs runs on the calling thread, where handing out the work would cost more than it saves.
 class CpuContinuousSolver final : public ContinuousSolver {
 public:
     explicit CpuContinuousSolver(unsigned threads = 1);
+    ~CpuContinuousSolver() override;
+    CpuContinuousSolver(CpuContinuousSolver&&) noexcept;
+    CpuContinuousSolver& operator=(CpuContinuousSolver&&) noexcept;
     void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override;
     std::string name() const override;
     unsigned threads() const { return threads_; }
 
 private:
+    struct Workers;  // the core's executor for this solver's threads (src/core)
+    std::unique_ptr<Workers> workers_;
     unsigned threads_;
 };
 
