@@ -225,8 +225,10 @@ kernel::ResultView viewOf(ContinuousBatchResult& r) {
 
 kernel::Shape toKernel(const Geometry& g) {
     kernel::Shape k{};
-    k.boundingRadius = boundingRadius(g);
-    withKind(g, [&](auto kind, const auto& s) { kind.toKernel(s, k); });
+    withKind(g, [&](auto kind, const auto& s) {
+        k.boundingRadius = kind.boundingRadius(s);
+        kind.toKernel(s, k);
+    });
     return k;
 }
 
@@ -259,10 +261,10 @@ struct CpuContinuousSolver::Workers {
 
 // 0 threads: the executor's count (its arena's default concurrency).
 CpuContinuousSolver::CpuContinuousSolver(unsigned threads)
-    : workers_(std::make_unique<Workers>(static_cast<int>(threads))),
-      threads_(static_cast<unsigned>(workers_->executor.threads())) {}
+    : workers_(std::make_unique<Workers>(static_cast<int>(threads))) {}
 
 CpuContinuousSolver::~CpuContinuousSolver() = default;
+unsigned CpuContinuousSolver::threads() const { return static_cast<unsigned>(workers_->executor.threads()); }
 CpuContinuousSolver::CpuContinuousSolver(CpuContinuousSolver&&) noexcept = default;
 CpuContinuousSolver& CpuContinuousSolver::operator=(CpuContinuousSolver&&) noexcept = default;
 
@@ -273,7 +275,8 @@ void CpuContinuousSolver::solve(const ContinuousBatch& batch, ContinuousBatchRes
 }
 
 std::string CpuContinuousSolver::name() const {
-    return "cpu, " + std::to_string(threads_) + (threads_ == 1 ? " thread" : " threads");
+    const unsigned n = threads();
+    return "cpu, " + std::to_string(n) + (n == 1 ? " thread" : " threads");
 }
 
 }  // namespace physim

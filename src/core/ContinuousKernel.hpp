@@ -1,7 +1,7 @@
 #pragma once
 // The geometry of continuous collision detection, written once for the CPU and the GPU: shape distance and
 // time of impact by conservative advancement as __host__ __device__ functions over plain structs. g++ compiles
-// it into the core (TimeOfImpact.cpp, ContinuousBatch.cpp), nvcc into the CUDA kernel (cuda/ContinuousKernel.cu),
+// it into the core (through KernelBridge.hpp), nvcc into the CUDA kernel (cuda/ContinuousKernel.cu),
 // so both run the same arithmetic in the same order. The CUDA layer is built with --fmad=false (no fused
 // multiply-add the host does not do); the only remaining difference is the last bit of cos and sin, which
 // docs/cuda.md measures.

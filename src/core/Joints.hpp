@@ -17,8 +17,9 @@
 // A kind may also provide (World::jointLength and jointAngle refuse the others):
 //   jointLength()             its length, m
 //   jointAngle(A, B)          its angle between the bodies, rad
-// The functions below visit the kind once per call (a switch): the only place that dispatches on it (besides
-// JointData's isRow, which reads kRow, and type(), the variant's index).
+// The functions below visit the kind once per call (a switch) for the step and the World's generic queries. Beside
+// them, creation visits the definition (WorldJoints.cpp), and a kind's own setters and effect reach its data by
+// its type.
 
 #include "JointData.hpp"
 

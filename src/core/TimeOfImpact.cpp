@@ -8,9 +8,7 @@
 
 #include "physim/core/Collide.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 

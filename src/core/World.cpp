@@ -199,7 +199,7 @@ BodyId World::createBody(const BodyDef& def) {
     BodyData& b = w.bodies[index];
     b.type = def.type;
     b.shape = def.shape;
-    b.unitMass = computeMassProperties(def.shape);
+    b.unitMass = massed.unitMass;
     b.localCenter = b.unitMass.centroid;
     b.extent = extentAbout(def.shape, b.localCenter);
     b.coreRadius = coreRadius(def.shape);

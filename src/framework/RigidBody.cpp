@@ -39,7 +39,7 @@ double RigidBody::inv_inertia() const {
 Vec2 RigidBody::centerOfMass() const {
     if (world_) return world_->centerOfMass(id_);
     const Transform xf{def_.position, Rotation::fromAngle(def_.angle)};
-    return xf.apply(computeMassProperties(def_.shape).centroid);
+    return xf.apply(pendingMassData().center);
 }
 
 void RigidBody::setGeometry(const Geometry& shape) {

@@ -112,12 +112,11 @@ public:
     CpuContinuousSolver& operator=(CpuContinuousSolver&&) noexcept;
     void solve(const ContinuousBatch& batch, ContinuousBatchResult& result) override;
     std::string name() const override;
-    unsigned threads() const { return threads_; }
+    unsigned threads() const;
 
 private:
     struct Workers;  // the core's executor for this solver's threads (src/core)
     std::unique_ptr<Workers> workers_;
-    unsigned threads_;
 };
 
 /// Solves a batch that passed checkLayout on the CPU with `threads` threads (>= 1); pairs that fail their checks

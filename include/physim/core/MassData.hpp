@@ -23,8 +23,8 @@ inline MassData massDataForMass(const MassProperties& unit, double mass) {
     return {mass, density, unit.centroid, density * unit.secondMoment};
 }
 
-/// A shape of `density` kg/m^2 (> 0): mass = density * area, then massDataForMass. The World's rule for a body
-/// created from a BodyDef.
+/// A shape of `density` kg/m^2 (> 0): mass = density * area, then massDataForMass: the same rule as
+/// World::createBody for a body made from a BodyDef.
 inline MassData massDataForDensity(const Geometry& shape, double density) {
     const MassProperties unit = computeMassProperties(shape);
     return massDataForMass(unit, density * unit.area);

@@ -28,7 +28,7 @@ void SpringEffect::apply(WorldImpl& w, double h) const {
         const Vec2 u = d / length;
         const double stretchRate = u.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
         // On B, N s (SpringJoint::reaction is the same force, N).
-        const Vec2 P = -h * (spring.stiffness * (length - spring.restLength) + spring.damping * stretchRate) * u;
+        const Vec2 P = -h * spring.tension(length, stretchRate) * u;
         if (B.invMass > 0.0) {
             SolverBody& s = w.solver.states()[static_cast<std::size_t>(B.index)];
             s.v += B.invMass * P;

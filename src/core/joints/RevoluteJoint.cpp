@@ -63,20 +63,26 @@ JointId World::createRevoluteJoint(const RevoluteJointDef& def) {
 
 void World::setJointMotor(JointId id, bool enable, double speed, double maxTorque) {
     requireMotor(speed, maxTorque);
-    RevoluteJoint& m = revoluteToChange(*impl_, joint(id), id, "setJointMotor");
-    m.enableMotor = enable;
-    m.motorSpeed = speed;
-    m.maxMotorTorque = maxTorque;
-    if (!enable) m.motorImpulse = 0.0;
+    revoluteToChange(*impl_, joint(id), id, "setJointMotor").setMotor(enable, speed, maxTorque);
 }
 
 void World::setJointLimits(JointId id, bool enable, double lower, double upper) {
     requireLimits(lower, upper);
-    RevoluteJoint& m = revoluteToChange(*impl_, joint(id), id, "setJointLimits");
-    m.enableLimit = enable;
-    m.lowerAngle = lower;
-    m.upperAngle = upper;
-    if (!enable) m.lowerImpulse = m.upperImpulse = 0.0;
+    revoluteToChange(*impl_, joint(id), id, "setJointLimits").setLimits(enable, lower, upper);
+}
+
+void RevoluteJoint::setMotor(bool enable, double speed, double maxTorque) {
+    enableMotor = enable;
+    motorSpeed = speed;
+    maxMotorTorque = maxTorque;
+    if (!enable) motorImpulse = 0.0;
+}
+
+void RevoluteJoint::setLimits(bool enable, double lower, double upper) {
+    enableLimit = enable;
+    lowerAngle = lower;
+    upperAngle = upper;
+    if (!enable) lowerImpulse = upperImpulse = 0.0;
 }
 
 RevoluteJoint RevoluteJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA,
@@ -86,12 +92,8 @@ RevoluteJoint RevoluteJoint::make(const Def& def, const BodyData& A, const BodyD
     requireMotor(def.motorSpeed, def.maxMotorTorque);
     RevoluteJoint j;
     j.referenceAngle = pinAt(def.anchor, A, B, localA, localB);
-    j.enableLimit = def.enableLimit;
-    j.lowerAngle = def.lowerAngle;
-    j.upperAngle = def.upperAngle;
-    j.enableMotor = def.enableMotor;
-    j.motorSpeed = def.motorSpeed;
-    j.maxMotorTorque = def.maxMotorTorque;
+    j.setLimits(def.enableLimit, def.lowerAngle, def.upperAngle);
+    j.setMotor(def.enableMotor, def.motorSpeed, def.maxMotorTorque);
     return j;
 }
 

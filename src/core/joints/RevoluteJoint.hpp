@@ -25,6 +25,10 @@ struct RevoluteJoint {
 
     static JointEnds ends(const Def& def) { return {def.bodyA, def.bodyB, false}; }
     static RevoluteJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
+    /// The motor and the limits as a definition or World::setJointMotor / setJointLimits set them (values checked
+    /// by the caller); turning one off forgets its impulses.
+    void setMotor(bool enable, double speed, double maxTorque);
+    void setLimits(bool enable, double lower, double upper);
     void prepare(JointConstraint& row, const BodyData& A, const BodyData& B, double h,
                  const Softness& rodSoftness) const;
     void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;

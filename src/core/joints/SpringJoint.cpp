@@ -38,7 +38,7 @@ JointReaction SpringJoint::reaction(const JointEndsNow& now, double) const {
     if (!(length > 1e-12)) return {};  // coincident anchors: no direction, no force
     const Vec2 u = d / length;
     const double stretchRate = u.dot(now.velocityB - now.velocityA);
-    return {-(stiffness * (length - restLength) + damping * stretchRate) * u, 0.0};
+    return {-tension(length, stretchRate) * u, 0.0};
 }
 
 }  // namespace physim

@@ -26,6 +26,8 @@ struct SpringJoint {
 
     static JointEnds ends(const Def& def) { return {def.bodyA, def.bodyB, def.bodyA.isNull()}; }
     static SpringJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
+    /// Hooke's law with damping: the pull along the spring at `length` m stretching at `rate` m/s, N.
+    double tension(double length, double rate) const { return stiffness * (length - restLength) + damping * rate; }
     /// Its force on B now (the reaction: a force has no impulses to report).
     JointReaction reaction(const JointEndsNow& now, double invH) const;
     /// World::jointLength: the rest length, m.

@@ -42,7 +42,7 @@ struct ShapeKind<Circle> {
 
     // The kernel's circle: its centre is its one vertex.
     static void toKernel(const Circle& c, kernel::Shape& k) {
-        k.kind = kernel::kCircle;
+        k.kind = kernelKind;
         k.count = 1;
         k.radius = c.radius;
         k.vertices[0] = {c.center.x(), c.center.y()};

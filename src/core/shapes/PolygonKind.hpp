@@ -51,7 +51,7 @@ struct ShapeKind<Polygon> {
     static std::vector<Vec2> outline(const Polygon& p, const Transform& xf);
 
     static void toKernel(const Polygon& p, kernel::Shape& k) {
-        k.kind = kernel::kPolygon;
+        k.kind = kernelKind;
         k.count = p.count;
         k.radius = 0.0;
         for (int i = 0; i < p.count; ++i) {
