@@ -151,16 +151,16 @@ TEST(Controls, TimeScaleChangesStepsPerRealSecond) {
     runner.restart();
     EXPECT_NEAR(runFrames(runner, 60), 40, 1);
     runner.handleEvent(keyPress(sf::Keyboard::LBracket), nullptr);
-    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), 0.5);
+    EXPECT_EQ(runner.timeScale(), 0.5);
     EXPECT_NEAR(runFrames(runner, 60), 20, 1);
     runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
     runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
-    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), 2.0);
+    EXPECT_EQ(runner.timeScale(), 2.0);
     EXPECT_NEAR(runFrames(runner, 60), 80, 1);
     for (int i = 0; i < 10; ++i) runner.handleEvent(keyPress(sf::Keyboard::RBracket), nullptr);
-    EXPECT_EQ(RunnerAccess::controls(runner).timeScale(), Runner::maxTimeScale) << "capped";
-    EXPECT_THROW(RunnerAccess::controls(runner).setTimeScale(0.0), std::invalid_argument);
-    EXPECT_THROW(RunnerAccess::controls(runner).setTimeScale(NAN), std::invalid_argument);
+    EXPECT_EQ(runner.timeScale(), Runner::maxTimeScale) << "capped";
+    EXPECT_THROW(runner.setTimeScale(0.0), std::invalid_argument);
+    EXPECT_THROW(runner.setTimeScale(NAN), std::invalid_argument);
 }
 
 // 1000 Hz on 60 Hz frames needs 16.7 steps a frame; the cap of 8 holds the run at 8 x 60 / 1000 = 0.48 of real
@@ -236,9 +236,11 @@ TEST(Controls, KeysToggleDebugDrawingAndStatistics) {
         runner.handleEvent(keyPress(code), nullptr);
         EXPECT_TRUE(sim.debugDraw.*option) << code;
     }
-    EXPECT_FALSE(RunnerAccess::controls(runner).statsShown());
+    EXPECT_FALSE(runner.statsShown());
     runner.handleEvent(keyPress(sf::Keyboard::Tab), nullptr);
-    EXPECT_TRUE(RunnerAccess::controls(runner).statsShown());
+    EXPECT_TRUE(runner.statsShown());
+    runner.setStatsShown(false);  // the panel's way, as the gallery does
+    EXPECT_FALSE(runner.statsShown());
 }
 
 // Space makes the simulation again with the user's parameter values and debug drawing; a new factory (the

@@ -14,10 +14,7 @@ namespace {
 // I = m r^2 / 2, potential m g y (g = 9.81 down, zero at the origin). The static ground adds neither.
 TEST(Stats, CountsBodiesAndSumsEnergy) {
     World world;
-    BodyDef ground;
-    ground.type = BodyType::Static;
-    ground.shape = makeBox(5.0, 0.5);
-    world.createBody(ground);
+    test::addStaticBox(world, Vec2::Zero(), 5.0, 0.5);
     BodyDef disc;
     disc.shape = makeCircle(0.5);
     disc.position = {1.0, 3.0};

@@ -135,13 +135,8 @@ inline std::vector<BodyId> buildDeterminismScene(World& world, int rows = 8) {
     for (const auto& [size, at] : {std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, -wall)},
                                    std::pair{Vec2(half + 2 * wall, wall), Vec2(0.0, 2 * half + wall)},
                                    std::pair{Vec2(wall, half + 2 * wall), Vec2(-half - wall, half)},
-                                   std::pair{Vec2(wall, half + 2 * wall), Vec2(half + wall, half)}}) {
-        BodyDef d;
-        d.type = BodyType::Static;
-        d.shape = makeBox(size.x(), size.y());
-        d.position = at;
-        world.createBody(d);
-    }
+                                   std::pair{Vec2(wall, half + 2 * wall), Vec2(half + wall, half)}})
+        addStaticBox(world, at, size.x(), size.y());
     std::vector<BodyId> ids;
     const double size = 0.4 * 8 / rows;  // half-size: the pyramid fills the same 6.4 m base at any row count
     for (int row = 0; row < rows; ++row)

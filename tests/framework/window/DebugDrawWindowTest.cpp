@@ -5,6 +5,7 @@
 
 #include <physim/core/World.hpp>
 #include <physim/framework/DebugDraw.hpp>
+#include "support/Scenes.hpp"
 
 #include <SFML/Graphics/RenderTexture.hpp>
 
@@ -42,13 +43,7 @@ struct Canvas {
 
 bool reddish(sf::Color c) { return c.r > 150 && c.g < 120 && c.b < 120; }
 
-BodyId ground(World& world) {
-    BodyDef def;
-    def.type = BodyType::Static;
-    def.shape = makeBox(3.5, 0.25);
-    def.position = {0.0, -2.25};  // top at y = -2
-    return world.createBody(def);
-}
+BodyId ground(World& world) { return test::addStaticBox(world, {0.0, -2.25}, 3.5, 0.25); }  // top at y = -2
 
 TEST(DebugDrawWindow, ContactsAwakeAndResting) {
     World world;
