@@ -104,7 +104,7 @@ struct Trees {
     }
 };
 
-void finishPairs(std::vector<BodyPair>& pairs) {
+void finishPairs(std::vector<ShapePair>& pairs) {
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
 }
@@ -112,7 +112,7 @@ void finishPairs(std::vector<BodyPair>& pairs) {
 void BM_TreeStep(benchmark::State& state) {
     Scene scene(static_cast<std::size_t>(state.range(0)));
     Trees trees(scene);
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     std::vector<std::uint32_t> moved;
     std::size_t reinserted = 0;
     for (auto _ : state) {
@@ -147,9 +147,9 @@ BENCHMARK(BM_TreeStep)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecond);
 
 // The pairs of the boxes in `moved` (each flagged in isMoved) with every other box, from their enlarged boxes by
 // brute force, each once, sorted: what findNewPairs must return. Static boxes never move, so no pair is static.
-std::vector<BodyPair> bruteNewPairs(const std::vector<Aabb>& fat, const std::vector<std::uint32_t>& moved,
+std::vector<ShapePair> bruteNewPairs(const std::vector<Aabb>& fat, const std::vector<std::uint32_t>& moved,
                                     const std::vector<std::uint8_t>& isMoved) {
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     for (const std::uint32_t i : moved)
         for (std::uint32_t j = 0; j < fat.size(); ++j)
             if (j != i && !(isMoved[j] && j < i) && fat[i].overlaps(fat[j]))
@@ -168,7 +168,7 @@ void BM_BroadPhaseStep(benchmark::State& state) {
         fat[i] = scene.bodies[i].aabb.fattened(kMargin);
         proxy[i] = broadPhase.createProxy(fat[i], i, !scene.bodies[i].movable);
     }
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     const PairSet noContacts;  // every overlapping pair counts as new, as brute force reports it
     const auto takeAll = [](std::uint32_t, std::uint32_t) { return true; };
     broadPhase.findNewPairs(pairs, noContacts, takeAll, executor);  // the first step: every proxy is new
@@ -204,7 +204,7 @@ BENCHMARK(BM_BroadPhaseStep)->Arg(5000)->Arg(20000)->Unit(benchmark::kMicrosecon
 
 void BM_BruteStep(benchmark::State& state) {
     Scene scene(static_cast<std::size_t>(state.range(0)));
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     const std::vector<Box>& bodies = scene.bodies;
     for (auto _ : state) {
         pairs.clear();
@@ -326,7 +326,7 @@ struct Box2DTrees {
 struct Box2DPairs {
     const b2DynamicTree* tree;
     std::uint32_t self;
-    std::vector<BodyPair>* pairs;
+    std::vector<ShapePair>* pairs;
     bool QueryCallback(std::int32_t proxy) {
         const auto other = static_cast<std::uint32_t>(reinterpret_cast<std::uintptr_t>(tree->GetUserData(proxy)));
         if (other != self) pairs->emplace_back(std::min(self, other), std::max(self, other));
@@ -337,7 +337,7 @@ struct Box2DPairs {
 void BM_Box2DStep(benchmark::State& state) {
     Scene scene(static_cast<std::size_t>(state.range(0)));
     Box2DTrees trees(scene);
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     std::vector<std::uint32_t> moved;
     for (auto _ : state) {
         moved.clear();

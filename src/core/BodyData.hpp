@@ -25,11 +25,11 @@ struct BodyData {
     Vec2 v = Vec2::Zero();          // velocity of the centre of mass, m/s
     double w = 0.0;                 // rad/s
     // Read for every pair by the broad and narrow phases, so kept with the motion in the record's first lines.
-    double extent = 0.0;            // largest distance from the centre of mass to the shape, m
+    double extent = 0.0;            // largest distance from the centre of mass to any of its shapes, m
     CollisionDetection detection = CollisionDetection::Discrete;
     BodyType type = BodyType::Dynamic;
     std::int32_t awakeIndex = kNullIndex;  // position in the awake list (World::awake_); kNullIndex: static, asleep
-    std::int32_t proxy = kNullIndex;       // broad-phase proxy key; its enlarged box lives in the tree
+    bool collides = true;                  // its shapes have broad-phase proxies (World::setCollides)
     Vec2 force = Vec2::Zero();      // N at the centre of mass, accumulated until the next step uses it
     double torque = 0.0;            // N m
 
@@ -39,15 +39,14 @@ struct BodyData {
     double invMass = 0.0;           // 1/kg
     double inertia = 0.0;           // kg m^2 about the centre of mass
     double invInertia = 0.0;
-    double density = 1.0;          // kg/m^2, for mass when the body becomes dynamic
-    MassProperties unitMass;        // of the shape, per unit density
+    double density = 1.0;          // kg/m^2, the reference density: mass = density * unitMass.area
+    MassProperties unitMass;        // of all its shapes, each weighted by its density over the reference density
 
-    // Material and shape.
-    double restitution = 0.0;
-    double staticFriction = 0.0;
-    double dynamicFriction = 0.0;
-    Geometry shape;
-    double coreRadius = 0.0;        // radius of the largest circle about the centroid inside the shape, m
+    // Shapes (ShapeData.hpp): an intrusive list, in the order they were added.
+    std::int32_t shapeHead = kNullIndex;
+    std::int32_t shapeTail = kNullIndex;
+    std::int32_t shapeCount = 0;
+    double coreRadius = 0.0;        // least over its shapes of the largest circle about a shape's centroid inside it, m
     double precision = kDefaultPrecision;
 
     bool useGravity = true;
@@ -58,7 +57,7 @@ struct BodyData {
     bool alive = false;
     std::uint32_t generation = 0;
 
-    Aabb aabb;                      // the tight box at the current pose
+    Aabb aabb;                      // the tight box of all its shapes at the current pose
 
     // Constraint graph: intrusive lists of the body's contacts and joints (edge key = index * 2 + side).
     std::int32_t contactHead = kNullIndex;

@@ -5,8 +5,8 @@
 
 namespace physim {
 
-std::int32_t BroadPhase::createProxy(const Aabb& fatBox, std::uint32_t body, bool isStatic) {
-    const std::int32_t id = tree_[isStatic ? 1 : 0].createProxy(fatBox, body);
+std::int32_t BroadPhase::createProxy(const Aabb& fatBox, std::uint32_t shape, bool isStatic) {
+    const std::int32_t id = tree_[isStatic ? 1 : 0].createProxy(fatBox, shape);
     const std::int32_t k = key(id, isStatic);
     markMoved(k);
     ++boxRevision_;
@@ -59,7 +59,7 @@ void BroadPhase::beginFind(int workerSlots) {
     for (auto& buffer : declinedPerTask_) buffer.clear();
 }
 
-void BroadPhase::endFind(std::vector<BodyPair>& pairs) {
+void BroadPhase::endFind(std::vector<ShapePair>& pairs) {
     for (auto& buffer : perTask_) pairs.insert(pairs.end(), buffer.begin(), buffer.end());
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());

@@ -1,8 +1,8 @@
 #pragma once
-// Broad phase: which bodies may touch. Two dynamic AABB trees of enlarged boxes, one for static bodies and one
-// for the bodies that can move. A proxy's box is the body's box enlarged by a margin and by the motion expected
-// over the next step, so it is touched only when its body leaves that box; the pairs of such moved proxies are
-// the only new candidate pairs. A scene at rest costs nothing here. Internal.
+// Broad phase: which shapes may touch. Two dynamic AABB trees of enlarged boxes, one for static bodies' shapes and
+// one for those of the bodies that can move. A proxy's box is the shape's box enlarged by a margin and by the motion
+// its body is expected to make over the next step, so it is touched only when the shape leaves that box; the pairs
+// of such moved proxies are the only new candidate pairs. A scene at rest costs nothing here. Internal.
 
 #include "DynamicTree.hpp"
 #include "Executor.hpp"
@@ -17,39 +17,39 @@
 
 namespace physim {
 
-using BodyPair = std::pair<std::uint32_t, std::uint32_t>;  // body slots, first < second
+using ShapePair = std::pair<std::uint32_t, std::uint32_t>;  // shape slots, first < second
 
 class BroadPhase {
 public:
     /// A proxy key: the tree (bit 0: 1 = static) and the proxy id in that tree.
     static std::int32_t key(std::int32_t id, bool isStatic) { return id * 2 + (isStatic ? 1 : 0); }
 
-    std::int32_t createProxy(const Aabb& fatBox, std::uint32_t body, bool isStatic);
+    std::int32_t createProxy(const Aabb& fatBox, std::uint32_t shape, bool isStatic);
     void destroyProxy(std::int32_t key);
-    /// A new box (the body left its old one, or was moved by the user); the proxy joins the move buffer.
+    /// A new box (the shape left its old one, or was moved by the user); the proxy joins the move buffer.
     void moveProxy(std::int32_t key, const Aabb& fatBox);
-    /// New boxes for many proxies of movable bodies at once (DynamicTree::moveProxies: a large share rebuilds the
+    /// New boxes for many proxies of movable shapes at once (DynamicTree::moveProxies: a large share rebuilds the
     /// tree); each joins the move buffer.
     void moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes);
     const Aabb& fatBox(std::int32_t key) const;
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
-    /// The body pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
+    /// The shape pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
     /// the last call (or was asked again), which `known` does not hold (pairs that have a contact already) and
     /// which `wanted(first, second)` takes; empties the move buffer. Queries run on the executor's threads, and so
     /// does `wanted`. A pair it declines is offered again by the next call, whether or not its proxies move.
     template <class Wanted>
-    void findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const Wanted& wanted, Executor& executor);
+    void findNewPairs(std::vector<ShapePair>& pairs, const PairSet& known, const Wanted& wanted, Executor& executor);
     /// The next findNewPairs queries this proxy again although it did not move: its pairs are offered again.
     void requery(std::int32_t key) { markMoved(key); }
 
     std::size_t moveCount() const { return moved_.size(); }
     /// Changes whenever a proxy is created, destroyed or given a new box: while it stays the same, so do all boxes.
     std::uint64_t boxRevision() const { return boxRevision_; }
-    /// Bodies whose boxes overlap `box`, for users and tests (both trees).
+    /// Shapes whose boxes overlap `box` (both trees).
     template <class Callback>
     void query(const Aabb& box, Callback&& callback) const {
-        auto forward = [&](std::int32_t, std::uint32_t body) { return callback(body); };
+        auto forward = [&](std::int32_t, std::uint32_t shape) { return callback(shape); };
         tree_[0].query(box, forward);
         tree_[1].query(box, forward);
     }
@@ -59,33 +59,34 @@ private:
     const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }
     void markMoved(std::int32_t key);
     void beginFind(int workerSlots);
-    void endFind(std::vector<BodyPair>& pairs);  // merges, sorts, empties the move buffer, re-queues declined
+    void endFind(std::vector<ShapePair>& pairs);  // merges, sorts, empties the move buffer, re-queues declined
 
-    DynamicTree tree_[2];                 // [0] movable bodies, [1] static bodies
+    DynamicTree tree_[2];                 // [0] shapes of movable bodies, [1] of static bodies
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
     std::uint64_t boxRevision_ = 0;
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
-    std::vector<std::vector<BodyPair>> perTask_;
+    std::vector<std::vector<ShapePair>> perTask_;
     std::vector<std::vector<std::int32_t>> declinedPerTask_;  // proxies whose query met a declined pair
 };
 
 template <class Wanted>
-void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known, const Wanted& wanted,
+void BroadPhase::findNewPairs(std::vector<ShapePair>& pairs, const PairSet& known, const Wanted& wanted,
                               Executor& executor) {
     pairs.clear();
     if (moved_.empty()) return;
     beginFind(executor.workerSlots());
     // A moved movable proxy meets both trees; a moved static proxy meets only the movable tree (static bodies
-    // never pair). A pair of two moved proxies is reported by the query of the smaller key only.
+    // never pair). Two shapes of one body do pair here: `wanted` takes them, the caller drops them. A pair of two
+    // moved proxies is reported by the query of the smaller key only.
     executor.parallelFor(moved_.size(), 64, [&](std::size_t begin, std::size_t end, int worker) {
-        std::vector<BodyPair>& out = perTask_[static_cast<std::size_t>(worker)];
+        std::vector<ShapePair>& out = perTask_[static_cast<std::size_t>(worker)];
         std::vector<std::int32_t>& declined = declinedPerTask_[static_cast<std::size_t>(worker)];
         for (std::size_t i = begin; i < end; ++i) {
             const std::int32_t k = moved_[i];
             bool declinedOne = false;
             const Aabb& box = fatBox(k);
-            const std::uint32_t body = treeOf(k).userData(k >> 1);
+            const std::uint32_t shape = treeOf(k).userData(k >> 1);
             for (int t = 0; t < 2; ++t) {
                 if (t == 1 && isStatic(k)) continue;
                 const auto& flags = isMoved_[t];
@@ -94,7 +95,7 @@ void BroadPhase::findNewPairs(std::vector<BodyPair>& pairs, const PairSet& known
                     if (otherKey == k) return true;
                     const bool otherMoved = static_cast<std::size_t>(id) < flags.size() && flags[id];
                     if (otherMoved && otherKey < k) return true;
-                    const std::uint32_t first = std::min(body, other), second = std::max(body, other);
+                    const std::uint32_t first = std::min(shape, other), second = std::max(shape, other);
                     // Most overlaps of a moving proxy are pairs it already has: only new ones go on to the sort.
                     if (known.contains(PairSet::key(first, second))) return true;
                     if (wanted(first, second)) out.emplace_back(first, second);

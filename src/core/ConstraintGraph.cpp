@@ -57,13 +57,13 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
                 __builtin_prefetch(&w.contacts[w.awakeContacts[k + 2 * kPrefetchContacts]]);
             if (k + kPrefetchContacts < w.awakeContacts.size()) {
                 const ContactData& ahead = w.contacts[w.awakeContacts[k + kPrefetchContacts]];
-                __builtin_prefetch(&w.bodies[ahead.a].awakeIndex);
-                __builtin_prefetch(&w.bodies[ahead.b].awakeIndex);
+                __builtin_prefetch(&w.bodies[ahead.a()].awakeIndex);
+                __builtin_prefetch(&w.bodies[ahead.b()].awakeIndex);
             }
             const ContactData& c = w.contacts[w.awakeContacts[k]];
             if (c.manifold.pointCount == 0) continue;
-            const BodyData& A = w.bodies[c.a];
-            const BodyData& B = w.bodies[c.b];
+            const BodyData& A = w.bodies[c.a()];
+            const BodyData& B = w.bodies[c.b()];
             // The lowest colour neither dynamic body has yet; the overflow if both have them all.
             auto used = [&](const BodyData& b) -> std::uint32_t* {
                 const bool moves = b.type == BodyType::Dynamic && b.awakeIndex != kNullIndex;

@@ -1,5 +1,5 @@
 #pragma once
-// Persistent contacts: one record per pair of bodies whose enlarged boxes overlap, except a pair with a moving
+// Persistent contacts: one record per pair of shapes (of two bodies) whose enlarged boxes overlap, except a pair with a moving
 // continuous body that cannot meet within the step (the broad phase asks about it again each step). Internal.
 //
 // The broad phase creates a record when two proxies start to overlap and the narrow phase destroys it when they
@@ -8,6 +8,7 @@
 // exact.
 
 #include "BodyData.hpp"
+#include "ShapeData.hpp"
 
 #include "physim/core/Contact.hpp"
 
@@ -21,6 +22,7 @@ namespace physim {
 /// colliding the shapes again (Contacts.cpp).
 struct ManifoldCache {
     double margin = -1.0;           // speculative distance the shapes were collided with, m; < 0: nothing kept
+    int pointCount = 0;
     Vec2 offset = Vec2::Zero();     // b's centre of mass in a's frame, m
     double angle = 0.0;             // b's angle minus a's, rad
     Vec2 normal = Vec2::Zero();     // in a's frame
@@ -30,28 +32,49 @@ struct ManifoldCache {
         std::uint32_t id = 0;
     };
     std::array<Point, 2> points{};
-    int pointCount = 0;
+};
+
+/// The pair's material, mixed from its shapes' by the paper's rules (restitution min, friction coefficients averaged)
+/// when the contact is made, and again when either shape's material changes.
+struct ContactMaterial {
+    double staticFriction = 0.0;
+    double dynamicFriction = 0.0;
+    double restitution = 0.0;
 };
 
 /// Line-aligned: the solver's preparation reads a record up to `cache`, in colour order (at random), and that part
-/// is then three lines, never four.
+/// is then three lines, never four; what only the narrow phase and the bookkeeping read comes after. Six lines in
+/// all (the fields fill the padding the vectors' alignment leaves).
 struct alignas(64) ContactData {
-    std::uint32_t a = 0, b = 0;     // body slots, a < b; the manifold's normal points from a to b
-    Manifold manifold;
+    ContactMaterial material;
+    bool sliding = false;           // its friction slid at the end of the last step (ContactSolver.hpp)
+    bool keepsPush = false;         // a shape can bounce (restitution > 0): its row keeps its push-out apart
+    bool touching = false;          // a manifold point within the speculative distance (islands, events)
+    bool alive = false;
+    std::int32_t awakeIndex = kNullIndex;  // position in World's awake contact list; kNullIndex while both sleep
+    Manifold manifold;              // its ids name the pair's bodies and shapes (shape slots: shapeA() < shapeB());
+                                    // the normal points from body a to body b
+    ManifoldCache cache;            // only the narrow phase reads it, the solver's preparation does not
     // Intrusive lists through each body's contacts: side 0 is in a's list, side 1 in b's.
     std::int32_t prev[2] = {kNullIndex, kNullIndex};
     std::int32_t next[2] = {kNullIndex, kNullIndex};
-    std::int32_t awakeIndex = kNullIndex;  // position in World's awake contact list; kNullIndex while both sleep
     std::uint32_t generation = 0;
-    bool alive = false;
-    bool touching = false;          // a manifold point within the speculative distance (islands, events)
-    bool sliding = false;           // its friction slid at the end of the last step (ContactSolver.hpp)
-    ManifoldCache cache;            // last: only the narrow phase reads it, the solver's preparation does not
+
+    std::uint32_t a() const { return manifold.bodyA.index; }  // body slots
+    std::uint32_t b() const { return manifold.bodyB.index; }
+    std::uint32_t shapeA() const { return manifold.shapeA.index; }
+    std::uint32_t shapeB() const { return manifold.shapeB.index; }
 };
 
-/// Contact begin / end events of one step, by pair of bodies.
-struct ContactPair {
-    std::uint32_t a = 0, b = 0;
-};
+static_assert(sizeof(ContactData) == 6 * 64, "six lines: see the field order");
+
+/// The contact's material from its shapes'.
+inline void mixMaterials(ContactData& c, const ShapeData& a, const ShapeData& b) {
+    c.material.staticFriction = 0.5 * (a.staticFriction + b.staticFriction);
+    c.material.dynamicFriction = 0.5 * (a.dynamicFriction + b.dynamicFriction);
+    c.material.restitution = b.restitution < a.restitution ? b.restitution : a.restitution;  // std::min's rule
+    c.keepsPush = a.restitution > 0.0 || b.restitution > 0.0;
+}
+
 
 }  // namespace physim

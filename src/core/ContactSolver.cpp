@@ -45,9 +45,6 @@ namespace {
     still.invInertia = side.invI;
     still.center0 = record.center;
     still.acceleration = Vec2::Zero();
-    still.restitution = record.restitution;
-    still.staticFriction = record.staticFriction;
-    still.dynamicFriction = record.dynamicFriction;
     return &still;
 }
 
@@ -88,7 +85,7 @@ struct alignas(64) BlockInputs {
     Wide centerAx, centerAy, centerBx, centerBy;  // centres of mass, m
     Wide accelerationNormal;                      // B's minus A's acceleration along the normal, m/s^2
     Wide invMassA, invIA, invMassB, invIB;
-    Wide restitutionA, restitutionB, staticFrictionA, staticFrictionB, dynamicFrictionA, dynamicFrictionB;
+    Wide restitution, staticFriction, dynamicFriction;  // the contact's material (ContactData.hpp)
     Wide pointX[2], pointY[2], separation[2], normalImpulse[2], tangentImpulse[2];
     Wide pointCount, sliding;
 };
@@ -118,12 +115,9 @@ template <class Field>
     in.invIA = lanesOf([&](int k) { return A[k]->invInertia; });
     in.invMassB = lanesOf([&](int k) { return B[k]->invMass; });
     in.invIB = lanesOf([&](int k) { return B[k]->invInertia; });
-    in.restitutionA = lanesOf([&](int k) { return A[k]->restitution; });
-    in.restitutionB = lanesOf([&](int k) { return B[k]->restitution; });
-    in.staticFrictionA = lanesOf([&](int k) { return A[k]->staticFriction; });
-    in.staticFrictionB = lanesOf([&](int k) { return B[k]->staticFriction; });
-    in.dynamicFrictionA = lanesOf([&](int k) { return A[k]->dynamicFriction; });
-    in.dynamicFrictionB = lanesOf([&](int k) { return B[k]->dynamicFriction; });
+    in.restitution = lanesOf([&](int k) { return contact[k]->material.restitution; });
+    in.staticFriction = lanesOf([&](int k) { return contact[k]->material.staticFriction; });
+    in.dynamicFriction = lanesOf([&](int k) { return contact[k]->material.dynamicFriction; });
     for (int i = 0; i < 2; ++i) {  // an unused point's values are stale: prepareLanes and markBlock keep them out
         in.pointX[i] = lanesOf([&](int k) { return manifold(k).points[i].point.x(); });
         in.pointY[i] = lanesOf([&](int k) { return manifold(k).points[i].point.y(); });
@@ -137,7 +131,7 @@ template <class Field>
     for (int k = 0; k < kLanes; ++k) {
         ContactBlockCold::Lane& lane = cold.lanes[k];
         lane.pointCount = manifold(k).pointCount;
-        lane.keepsPush = A[k]->restitution > 0.0 || B[k]->restitution > 0.0;
+        lane.keepsPush = contact[k]->keepsPush;
         turning += A[k]->turns || B[k]->turns ? 1 : 0;
     }
     block.turns = turning > 0;
@@ -214,15 +208,11 @@ template <class Field>
     block.negRtA = -rtA;
     block.rtB = rtB;
     block.tangentMass = inverseOrZero(inverseMass(in, rtA, rtB));
-    // The paper's combination rules: restitution min, friction coefficients averaged.
-    const Wide staticFriction = 0.5 * (in.staticFrictionA + in.staticFrictionB);
-    const Wide dynamicFriction = 0.5 * (in.dynamicFrictionA + in.dynamicFrictionB);
     block.tangentImpulse = tangentImpulse;
-    block.staticFriction = staticFriction;
-    block.dynamicFriction = dynamicFriction;
+    block.staticFriction = in.staticFriction;
+    block.dynamicFriction = in.dynamicFriction;
     block.sliding = in.sliding;
-    const Wide restitution = in.restitutionB < in.restitutionA ? in.restitutionB : in.restitutionA;  // std::min
-    cold.restitution = restitution;
+    cold.restitution = in.restitution;
     cold.normalAcceleration = in.accelerationNormal;
     markBlock(block, cold);
 }
@@ -266,7 +256,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
             }
             const RowRef& ref = refs[rows[j].first + static_cast<std::uint32_t>(k)];
             const ContactData& c = contacts[ref.contact];
-            const BodyData &a = bodies[c.a], &b = bodies[c.b];
+            const BodyData &a = bodies[c.a()], &b = bodies[c.b()];
             contact[k] = &c;
             A[k] = rowBody(ref.indexA, sims, a, still[0][k]);
             B[k] = rowBody(ref.indexB, sims, b, still[1][k]);

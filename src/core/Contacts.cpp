@@ -1,5 +1,5 @@
-// Persistent contacts: created from the broad phase's new pairs, updated once per step by the narrow phase,
-// destroyed when their bodies' enlarged boxes part (or the pair is deferred: see `deferred`).
+// Persistent contacts: created from the broad phase's new pairs of shapes, updated once per step by the narrow
+// phase, destroyed when their shapes' enlarged boxes part (or the pair is deferred: see `deferred`).
 
 #include "Contacts.hpp"
 #include "BodyLanes.hpp"
@@ -140,9 +140,10 @@ template <class T>
 
 // The pair's manifold with every point up to `margin` (m) apart, from the shapes collided again: with 2 tolerances
 // to spare, so a pair at rest keeps its cache though its closing speed, and so its margin, jitters.
-Manifold collide(ManifoldCache& k, const BodyData& A, const BodyData& B, double margin, double tolerance) {
+Manifold collide(ManifoldCache& k, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
+                 const BodyData& B, double margin, double tolerance) {
     const double wider = margin + 2.0 * tolerance;
-    const NarrowResult r = collideGeometries(A.shape, A.xf, B.shape, B.xf, wider);
+    const NarrowResult r = collideGeometries(shapeA, A.xf, shapeB, B.xf, wider);
     keep(k, r.manifold, A, B, wider);
     return r.manifold;
 }
@@ -198,9 +199,9 @@ struct PlacedPoint {
 // point keeping the impulses it had; a speculative point only where the pair closes on it fast enough to touch
 // this step. Returns whether the pair touches.
 template <class Side>
-[[gnu::always_inline]] inline bool placePoints(ContactData& c, const BodyData& A, const BodyData& B, const Side& a,
-                                               const Side& b, double margin, bool reuse, double speculative,
-                                               double tolerance, double dt) {
+[[gnu::always_inline]] inline bool placePoints(ContactData& c, const ShapeData* shapes, const BodyData& A,
+                                               const BodyData& B, const Side& a, const Side& b, double margin,
+                                               bool reuse, double speculative, double tolerance, double dt) {
     Manifold& m = c.manifold;
     ManifoldCache& k = c.cache;
     const KeptImpulses kept(m);
@@ -216,7 +217,8 @@ template <class Side>
             placed[p].id = cached.id;
         }
     } else {
-        const Manifold fresh = collide(k, A, B, margin, tolerance);
+        const Manifold fresh =
+            collide(k, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, margin, tolerance);
         m.normal = fresh.normal;
         found = fresh.pointCount;
         for (int p = 0; p < found; ++p) {
@@ -234,8 +236,9 @@ template <class Side>
 // in A's frame since the last collision, or when the margin grew past what that collision covered. Returns whether
 // the pair touches.
 template <bool V>
-[[gnu::always_inline]] inline bool refreshManifold(ContactData& c, const BodyData& A, const BodyData& B,
-                                                   double speculative, double tolerance, double dt) {
+[[gnu::always_inline]] inline bool refreshManifold(ContactData& c, const ShapeData* shapes, const BodyData& A,
+                                                   const BodyData& B, double speculative, double tolerance,
+                                                   double dt) {
     if (!needsPoints(A, B, speculative, dt)) {
         c.manifold.pointCount = 0;
         return false;
@@ -248,7 +251,7 @@ template <bool V>
         const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
         reuse = motion <= tolerance && margin + motion <= k.margin;
     }
-    return placePoints(c, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+    return placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
 }
 
 // Records what the refresh of contact i changed: its flag, and whether it gained its first point or lost its last.
@@ -267,14 +270,16 @@ constexpr std::size_t kAhead = 4;
     if (i + 2 * kAhead < end) prefetchLines(&p.contacts[p.awakeContacts[i + 2 * kAhead]], sizeof(ContactData));
     if (i + kAhead < end) {
         const ContactData& ahead = p.contacts[p.awakeContacts[i + kAhead]];
-        prefetchLines(&p.bodies[ahead.a], sizeof(BodyData));
-        prefetchLines(&p.bodies[ahead.b], sizeof(BodyData));
+        prefetchLines(&p.bodies[ahead.a()], sizeof(BodyData));
+        prefetchLines(&p.bodies[ahead.b()], sizeof(BodyData));
     }
 }
 
 // Whether contact i's enlarged boxes parted (then flagged): a pair that no longer overlaps is destroyed.
-[[gnu::always_inline]] inline bool parted(const RefreshPass& p, std::size_t i, const BodyData& A, const BodyData& B) {
-    if (p.overlapsKnown || p.broadPhase->fatBox(A.proxy).overlaps(p.broadPhase->fatBox(B.proxy))) return false;
+[[gnu::always_inline]] inline bool parted(const RefreshPass& p, std::size_t i, const ContactData& c) {
+    if (p.overlapsKnown) return false;
+    const BroadPhase& broad = *p.broadPhase;
+    if (broad.fatBox(p.shapes[c.shapeA()].proxy).overlaps(broad.fatBox(p.shapes[c.shapeB()].proxy))) return false;
     p.flags[i] = kParted;
     return true;
 }
@@ -283,15 +288,15 @@ constexpr std::size_t kAhead = 4;
 template <bool V>
 [[gnu::always_inline]] inline void refreshOne(const RefreshPass& p, std::size_t i) {
     ContactData& c = p.contacts[p.awakeContacts[i]];
-    const BodyData& A = p.bodies[c.a];
-    const BodyData& B = p.bodies[c.b];
-    if (parted(p, i, A, B)) return;
+    const BodyData& A = p.bodies[c.a()];
+    const BodyData& B = p.bodies[c.b()];
+    if (parted(p, i, c)) return;
     if (deferred(A, B, p.speculative, p.dt)) {
         p.flags[i] = kDeferred;
         return;
     }
     const bool hadPoints = c.manifold.pointCount > 0;
-    noteChange(p, i, c, hadPoints, refreshManifold<V>(c, A, B, p.speculative, p.tolerance, p.dt));
+    noteChange(p, i, c, hadPoints, refreshManifold<V>(c, p.shapes, A, B, p.speculative, p.tolerance, p.dt));
 }
 
 // Four records' 32 bytes from byte `offset` on, transposed: the j-th double of record k in lane k of values[j].
@@ -338,8 +343,8 @@ template <bool V>
     bool faces = false;  // some contact holds a face (two points), where the lanes save most
     for (int k = 0; k < kLanes; ++k) {
         c[k] = &p.contacts[p.awakeContacts[i + k]];
-        A[k] = &p.bodies[c[k]->a];
-        B[k] = &p.bodies[c[k]->b];
+        A[k] = &p.bodies[c[k]->a()];
+        B[k] = &p.bodies[c[k]->b()];
         const bool discrete =
             A[k]->detection == CollisionDetection::Discrete && B[k]->detection == CollisionDetection::Discrete;
         if (discrete && c[k]->cache.margin >= 0.0) lanes |= 1u << k;
@@ -380,7 +385,7 @@ template <bool V>
             continue;
         }
         ContactData& contact = p.contacts[p.awakeContacts[i + k]];
-        if (parted(p, i + k, *A[k], *B[k])) continue;
+        if (parted(p, i + k, contact)) continue;
         const bool hadPoints = contact.manifold.pointCount > 0;
         bool touching;
         if (reused >> k & 1u) {
@@ -393,7 +398,7 @@ template <bool V>
                 placed[q] = {px[q][k], py[q][k], separation[q][k], cache.points[q].id, keeps[q][k] != 0};
             touching = keepPoints(m, kept, placed, cache.pointCount, p.speculative);
         } else {
-            touching = placePoints(contact, *A[k], *B[k], sideOf(*A[k]), sideOf(*B[k]), margin[k], false,
+            touching = placePoints(contact, p.shapes, *A[k], *B[k], sideOf(*A[k]), sideOf(*B[k]), margin[k], false,
                                    p.speculative, p.tolerance, p.dt);
         }
         noteChange(p, i + k, contact, hadPoints, touching);
@@ -434,18 +439,20 @@ void refreshContacts(const RefreshPass& pass, std::size_t begin, std::size_t end
     refreshBaseline(pass, begin, end);
 }
 
-bool WorldImpl::contactExists(std::uint32_t a, std::uint32_t b) const {
-    return contactPairs.contains(PairSet::key(a, b));
+bool WorldImpl::contactExists(std::uint32_t shapeA, std::uint32_t shapeB) const {
+    return contactPairs.contains(PairSet::key(shapeA, shapeB));
 }
 
-void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
+void WorldImpl::createContact(std::uint32_t shapeA, std::uint32_t shapeB) {
     const std::uint32_t index = takeSlot(contacts, freeContacts);
     ContactData& c = contacts[index];
-    c.a = a;
-    c.b = b;
-    contactPairs.insert(PairSet::key(a, b));
+    const std::uint32_t a = shapes[shapeA].body, b = shapes[shapeB].body;
+    contactPairs.insert(PairSet::key(shapeA, shapeB));
     c.manifold.bodyA = BodyId{a, bodies[a].generation};
     c.manifold.bodyB = BodyId{b, bodies[b].generation};
+    c.manifold.shapeA = ShapeId{shapeA, shapes[shapeA].generation};
+    c.manifold.shapeB = ShapeId{shapeB, shapes[shapeB].generation};
+    mixMaterials(c, shapes[shapeA], shapes[shapeB]);
     const std::uint32_t ends[2] = {a, b};
     for (int side = 0; side < 2; ++side) {
         BodyData& body = bodies[ends[side]];
@@ -464,11 +471,11 @@ void WorldImpl::createContact(std::uint32_t a, std::uint32_t b) {
 
 void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
     ContactData& c = contacts[index];
-    contactPairs.erase(PairSet::key(c.a, c.b));
-    const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
-    if (c.touching && dynamicPair) unlinkBodies(c.a, c.b);
+    contactPairs.erase(PairSet::key(c.shapeA(), c.shapeB()));
+    const bool dynamicPair = bodies[c.a()].type == BodyType::Dynamic && bodies[c.b()].type == BodyType::Dynamic;
+    if (c.touching && dynamicPair) unlinkBodies(c.a(), c.b());
     if (c.awakeIndex != kNullIndex) removeAwakeContact(index);
-    const std::uint32_t ends[2] = {c.a, c.b};
+    const std::uint32_t ends[2] = {c.a(), c.b()};
     for (int side = 0; side < 2; ++side) {
         BodyData& body = bodies[ends[side]];
         if (c.prev[side] != kNullIndex)
@@ -480,8 +487,8 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
         --body.contactCount;
     }
     if (wakeBodies) {
-        wakeBody(c.a);
-        wakeBody(c.b);
+        wakeBody(c.a());
+        wakeBody(c.b());
     }
     c.alive = false;
     freeContacts.push_back(index);
@@ -507,14 +514,19 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 
 void WorldImpl::updatePairs() {
     const double speculative = 4.0 * settings.linearSlop;
+    // Pairs that never make a contact (two shapes of one body, two immovable bodies) are taken and dropped here:
+    // declined pairs are asked about again every step.
     const auto wanted = [&](std::uint32_t a, std::uint32_t b) {
-        const BodyData& A = bodies[a];
-        const BodyData& B = bodies[b];
-        return !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
+        const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
+        const BodyData& A = bodies[bodyA];
+        const BodyData& B = bodies[bodyB];
+        return bodyA == bodyB || !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
     };
     broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
-    for (const auto& [a, b] : newPairs)
-        if (shouldCollide(bodies[a], bodies[b])) createContact(a, b);
+    for (const auto& [a, b] : newPairs) {
+        const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
+        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB])) createContact(a, b);
+    }
 }
 
 void WorldImpl::updateContacts() {
@@ -531,7 +543,8 @@ void WorldImpl::updateContacts() {
     awakeContactsChanged = false;
     checkedBoxRevision = broadPhase.boxRevision();
     constexpr std::size_t kPrefetchFromContacts = 8192;
-    const RefreshPass pass{contacts.data(), awakeContacts.data(), bodies.data(), &broadPhase, contactFlags.data(),
+    const RefreshPass pass{contacts.data(), awakeContacts.data(), bodies.data(), shapes.data(), &broadPhase,
+                           contactFlags.data(),
                            speculative, reuseTolerance, dt, overlapsKnown, n >= kPrefetchFromContacts,
                            &pointsChanged};
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) { refreshContacts(pass, begin, end); });
@@ -544,21 +557,21 @@ void WorldImpl::updateContacts() {
         if (contactFlags[i] != kNone) changedContacts.emplace_back(awakeContacts[i], contactFlags[i]);
     for (const auto& [index, flag] : changedContacts) {
         ContactData& c = contacts[index];
-        const ContactEvent event{c.manifold.bodyA, c.manifold.bodyB};
-        const bool dynamicPair = bodies[c.a].type == BodyType::Dynamic && bodies[c.b].type == BodyType::Dynamic;
+        const ContactEvent event{c.manifold.bodyA, c.manifold.bodyB, c.manifold.shapeA, c.manifold.shapeB};
+        const bool dynamicPair = bodies[c.a()].type == BodyType::Dynamic && bodies[c.b()].type == BodyType::Dynamic;
         if (flag == kParted || flag == kDeferred) {
             if (c.touching) events.end.push_back(event);
-            if (flag == kDeferred) broadPhase.requery(bodies[c.a].proxy);
+            if (flag == kDeferred) broadPhase.requery(shapes[c.shapeA()].proxy);
             destroyContact(index, false);
         } else if (flag == kBegan) {
             events.begin.push_back(event);
-            if (dynamicPair) linkBodies(c.a, c.b);
+            if (dynamicPair) linkBodies(c.a(), c.b());
             // Touching a sleeper wakes its island (its contacts join the awake list for the next step).
-            if (!bodies[c.a].awake() && bodies[c.a].type == BodyType::Dynamic) wakeBody(c.a);
-            if (!bodies[c.b].awake() && bodies[c.b].type == BodyType::Dynamic) wakeBody(c.b);
+            if (!bodies[c.a()].awake() && bodies[c.a()].type == BodyType::Dynamic) wakeBody(c.a());
+            if (!bodies[c.b()].awake() && bodies[c.b()].type == BodyType::Dynamic) wakeBody(c.b());
         } else if (flag == kEnded) {
             events.end.push_back(event);
-            if (dynamicPair) unlinkBodies(c.a, c.b);
+            if (dynamicPair) unlinkBodies(c.a(), c.b());
         }
     }
 }

@@ -12,6 +12,7 @@ namespace physim {
 
 struct BodyData;
 struct ContactData;
+struct ShapeData;
 class BroadPhase;
 
 /// What the narrow phase found changed about an awake contact.
@@ -22,6 +23,7 @@ struct RefreshPass {
     ContactData* contacts = nullptr;
     const std::uint32_t* awakeContacts = nullptr;
     const BodyData* bodies = nullptr;
+    const ShapeData* shapes = nullptr;
     const BroadPhase* broadPhase = nullptr;  // read only where !overlapsKnown
     std::uint8_t* flags = nullptr;           // ContactChange, kNone on entry
     double speculative = 0.0;                // m: points this far apart are kept

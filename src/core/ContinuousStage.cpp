@@ -96,7 +96,7 @@ void ContinuousStage::run(WorldImpl& w) {
     candidates_.clear();
     for (std::uint32_t i = 0; i < w.awake.size(); ++i) {
         const BodyData& b = w.bodies[w.awake[i]];
-        if (b.type != BodyType::Dynamic || b.proxy == kNullIndex) continue;  // a body that touches nothing
+        if (b.type != BodyType::Dynamic || !b.collides || b.shapeHead == kNullIndex) continue;  // touches nothing
         const Sweep s = sweepOf(w, w.awake[i]);
         const bool continuous = b.detection != CollisionDetection::Discrete;
         const double travel = (s.p1 - s.p0).norm() + std::abs(s.a1 - s.a0) * b.extent;
@@ -106,25 +106,27 @@ void ContinuousStage::run(WorldImpl& w) {
 
     // Exact pairs go to the batch (the CPU, or the GPU through the CUDA layer); the paper's sampled method is
     // solved here, one pair at a time.
-    // The batch's shape table is every body slot's shape, rebuilt only when bodies are created or destroyed: a GPU
-    // solver keeps it on the device while shapesRevision stays the same.
+    // The batch's shape table is every shape slot's geometry, rebuilt only when shapes are created or destroyed: a GPU
+    // solver keeps it on the device while shapesRevision stays the same. An entry of the batch is a shape on its
+    // body's sweep.
     if (shapeTableRevision_ != w.shapeRevision) {
         batch_.clear();
-        for (const BodyData& body : w.bodies) batch_.addShape(body.shape);
+        for (const ShapeData& shape : w.shapes) batch_.addShape(shape.geometry);
         shapeTableRevision_ = w.shapeRevision;
     } else {
         batch_.clearBodiesAndPairs();
     }
     batch_.shapesRevision = w.shapeRevision;
-    batchBody_.assign(w.bodies.size(), -1);
-    auto inBatch = [&](std::uint32_t slot, const Sweep& sweep) {
-        std::int32_t& index = batchBody_[slot];
-        if (index < 0) index = batch_.addBody(static_cast<std::int32_t>(slot), sweep);
+    batchBody_.assign(w.shapes.size(), -1);
+    auto inBatch = [&](std::uint32_t shape, const Sweep& sweep) {
+        std::int32_t& index = batchBody_[shape];
+        if (index < 0) index = batch_.addBody(static_cast<std::int32_t>(shape), sweep);
         return index;
     };
     pairCandidate_.clear();
     pairPartner_.clear();
     pairPartnerCandidate_.clear();
+    pairShapes_.clear();
     candidateOf_.assign(w.bodies.size(), -1);
     for (std::uint32_t k = 0; k < candidates_.size(); ++k)
         if (w.bodies[w.awake[candidates_[k].awakeIndex]].detection == CollisionDetection::ContinuousExact)
@@ -141,37 +143,45 @@ void ContinuousStage::run(WorldImpl& w) {
         }
         return sweeps_[slot];
     };
-    const auto& radius = batch_.shapes.boundingRadius;  // per body slot (the shape table's order)
+    const auto& radius = batch_.shapes.boundingRadius;  // per shape slot (the shape table's order), about the origin
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
         const BodyData& b = w.bodies[slot];
         const kernel::Motion mine = toKernel(c.sweep);
-        found_.clear();
-        w.broadPhase.query(sweptAabb(b.shape, c.sweep), [&](std::uint32_t other) {
-            if (other != slot) found_.push_back(other);
-            return true;
-        });
-        for (const std::uint32_t other : found_) {
-            const BodyData& o = w.bodies[other];
-            const bool still = !o.awake();
-            if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
-            if (b.detection == CollisionDetection::ContinuousSampled) {
-                const Sweep& theirs = sweepFor(other);
-                consider(c, sampledTimeOfImpact(b.shape, c.sweep, o.shape, theirs, b.precision), b.shape, o.shape,
-                         theirs, slop);
-            } else {
-                // Two exact candidates: one test serves both, asked by the one in the lower slot.
-                const std::int32_t partner = candidateOf_[other];
-                if (partner >= 0 && other < slot) continue;
-                // Most pairs of a crowd pass far apart: their answer (Separated) is known without the batch.
-                const Sweep& theirs = sweepFor(other);
-                if (kernel::boundsStayApart(mine, radius[slot], motions_[other], radius[other], batch_.tolerance))
-                    continue;
-                batch_.addPair(inBatch(slot, c.sweep), inBatch(other, theirs));
-                pairCandidate_.push_back(k);
-                pairPartner_.push_back(other);
-                pairPartnerCandidate_.push_back(partner);
+        for (std::int32_t ms = b.shapeHead; ms != kNullIndex; ms = w.shapes[static_cast<std::size_t>(ms)].next) {
+            const std::uint32_t mineShape = static_cast<std::uint32_t>(ms);
+            const Geometry& myGeometry = w.shapes[mineShape].geometry;
+            found_.clear();
+            w.broadPhase.query(sweptAabb(myGeometry, c.sweep), [&](std::uint32_t other) {
+                if (w.shapes[other].body != slot) found_.push_back(other);
+                return true;
+            });
+            for (const std::uint32_t otherShape : found_) {
+                const std::uint32_t other = w.shapes[otherShape].body;
+                const BodyData& o = w.bodies[other];
+                const Geometry& theirGeometry = w.shapes[otherShape].geometry;
+                const bool still = !o.awake();
+                if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
+                if (b.detection == CollisionDetection::ContinuousSampled) {
+                    const Sweep& theirs = sweepFor(other);
+                    consider(c, sampledTimeOfImpact(myGeometry, c.sweep, theirGeometry, theirs, b.precision),
+                             myGeometry, theirGeometry, theirs, slop);
+                } else {
+                    // Two exact candidates: one test serves both, asked by the one in the lower slot.
+                    const std::int32_t partner = candidateOf_[other];
+                    if (partner >= 0 && other < slot) continue;
+                    // Most pairs of a crowd pass far apart: their answer (Separated) is known without the batch.
+                    const Sweep& theirs = sweepFor(other);
+                    if (kernel::boundsStayApart(mine, radius[mineShape], motions_[other], radius[otherShape],
+                                                batch_.tolerance))
+                        continue;
+                    batch_.addPair(inBatch(mineShape, c.sweep), inBatch(otherShape, theirs));
+                    pairCandidate_.push_back(k);
+                    pairPartner_.push_back(other);
+                    pairPartnerCandidate_.push_back(partner);
+                    pairShapes_.emplace_back(mineShape, otherShape);
+                }
             }
         }
     }
@@ -180,13 +190,13 @@ void ContinuousStage::run(WorldImpl& w) {
         else solveOnCpu(batch_, batchResult_, w.executor);  // on the step's threads
         for (std::size_t p = 0; p < pairCandidate_.size(); ++p) {
             Candidate& c = candidates_[pairCandidate_[p]];
-            const BodyData& mine = w.bodies[w.awake[c.awakeIndex]];
-            const BodyData& o = w.bodies[pairPartner_[p]];
+            const Geometry& mine = w.shapes[pairShapes_[p].first].geometry;
+            const Geometry& theirs = w.shapes[pairShapes_[p].second].geometry;
             const ToiResult r = batchResult_.toi(p);
-            consider(c, r, mine.shape, o.shape, sweeps_[pairPartner_[p]], slop);
+            consider(c, r, mine, theirs, sweeps_[pairPartner_[p]], slop);
             if (pairPartnerCandidate_[p] >= 0) {
                 Candidate& d = candidates_[static_cast<std::size_t>(pairPartnerCandidate_[p])];
-                consider(d, r, o.shape, mine.shape, c.sweep, slop);
+                consider(d, r, theirs, mine, c.sweep, slop);
             }
         }
     }
@@ -200,7 +210,7 @@ void ContinuousStage::run(WorldImpl& w) {
         b.xf = c.sweep.at(c.t);
         b.angle = c.sweep.angleAt(c.t);
         b.center = b.xf.apply(b.localCenter);
-        b.aabb = computeAabb(b.shape, b.xf);
+        w.updateBoxes(b);
         if (w.proxyOutgrown(b)) w.solver.deferProxy(c.awakeIndex);  // moved once, after this stage
     }
 }

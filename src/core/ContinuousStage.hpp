@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace physim {
@@ -58,10 +59,11 @@ private:
     ContinuousBatch batch_;
     ContinuousBatchResult batchResult_;
     std::vector<std::uint32_t> pairCandidate_;
-    std::vector<std::uint32_t> pairPartner_;
+    std::vector<std::uint32_t> pairPartner_;          // per batch pair: the other body's slot
     std::vector<std::int32_t> pairPartnerCandidate_;  // per batch pair: the partner's candidate index, or -1
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairShapes_;  // per batch pair: the shape slots, mine first
     std::vector<std::int32_t> candidateOf_;           // per body slot: its exact candidate's index, or -1
-    std::vector<std::int32_t> batchBody_;      // per body slot: its index in the batch this run, or -1
+    std::vector<std::int32_t> batchBody_;      // per shape slot: its entry (the shape on its body's sweep) this run
     std::vector<Sweep> sweeps_;                // per body slot: its sweep this run, where sweepMade_ says so
     std::vector<kernel::Motion> motions_;      // the same for the kernel
     std::vector<std::uint8_t> sweepMade_;

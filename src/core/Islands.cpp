@@ -20,7 +20,7 @@ void forEachLinked(const WorldImpl& w, std::uint32_t slot, F&& f) {
     for (std::int32_t e = w.bodies[slot].contactHead; e != kNullIndex;) {
         const ContactData& c = w.contacts[static_cast<std::size_t>(e >> 1)];
         const int side = e & 1;
-        const std::uint32_t other = side == 0 ? c.b : c.a;
+        const std::uint32_t other = side == 0 ? c.b() : c.a();
         if (c.touching && w.bodies[other].type == BodyType::Dynamic) f(other);
         e = c.next[side];
     }
@@ -166,7 +166,7 @@ void WorldImpl::sleepIsland(std::uint32_t index) {
         for (std::int32_t e = bodies[static_cast<std::size_t>(s)].contactHead; e != kNullIndex;) {
             const std::uint32_t c = static_cast<std::uint32_t>(e >> 1);
             const ContactData& contact = contacts[c];
-            if (contact.awakeIndex != kNullIndex && !bodies[contact.a].awake() && !bodies[contact.b].awake())
+            if (contact.awakeIndex != kNullIndex && !bodies[contact.a()].awake() && !bodies[contact.b()].awake())
                 removeAwakeContact(c);
             e = contact.next[e & 1];
         }
@@ -222,8 +222,8 @@ void WorldImpl::updateSleep() {
     for (const std::uint32_t c : awakeContacts) {
         const ContactData& contact = contacts[c];
         if (!contact.touching) continue;
-        const BodyData& A = bodies[contact.a];
-        const BodyData& B = bodies[contact.b];
+        const BodyData& A = bodies[contact.a()];
+        const BodyData& B = bodies[contact.b()];
         auto moving = [](const BodyData& k) {
             return k.type == BodyType::Kinematic && (k.v != Vec2::Zero() || k.w != 0.0);
         };

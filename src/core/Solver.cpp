@@ -189,8 +189,8 @@ void Solver::solve(WorldImpl& w) {
                 const int point = rowImpact_[b * kLanes + lane];
                 if (point < 0) continue;
                 const Manifold& m = w.contacts[graph_.rowContacts[graph_.blockRows[b].first + lane].contact].manifold;
-                w.events.impacts.push_back(
-                    {m.bodyA, m.bodyB, m.points[point].point, m.normal, rowImpactSpeed_[b * kLanes + lane]});
+                w.events.impacts.push_back({m.bodyA, m.bodyB, m.shapeA, m.shapeB, m.points[point].point, m.normal,
+                                            rowImpactSpeed_[b * kLanes + lane]});
             }
     }
 
@@ -201,7 +201,7 @@ void Solver::solve(WorldImpl& w) {
         const BodyData& b = w.bodies[sims_[i].body];
         // The Continuous stage may put this body back: its proxy moves after that stage, once (bit 2).
         if ((enlarged_[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged_[i] |= 4;
-        else w.moveProxy(b);
+        else w.moveProxies(b);
     }
 }
 
@@ -222,9 +222,6 @@ void Solver::startBody(WorldImpl& w, std::size_t i) {
     sim.angularAcceleration = dynamic ? b.invInertia * b.torque : 0.0;
     sim.invMass = dynamic ? b.invMass : 0.0;
     sim.invInertia = dynamic ? b.invInertia : 0.0;
-    sim.restitution = b.restitution;
-    sim.staticFriction = b.staticFriction;
-    sim.dynamicFriction = b.dynamicFriction;
     sim.body = w.awake[i];
     sim.dynamic = dynamic;
     sim.turns = rowSide(b).turns;
@@ -244,7 +241,7 @@ void Solver::finishBody(WorldImpl& w, std::size_t i) {
     b.xf.p = b.center - b.xf.q.apply(b.localCenter);
     b.force.setZero();
     b.torque = 0.0;
-    b.aabb = computeAabb(b.shape, b.xf);
+    w.updateBoxes(b);
     if (w.settings.enableSleep && b.canSleep() && sim.dynamic && b.v.norm() <= w.settings.sleepLinearTolerance &&
         std::abs(b.w) <= w.settings.sleepAngularTolerance)
         b.sleepTime += w.dt;
@@ -253,7 +250,7 @@ void Solver::finishBody(WorldImpl& w, std::size_t i) {
     // Its proxy must move (bit 0); it moved far for its size this step (bit 1: the Continuous stage's).
     const double travel = s.dp.norm() + std::abs(s.dAngle) * b.extent;
     enlarged_[i] = static_cast<std::uint8_t>(
-        (w.proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.proxy != kNullIndex && travel > 0.5 * b.coreRadius ? 2 : 0));
+        (w.proxyOutgrown(b) ? 1 : 0) | (sim.dynamic && b.collides && travel > 0.5 * b.coreRadius ? 2 : 0));
 }
 
 std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int worker) {
@@ -498,8 +495,10 @@ void Solver::moveDeferredProxies(WorldImpl& w) {
     for (std::size_t i = 0; i < enlarged_.size(); ++i) {
         const BodyData& b = w.bodies[sims_[i].body];
         if (!(enlarged_[i] & 4) || !w.proxyOutgrown(b)) continue;
-        deferredKeys_.push_back(b.proxy);
-        deferredBoxes_.push_back(w.proxyBox(b, kAabbMargin));
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
+            deferredKeys_.push_back(w.shapes[static_cast<std::size_t>(s)].proxy);
+            deferredBoxes_.push_back(w.proxyBox(b, w.shapes[static_cast<std::size_t>(s)].aabb, kAabbMargin));
+        }
     }
     w.broadPhase.moveProxies(deferredKeys_, deferredBoxes_);  // a crowd of fast bodies rebuilds the tree once
 }

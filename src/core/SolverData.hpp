@@ -89,7 +89,6 @@ struct alignas(64) SolverBodySim {
     double angle0 = 0.0;           // rad
     double invMass = 0.0;          // 1/kg; 0 unless dynamic
     double invInertia = 0.0;       // 0 unless dynamic
-    double restitution = 0.0, staticFriction = 0.0, dynamicFriction = 0.0;
 };
 static_assert(sizeof(SolverBodySim) == 128, "two cache lines");
 

@@ -17,6 +17,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace physim {
 namespace {
@@ -58,12 +59,14 @@ void validate(const BodyDef& def) {
     requireNonNegative("body dynamic friction", def.dynamicFriction);
     requireFinite("body gravity scale", def.gravityScale);
     validate(def.drag);
-    validate(def.shape);
+    if (def.withShape) validate(def.shape);
+    else if (def.type == BodyType::Dynamic)
+        throw std::invalid_argument("physim: a dynamic body needs a shape (BodyDef::withShape is false)");
     checkPrecision(def.precision);
 }
 
-// Mass and inertia of a dynamic body with `mass` kg spread over its shape, by the one mass rule (MassData.hpp).
-// Throws (naming the value) unless the mass and the inertia come out positive and finite.
+}  // namespace
+
 void assignMass(BodyData& b, double mass) {
     requireInRange("body mass (kg)", mass, kMinMass, kMaxMass);
     const MassData data = massDataForMass(b.unitMass, mass);
@@ -78,17 +81,13 @@ void assignMass(BodyData& b, double mass) {
 
 void clearMass(BodyData& b) { b.mass = b.inertia = b.invMass = b.invInertia = 0.0; }
 
-// Largest distance from the centre of mass to the shape (how far a point moves per radian of turn).
 double extentAbout(const Geometry& g, const Vec2& center) {
     return withKind(g, [&](auto kind, const auto& s) { return kind.extentAbout(s, center); });
 }
 
-// Radius (m) of the largest circle about the shape's centroid inside it (for a circle, its radius).
 double coreRadius(const Geometry& g) {
     return withKind(g, [](auto kind, const auto& s) { return kind.coreRadius(s); });
 }
-
-}  // namespace
 
 void validate(const WorldSettings& s) {
     requireFinite("gravity", s.gravity);
@@ -122,8 +121,8 @@ void WorldImpl::requireNotStepping(const char* call) const {
 
 void WorldImpl::wakeOverlapping(const Aabb& box) {
     found.clear();
-    broadPhase.query(box, [&](std::uint32_t body) {
-        found.push_back(body);
+    broadPhase.query(box, [&](std::uint32_t shape) {
+        found.push_back(shapes[shape].body);
         return true;
     });
     std::sort(found.begin(), found.end());
@@ -131,8 +130,8 @@ void WorldImpl::wakeOverlapping(const Aabb& box) {
         if (bodies[body].type == BodyType::Dynamic && !bodies[body].awake()) wakeBody(body);
 }
 
-Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
-    if (b.type == BodyType::Static) return b.aabb.fattened(margin);
+Aabb WorldImpl::proxyBox(const BodyData& b, const Aabb& aabb, double margin) const {
+    if (b.type == BodyType::Static) return aabb.fattened(margin);
     // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
     // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
     // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
@@ -144,9 +143,9 @@ Aabb WorldImpl::proxyBox(const BodyData& b, double margin) const {
         const double length = travel.norm();
         if (length > b.extent) travel *= b.extent / length;
     }
-    Aabb box = b.aabb;
-    box.lower = box.lower.cwiseMin(b.aabb.lower + travel);
-    box.upper = box.upper.cwiseMax(b.aabb.upper + travel);
+    Aabb box = aabb;
+    box.lower = box.lower.cwiseMin(aabb.lower + travel);
+    box.upper = box.upper.cwiseMax(aabb.upper + travel);
     return box.fattened(margin + turn);
 }
 
@@ -192,23 +191,33 @@ BodyId World::createBody(const BodyDef& def) {
     WorldImpl& w = *impl_;
     w.requireNotStepping("createBody");
     BodyData massed;  // the mass is checked before a slot is taken, so a refused body leaves no trace
-    massed.unitMass = computeMassProperties(def.shape);
+    if (def.withShape) massed.unitMass = computeMassProperties(def.shape);
     massed.fixedRotation = def.fixedRotation;
     if (def.type == BodyType::Dynamic) assignMass(massed, def.density * massed.unitMass.area);
     const std::uint32_t index = takeSlot(w.bodies, w.freeBodies);
     BodyData& b = w.bodies[index];
     b.type = def.type;
-    b.shape = def.shape;
+    if (def.withShape) {
+        const std::uint32_t s = takeSlot(w.shapes, w.freeShapes);
+        ShapeData& shape = w.shapes[s];
+        shape.body = index;
+        shape.geometry = def.shape;
+        shape.unitMass = massed.unitMass;
+        shape.density = def.density;
+        shape.restitution = def.restitution;
+        shape.staticFriction = def.staticFriction;
+        shape.dynamicFriction = def.dynamicFriction;
+        b.shapeHead = b.shapeTail = static_cast<std::int32_t>(s);
+        b.shapeCount = 1;
+        ++w.shapeLiveCount;
+        b.extent = extentAbout(def.shape, massed.unitMass.centroid);
+        b.coreRadius = coreRadius(def.shape);
+    }
     b.unitMass = massed.unitMass;
     b.localCenter = b.unitMass.centroid;
-    b.extent = extentAbout(def.shape, b.localCenter);
-    b.coreRadius = coreRadius(def.shape);
     b.xf = {def.position, Rotation::fromAngle(def.angle)};
     b.angle = def.angle;
     b.center = b.xf.apply(b.localCenter);
-    b.restitution = def.restitution;
-    b.staticFriction = def.staticFriction;
-    b.dynamicFriction = def.dynamicFriction;
     b.useGravity = def.useGravity;
     b.gravityScale = def.gravityScale;
     b.fixedRotation = def.fixedRotation;
@@ -221,12 +230,13 @@ BodyId World::createBody(const BodyDef& def) {
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
     if (def.type == BodyType::Dynamic) assignMass(b, massed.mass);
-    b.aabb = computeAabb(b.shape, b.xf);
-    if (def.collides) b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, def.type == BodyType::Static);
+    w.updateBoxes(b);
+    b.collides = def.collides;
+    if (def.collides) w.createProxies(index);
     w.addAwakeBody(index);
-    if (def.type == BodyType::Static && def.collides) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
+    if (def.type == BodyType::Static) w.wakeShapesOverlapping(index);
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
-    w.effects.drag.set(index, def.drag, b.shape);
+    w.effects.drag.set(index, def.drag, w.meanWidth(index));
     if (def.attracting) {
         b.attracting = true;
         w.effects.gravitation.add(index);
@@ -257,8 +267,14 @@ void World::destroyBody(BodyId id) {
     BodyData& b = w.bodies[index];
     w.removeFromIsland(index);
     w.removeAwakeBody(index);
-    if (b.proxy != kNullIndex) w.broadPhase.destroyProxy(b.proxy);
-    b.proxy = kNullIndex;
+    w.destroyProxies(index);
+    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
+        w.shapes[static_cast<std::size_t>(s)].alive = false;
+        w.freeShapes.push_back(static_cast<std::uint32_t>(s));
+        --w.shapeLiveCount;
+    }
+    b.shapeHead = b.shapeTail = kNullIndex;
+    b.shapeCount = 0;
     w.effects.bodyDestroyed(index);
     --w.liveCount;
     if (b.type == BodyType::Dynamic) --w.dynamicCount;
@@ -307,7 +323,7 @@ BodyData& World::wake(BodyId id, const char* call) {
 }
 
 BodyType World::type(BodyId id) const { return at(id).type; }
-const Geometry& World::shape(BodyId id) const { return at(id).shape; }
+const Geometry& World::shape(BodyId id) const { return impl_->shapes[firstShape(id)].geometry; }
 Transform World::transform(BodyId id) const { return at(id).xf; }
 Vec2 World::position(BodyId id) const { return at(id).xf.p; }
 double World::angle(BodyId id) const { return at(id).angle; }
@@ -324,9 +340,9 @@ double World::mass(BodyId id) const { return at(id).mass; }
 double World::inverseMass(BodyId id) const { return at(id).invMass; }
 double World::inertia(BodyId id) const { return at(id).inertia; }
 double World::inverseInertia(BodyId id) const { return at(id).invInertia; }
-double World::restitution(BodyId id) const { return at(id).restitution; }
-double World::staticFriction(BodyId id) const { return at(id).staticFriction; }
-double World::dynamicFriction(BodyId id) const { return at(id).dynamicFriction; }
+double World::restitution(BodyId id) const { return impl_->shapes[firstShape(id)].restitution; }
+double World::staticFriction(BodyId id) const { return impl_->shapes[firstShape(id)].staticFriction; }
+double World::dynamicFriction(BodyId id) const { return impl_->shapes[firstShape(id)].dynamicFriction; }
 bool World::useGravity(BodyId id) const { return at(id).useGravity; }
 
 void World::setTransform(BodyId id, const Vec2& position, double angle) {
@@ -336,10 +352,9 @@ void World::setTransform(BodyId id, const Vec2& position, double angle) {
     b.xf = {position, Rotation::fromAngle(angle)};
     b.angle = angle;
     b.center = b.xf.apply(b.localCenter);
-    b.aabb = computeAabb(b.shape, b.xf);
-    if (b.proxy == kNullIndex) return;
-    impl_->broadPhase.moveProxy(b.proxy, impl_->proxyBox(b, kAabbMargin));
-    if (b.type == BodyType::Static) impl_->wakeOverlapping(impl_->broadPhase.fatBox(b.proxy));
+    impl_->updateBoxes(b);
+    impl_->moveProxies(b);
+    if (b.type == BodyType::Static) impl_->wakeShapesOverlapping(id.index);
 }
 
 void World::setVelocity(BodyId id, const Vec2& velocity) {
@@ -360,10 +375,9 @@ void World::setMaterial(BodyId id, double restitution, double staticFriction, do
     requireInRange("body restitution", restitution, 0.0, 1.0);
     requireNonNegative("body static friction", staticFriction);
     requireNonNegative("body dynamic friction", dynamicFriction);
-    BodyData& b = wake(id, "setMaterial");
-    b.restitution = restitution;
-    b.staticFriction = staticFriction;
-    b.dynamicFriction = dynamicFriction;
+    const BodyData& b = wake(id, "setMaterial");
+    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = impl_->shapes[static_cast<std::size_t>(s)].next)
+        impl_->setShapeMaterial(static_cast<std::uint32_t>(s), restitution, staticFriction, dynamicFriction);
 }
 
 void World::setType(BodyId id, BodyType type) {
@@ -399,13 +413,16 @@ void World::setType(BodyId id, BodyType type) {
         b.w = 0.0;
     }
     if (type == BodyType::Dynamic) ++w.dynamicCount;
-    if (b.proxy == kNullIndex) {
+    if (!b.collides) {
         // touches nothing: no proxy to rebuild
     } else if (wasStatic != (type == BodyType::Static)) {
-        w.broadPhase.destroyProxy(b.proxy);
-        b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, type == BodyType::Static);
+        w.destroyProxies(index);
+        w.createProxies(index);
     } else {
-        w.broadPhase.moveProxy(b.proxy, w.broadPhase.fatBox(b.proxy));  // find its pairs again
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
+            const std::int32_t proxy = w.shapes[static_cast<std::size_t>(s)].proxy;
+            w.broadPhase.moveProxy(proxy, w.broadPhase.fatBox(proxy));  // find its pairs again
+        }
     }
     w.addAwakeBody(index);
     if (type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
@@ -501,7 +518,8 @@ const std::vector<Manifold>& World::contacts() const {
         for (const std::uint32_t c : w.awakeContacts)
             if (w.contacts[c].touching) w.touchingManifolds.push_back(w.contacts[c].manifold);
         std::sort(w.touchingManifolds.begin(), w.touchingManifolds.end(), [](const Manifold& x, const Manifold& y) {
-            return std::make_pair(x.bodyA.index, x.bodyB.index) < std::make_pair(y.bodyA.index, y.bodyB.index);
+            return std::make_tuple(x.bodyA.index, x.bodyB.index, x.shapeA.index, x.shapeB.index) <
+                   std::make_tuple(y.bodyA.index, y.bodyB.index, y.shapeA.index, y.shapeB.index);
         });
         w.touchingValid = true;
     }
@@ -538,7 +556,7 @@ void World::step(double dt) {
     // Bodies made or changed since the last step got proxies before dt was known: grow them for this step's motion.
     for (const std::uint32_t slot : w.touched) {
         const BodyData& b = w.bodies[slot];
-        if (b.alive && b.movable() && w.proxyOutgrown(b)) w.moveProxy(b);
+        if (b.alive && b.movable() && w.proxyOutgrown(b)) w.moveProxies(b);
     }
     w.touched.clear();
     // Pairs need a moved proxy and an awake body: a static body moved next to sleepers wakes them itself.

@@ -20,8 +20,8 @@ double World::gravityScale(BodyId id) const { return at(id).gravityScale; }
 
 void World::setDrag(BodyId id, const DragDef& drag) {
     physim::validate(drag);
-    const BodyData& b = wake(id, "setDrag");
-    impl_->effects.drag.set(id.index, drag, b.shape);
+    wake(id, "setDrag");
+    impl_->effects.drag.set(id.index, drag, impl_->meanWidth(id.index));
 }
 
 DragDef World::drag(BodyId id) const {
@@ -32,23 +32,23 @@ DragDef World::drag(BodyId id) const {
 void World::setCollides(BodyId id, bool collides) {
     BodyData& b = mutableBody(id, "setCollides");
     WorldImpl& w = *impl_;
-    if (collides == (b.proxy != kNullIndex)) return;
+    if (collides == b.collides) return;
     const std::uint32_t index = id.index;
+    b.collides = collides;
     if (!collides) {
         // Its contacts go; whatever they held wakes.
         while (w.bodies[index].contactHead != kNullIndex)
             w.destroyContact(static_cast<std::uint32_t>(w.bodies[index].contactHead >> 1), true);
-        w.broadPhase.destroyProxy(w.bodies[index].proxy);
-        w.bodies[index].proxy = kNullIndex;
+        w.destroyProxies(index);
         w.wakeBody(index);
         return;
     }
-    b.proxy = w.broadPhase.createProxy(w.proxyBox(b, kAabbMargin), index, b.type == BodyType::Static);
+    w.createProxies(index);
     w.wakeBody(index);
-    if (b.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(b.proxy));
+    if (b.type == BodyType::Static) w.wakeShapesOverlapping(index);
 }
 
-bool World::collides(BodyId id) const { return at(id).proxy != kNullIndex; }
+bool World::collides(BodyId id) const { return at(id).collides; }
 
 void World::setAttracting(BodyId id, bool attracting) {
     BodyData& b = wake(id, "setAttracting");

@@ -2,6 +2,7 @@
 // Everything a World holds, as plain data shared by the step's stages (one file each). Internal.
 //
 //   World.cpp          the public API: bodies, settings, step()
+//   WorldShapes.cpp    the public API of shapes: several per body, their mass, chains
 //   BroadPhase.cpp     dynamic trees, new candidate pairs
 //   Contacts.cpp       persistent contacts: creation, the narrow-phase update, begin / end
 //   Islands.cpp        persistent islands: merging, splitting, sleeping and waking
@@ -21,6 +22,7 @@
 #include "IslandData.hpp"
 #include "JointData.hpp"
 #include "PairSet.hpp"
+#include "ShapeData.hpp"
 #include "Solver.hpp"
 #include "effects/Effects.hpp"
 
@@ -50,14 +52,19 @@ struct WorldImpl {
     std::size_t liveCount = 0;
     std::size_t dynamicCount = 0;
     std::size_t continuousCount = 0;  // bodies whose detection is not Discrete
-    std::uint64_t shapeRevision = 1;  // changes whenever a body slot's shape may have (create, destroy)
+    std::uint64_t shapeRevision = 1;  // changes whenever a shape slot's geometry may have (create, destroy)
     std::vector<std::uint32_t> awake;   // awake movable bodies (dynamic and kinematic): the solver's bodies
 
-    // Contacts: one slot per overlapping pair of proxies.
+    // Shapes: one slot per id, as bodies. A world whose bodies have one shape each gives body and shape the same slot.
+    std::vector<ShapeData> shapes;
+    std::vector<std::uint32_t> freeShapes;
+    std::size_t shapeLiveCount = 0;
+
+    // Contacts: one slot per overlapping pair of proxies (shapes of two bodies).
     std::vector<ContactData> contacts;
     std::vector<std::uint32_t> freeContacts;
     std::vector<std::uint32_t> awakeContacts;  // contacts with an awake body: the narrow phase's work list
-    PairSet contactPairs;                      // (a, b) of every contact, a < b
+    PairSet contactPairs;                      // shape slots (a, b) of every contact, a < b
 
     // Joints and islands.
     std::vector<JointData> joints;
@@ -73,7 +80,7 @@ struct WorldImpl {
     Effects effects;
 
     // Step scratch, kept between steps so a running scene allocates nothing.
-    std::vector<BodyPair> newPairs;
+    std::vector<ShapePair> newPairs;
     std::vector<std::uint8_t> contactFlags;      // per awake contact: what the narrow phase found changed
     std::vector<std::pair<std::uint32_t, std::uint8_t>> changedContacts;
     // The narrow phase tests each awake contact's proxies for overlap only when a box or the awake contacts changed
@@ -103,18 +110,47 @@ struct WorldImpl {
     void wakeOverlapping(const Aabb& box);  // sleeping bodies whose proxies overlap the box wake
     /// Takes a joint slot for `data`, links it to its bodies (and their islands) and wakes them.
     std::uint32_t addJoint(const JointData& data);
-    /// The box a proxy needs at the body's pose and velocity (the next step's motion and turn), grown by margin.
-    Aabb proxyBox(const BodyData& b, double margin) const;
-    /// A body that collides (has a proxy) whose motion left its proxy's box.
+    /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity (the next
+    /// step's motion and turn), grown by margin.
+    Aabb proxyBox(const BodyData& b, const Aabb& box, double margin) const;
+    /// A body that collides (has proxies) whose motion left one of its shapes' proxy boxes.
     bool proxyOutgrown(const BodyData& b) const {
-        return b.proxy != kNullIndex && !broadPhase.fatBox(b.proxy).contains(proxyBox(b, 0.0));
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+            const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+            if (shape.proxy != kNullIndex && !broadPhase.fatBox(shape.proxy).contains(proxyBox(b, shape.aabb, 0.0)))
+                return true;
+        }
+        return false;
     }
-    void moveProxy(const BodyData& b) { broadPhase.moveProxy(b.proxy, proxyBox(b, kAabbMargin)); }
+    /// Every shape's proxy gets the box the body's motion needs.
+    void moveProxies(const BodyData& b) {
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+            const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+            if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb, kAabbMargin));
+        }
+    }
+    /// The tight boxes of the body's shapes, and of the body, at its pose.
+    void updateBoxes(BodyData& b);
+    /// Proxies for every shape of the body (it collides), or none; a static body's wake the sleepers they overlap.
+    void createProxies(std::uint32_t body);
+    void destroyProxies(std::uint32_t body);
+    /// The contacts of the body that involve the shape (by slot), for materials and destruction.
+    template <class F>
+    void forEachContactOfShape(std::uint32_t shape, F&& f);
+    /// Mass, centre of mass, inertia, extent and core radius from the body's shapes (a dynamic body's mass throws,
+    /// naming the value, unless positive, the body unchanged); the origin stays.
+    void updateMass(std::uint32_t body);
+    /// A static body's shapes wake the sleepers their proxies overlap.
+    void wakeShapesOverlapping(std::uint32_t body);
+    /// The body's mean width over all directions, m (drag): its shape's, or that of the convex hull of its shapes.
+    double meanWidth(std::uint32_t body) const;
+    /// Sets a shape's material and mixes it again into its contacts.
+    void setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction, double dynamicFriction);
 
     // Contacts.cpp
-    void createContact(std::uint32_t a, std::uint32_t b);
+    void createContact(std::uint32_t shapeA, std::uint32_t shapeB);
     void destroyContact(std::uint32_t contact, bool wakeBodies);
-    bool contactExists(std::uint32_t a, std::uint32_t b) const;
+    bool contactExists(std::uint32_t shapeA, std::uint32_t shapeB) const;
     void updatePairs();      // broad phase's new pairs become contacts
     void updateContacts();   // the narrow phase over the awake contacts
     void addAwakeContact(std::uint32_t contact);
@@ -134,5 +170,25 @@ struct WorldImpl {
     void splitIsland(std::uint32_t island);
     void sleepIsland(std::uint32_t island);
 };
+
+// The mass rules of a body over its shapes (WorldShapes.cpp).
+/// Mass and inertia of a dynamic body with `mass` kg spread over its shapes, by the one mass rule (MassData.hpp).
+/// Throws (naming the value) unless the mass and the inertia come out positive and finite.
+void assignMass(BodyData& b, double mass);
+void clearMass(BodyData& b);
+/// Largest distance from `center` to the shape (how far a point moves per radian of turn about it), m.
+double extentAbout(const Geometry& g, const Vec2& center);
+/// Radius (m) of the largest circle about the shape's centroid inside it (for a circle, its radius).
+double coreRadius(const Geometry& g);
+
+template <class F>
+void WorldImpl::forEachContactOfShape(std::uint32_t shape, F&& f) {
+    const BodyData& b = bodies[shapes[shape].body];
+    for (std::int32_t key = b.contactHead; key != kNullIndex;) {
+        const std::uint32_t c = static_cast<std::uint32_t>(key >> 1);
+        key = contacts[c].next[key & 1];  // f may destroy the contact
+        if (contacts[c].shapeA() == shape || contacts[c].shapeB() == shape) f(c);
+    }
+}
 
 }  // namespace physim

@@ -22,10 +22,10 @@ TEST(BroadPhase, KnownPairsAreNotReportedAgain) {
     bp.createProxy(box(0.9, 0, 2, 1), 2, true);  // static: meets both movable ones
     PairSet known;
     known.insert(PairSet::key(0, 2));
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     const auto takeAll = [](std::uint32_t, std::uint32_t) { return true; };
     bp.findNewPairs(pairs, known, takeAll, executor);
-    EXPECT_EQ(pairs, (std::vector<BodyPair>{{0, 1}, {1, 2}}));
+    EXPECT_EQ(pairs, (std::vector<ShapePair>{{0, 1}, {1, 2}}));
     EXPECT_EQ(bp.moveCount(), 0u);
 }
 
@@ -36,7 +36,7 @@ TEST(BroadPhase, ADeclinedPairIsOfferedAgainUntilTaken) {
     bp.createProxy(box(0.5, 0, 1.5, 1), 1, false);
     bp.createProxy(box(5, 5, 6, 6), 2, false);  // overlaps nothing
     const PairSet known;
-    std::vector<BodyPair> pairs;
+    std::vector<ShapePair> pairs;
     int asked = 0;
     const auto decline = [&](std::uint32_t, std::uint32_t) {
         ++asked;
@@ -50,7 +50,7 @@ TEST(BroadPhase, ADeclinedPairIsOfferedAgainUntilTaken) {
     EXPECT_EQ(asked, 2);
     const auto take = [](std::uint32_t, std::uint32_t) { return true; };
     bp.findNewPairs(pairs, known, take, executor);
-    EXPECT_EQ(pairs, (std::vector<BodyPair>{{0, 1}}));
+    EXPECT_EQ(pairs, (std::vector<ShapePair>{{0, 1}}));
     EXPECT_EQ(bp.moveCount(), 0u);
     bp.findNewPairs(pairs, known, take, executor);
     EXPECT_TRUE(pairs.empty()) << "taken, and nothing moved since";
@@ -66,7 +66,7 @@ TEST(BroadPhase, ProxiesMovedTogetherAreQueriedAsIfMovedAlone) {
         for (std::uint32_t i = 0; i < 40; ++i) keys.push_back(bp.createProxy(box(2.0 * i, 0, 2.0 * i + 1, 1), i, false));
         const PairSet known;
         const auto take = [](std::uint32_t, std::uint32_t) { return true; };
-        std::vector<BodyPair> pairs;
+        std::vector<ShapePair> pairs;
         bp.findNewPairs(pairs, known, take, executor);
         ASSERT_TRUE(pairs.empty());
         std::vector<std::int32_t> moving;
@@ -78,7 +78,7 @@ TEST(BroadPhase, ProxiesMovedTogetherAreQueriedAsIfMovedAlone) {
         bp.moveProxies(moving, boxes);
         EXPECT_EQ(bp.moveCount(), moving.size());
         bp.findNewPairs(pairs, known, take, executor);
-        std::vector<BodyPair> expected;
+        std::vector<ShapePair> expected;
         for (std::uint32_t i = 0; i + 1 < 40 && i < moving.size(); ++i) expected.emplace_back(i, i + 1);
         EXPECT_EQ(pairs, expected) << (all ? "all moved" : "one moved");
         EXPECT_EQ(bp.fatBox(keys[0]).upper, Vec2(2.5, 1.0));

@@ -334,21 +334,22 @@ TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
             s.acceleration = {u(rng), -10.0 + u(rng)};
             s.invMass = 1.0 + 0.5 * u(rng);
             s.invInertia = s.turns ? 2.0 + u(rng) : 0.0;
-            s.restitution = u(rng) > 0.0 ? 0.5 : 0.0;
-            s.staticFriction = u(rng) > -0.5 ? 0.6 : 0.0;
-            s.dynamicFriction = 0.5 * s.staticFriction;
         }
         std::vector<BodyData> records(9);
         records[8].type = BodyType::Static;
         records[8].center = {u(rng), u(rng)};
-        records[8].staticFriction = 0.8;
         std::vector<ContactData> contacts(kLanes);
         std::vector<RowRef> refs(kLanes);
         for (int k = 0; k < kLanes; ++k) {
             ContactData& c = contacts[k];
             const bool onStatic = (trial + k) % 3 == 0;
-            c.a = onStatic ? 8 : static_cast<std::uint32_t>(2 * k);
-            c.b = static_cast<std::uint32_t>(2 * k + 1);
+            c.manifold.bodyA.index = onStatic ? 8 : static_cast<std::uint32_t>(2 * k);
+            c.manifold.bodyB.index = static_cast<std::uint32_t>(2 * k + 1);
+            // The pair's material, as mixed from two shapes' (ContactData.hpp).
+            c.material.restitution = u(rng) > 0.0 ? 0.5 : 0.0;
+            c.material.staticFriction = u(rng) > -0.5 ? 0.6 : 0.0;
+            c.material.dynamicFriction = 0.5 * c.material.staticFriction;
+            c.keepsPush = c.material.restitution > 0.0;
             refs[k] = {static_cast<std::uint32_t>(k), onStatic ? kNullIndex : 2 * k, 2 * k + 1};
             const double angle = 3.14159265358979 * u(rng);
             c.manifold.normal = {std::cos(angle), std::sin(angle)};

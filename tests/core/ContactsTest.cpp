@@ -157,11 +157,13 @@ TEST(Contacts, EveryBuildOfTheNarrowPhaseGivesTheSameBits) {
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     std::vector<BodyData> bodies(60);
+    std::vector<ShapeData> shapes(bodies.size());  // body i's one shape is shape i
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         BodyData& b = bodies[i];
         const bool circle = i % 3 == 0;
         const double hx = 0.3 + 0.2 * std::abs(u(rng)), hy = 0.2 + 0.2 * std::abs(u(rng));
-        b.shape = circle ? Geometry(makeCircle(hx)) : Geometry(makeBox(hx, hy));
+        shapes[i].geometry = circle ? Geometry(makeCircle(hx)) : Geometry(makeBox(hx, hy));
+        shapes[i].body = static_cast<std::uint32_t>(i);
         b.extent = circle ? hx : std::hypot(hx, hy);
         b.type = i % 7 == 0 ? BodyType::Static : BodyType::Dynamic;
         b.awakeIndex = b.type == BodyType::Dynamic ? static_cast<std::int32_t>(i) : kNullIndex;
@@ -178,8 +180,8 @@ TEST(Contacts, EveryBuildOfTheNarrowPhaseGivesTheSameBits) {
         for (std::uint32_t b = a + 1; b < bodies.size(); ++b)
             if (bodies[a].type == BodyType::Dynamic || bodies[b].type == BodyType::Dynamic) {
                 ContactData c;
-                c.a = a;
-                c.b = b;
+                c.manifold.bodyA.index = c.manifold.shapeA.index = a;
+                c.manifold.bodyB.index = c.manifold.shapeB.index = b;
                 contacts.push_back(c);
             }
     std::vector<std::uint32_t> awake(contacts.size());
@@ -196,7 +198,7 @@ TEST(Contacts, EveryBuildOfTheNarrowPhaseGivesTheSameBits) {
         for (std::size_t c = 0; c < copyCount; ++c) {
             std::atomic<bool> pointsChanged{false};
             // Every other build also asks for records ahead, which must change nothing.
-            const RefreshPass pass{copies[c].data(), awake.data(), bodies.data(), nullptr, flags[c].data(),
+            const RefreshPass pass{copies[c].data(), awake.data(), bodies.data(), shapes.data(), nullptr, flags[c].data(),
                                    0.02, 5e-4, 1.0 / 60.0, true, c % 2 == 1, &pointsChanged};
             if (c < codes.size())
                 refreshContacts(pass, 0, contacts.size(), codes[c]);

@@ -4,6 +4,7 @@
 #include "physim/core/Drag.hpp"
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
+#include "physim/core/Shape.hpp"
 #include "physim/core/TimeOfImpact.hpp"
 
 #include <cstdint>
@@ -33,7 +34,11 @@ struct BodyDef {
     double angle = 0.0;                ///< rad, counter-clockwise
     Vec2 velocity = Vec2::Zero();      ///< m/s
     double angularVelocity = 0.0;      ///< rad/s
+    /// The body's first shape and its material (World::createShape adds more: Shape.hpp).
     Geometry shape = Circle{Vec2::Zero(), 0.5};
+    /// false: the body starts with no shape, and gets its shapes from World::createShape or createChain (ground
+    /// made of a chain); only static and kinematic bodies may have none. shape is then unused.
+    bool withShape = true;
     double density = 1.0;              ///< kg/m^2, > 0 for dynamic bodies; mass = density * area
     double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two

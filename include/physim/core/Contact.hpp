@@ -18,10 +18,12 @@ struct ContactPoint {
     std::uint32_t id = 0;        ///< feature id: the same touching features keep the same id between steps
 };
 
-/// Up to two contact points shared by one pair of bodies. The normal points from A to B.
+/// Up to two contact points shared by one pair of shapes (of two bodies). The normal points from A to B.
 struct Manifold {
     BodyId bodyA;
     BodyId bodyB;
+    ShapeId shapeA;  ///< the shape of bodyA that touches
+    ShapeId shapeB;
     Vec2 normal = Vec2::Zero();
     int pointCount = 0;
     std::array<ContactPoint, 2> points{};
@@ -32,12 +34,16 @@ struct Manifold {
 struct ContactEvent {
     BodyId bodyA;
     BodyId bodyB;
+    ShapeId shapeA;  ///< the shapes of the two bodies that touch
+    ShapeId shapeB;
 };
 
 /// A collision in the last step: the bodies met approaching faster than WorldSettings::impactSpeedThreshold.
 struct ImpactEvent {
     BodyId bodyA;
     BodyId bodyB;
+    ShapeId shapeA;
+    ShapeId shapeB;
     Vec2 point = Vec2::Zero();   ///< m, world
     Vec2 normal = Vec2::Zero();  ///< unit, from A to B
     double approachSpeed = 0.0;  ///< m/s, normal speed at which they met (> 0)

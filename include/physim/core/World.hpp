@@ -59,6 +59,7 @@ public:
     std::vector<BodyId> bodies() const;
 
     BodyType type(BodyId id) const;
+    /// The geometry of the body's first shape (its BodyDef's); throws std::invalid_argument for a body with none.
     const Geometry& shape(BodyId id) const;
     Transform transform(BodyId id) const;
     /// The body origin, m (the point its shape's coordinates are relative to).
@@ -73,7 +74,7 @@ public:
     /// Velocity of a world point (m) fixed to the body, m/s.
     Vec2 velocityAt(BodyId id, const Vec2& worldPoint) const;
     double angularVelocity(BodyId id) const;
-    /// World bounding box of the body's shape at its pose, m.
+    /// World bounding box of the body's shapes at its pose, m (a shapeless body's is its origin).
     Aabb bounds(BodyId id) const;
     double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
     double inverseMass(BodyId id) const;  ///< 1/kg; 0 when immovable
@@ -81,6 +82,7 @@ public:
     /// rotation keeps its shape's inertia; its inverse inertia is 0.
     double inertia(BodyId id) const;
     double inverseInertia(BodyId id) const;
+    /// The material of the body's first shape (each shape has its own: restitution(ShapeId) ...).
     double restitution(BodyId id) const;
     double staticFriction(BodyId id) const;
     double dynamicFriction(BodyId id) const;
@@ -90,7 +92,8 @@ public:
     void setVelocity(BodyId id, const Vec2& velocity);
     void setAngularVelocity(BodyId id, double angularVelocity);
     void setUseGravity(BodyId id, bool useGravity);
-    /// Restitution in [0, 1], friction coefficients >= 0 (throws std::invalid_argument naming a bad value).
+    /// Restitution in [0, 1], friction coefficients >= 0 (throws std::invalid_argument naming a bad value), for
+    /// every shape of the body.
     void setMaterial(BodyId id, double restitution, double staticFriction, double dynamicFriction);
     /// Sleeping (WorldSettings::enableSleep): a sleeping body is not simulated until touched by an awake body,
     /// or until a force, impulse, velocity, pose or type is set on it (each of those wakes it).
@@ -132,6 +135,30 @@ public:
     void applyLinearImpulse(BodyId id, const Vec2& impulse);
     /// Instant change of momentum (N s) at a world point (m): also changes the angular velocity.
     void applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2& worldPoint);
+
+    // --- shapes (Shape.hpp): a body may have several ------------------------------------------------
+    /// Adds a shape to the body (validated: std::invalid_argument naming a bad value, the world unchanged). A
+    /// dynamic body's mass, centre of mass and inertia are recomputed from all its shapes (a body whose mass was
+    /// set with setMass gets its shapes' mass again); its origin stays where it is. Wakes the body.
+    ShapeId createShape(BodyId body, const ShapeDef& def);
+    /// Removes a shape; its contacts end and what they held wakes. A dynamic body keeps at least one shape with mass
+    /// (std::invalid_argument otherwise).
+    void destroyShape(ShapeId id);
+    bool contains(ShapeId id) const;
+    std::size_t shapeCount() const;
+    /// The body's shapes, in the order they were added.
+    std::vector<ShapeId> shapes(BodyId body) const;
+    BodyId body(ShapeId id) const;
+    /// In the body's frame, m.
+    const Geometry& geometry(ShapeId id) const;
+    /// World bounding box of the shape at its body's pose, m.
+    Aabb bounds(ShapeId id) const;
+    double density(ShapeId id) const;
+    double restitution(ShapeId id) const;
+    double staticFriction(ShapeId id) const;
+    double dynamicFriction(ShapeId id) const;
+    /// As setMaterial(BodyId, ...), for one shape. Wakes its body.
+    void setMaterial(ShapeId id, double restitution, double staticFriction, double dynamicFriction);
 
     // --- effects (docs/effects.md): each costs nothing while no body uses it ---------------------------
     /// Finite; the body feels scale times the world's gravity (when useGravity). Wakes it.
@@ -223,6 +250,8 @@ public:
 
 private:
     const BodyData& at(BodyId id) const;
+    std::uint32_t firstShape(BodyId id) const;  // slot of the body's first shape; throws for a shapeless body
+    std::uint32_t shapeSlot(ShapeId id) const;  // checked
     BodyData& mutableBody(BodyId id, const char* call);  // checked, not during the step
     BodyData& wake(BodyId id, const char* call);         // mutableBody, and its island woken
     const JointData& joint(JointId id) const;

@@ -12,11 +12,6 @@ namespace {
 
 constexpr std::size_t kGrain = 256;
 
-// Mean width of a convex shape over all directions: perimeter / pi (Cauchy's formula), m.
-double meanWidth(const Geometry& g) {
-    return withKind(g, [](auto kind, const auto& s) { return kind.meanWidth(s); });
-}
-
 }  // namespace
 
 void validate(const DragDef& d) {
@@ -27,12 +22,12 @@ void validate(const DragDef& d) {
     requireNonNegative("drag angular coefficient", d.angular);
 }
 
-void DragEffect::set(std::uint32_t slot, const DragDef& def, const Geometry& shape) {
+void DragEffect::set(std::uint32_t slot, const DragDef& def, double shapeWidth) {
     if (isNone(def)) {
         remove(slot);
         return;
     }
-    const double width = def.width > 0.0 ? def.width : meanWidth(shape);
+    const double width = def.width > 0.0 ? def.width : shapeWidth;
     const Coefficients c{def.linear, 0.5 * def.fluidDensity * def.dragCoefficient * width, def.angular};
     const std::size_t at = members_.add(slot);
     if (at == defs_.size()) {

@@ -14,8 +14,9 @@ struct WorldImpl;
 
 class DragEffect {
 public:
-    /// Gives the body at `slot` this drag (a definition asking for none removes it).
-    void set(std::uint32_t slot, const DragDef& def, const Geometry& shape);
+    /// Gives the body at `slot` this drag (a definition asking for none removes it); `shapeWidth` (m) is the body's
+    /// mean width, used where the definition gives none.
+    void set(std::uint32_t slot, const DragDef& def, double shapeWidth);
     DragDef get(std::uint32_t slot) const;
     void remove(std::uint32_t slot);
     bool active() const { return !members_.empty(); }

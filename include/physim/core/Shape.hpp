@@ -1,0 +1,35 @@
+#pragma once
+// A body's shapes: what collides, and the material of each part. A body starts with the shape of its BodyDef and
+// may gain more (World::createShape, World::createChain): its mass, centre of mass and inertia come from all of
+// them, and each keeps its own material, so a hammer's steel head and wooden handle are one body.
+
+#include "physim/core/Geometry.hpp"
+
+#include <cstdint>
+#include <limits>
+
+namespace physim {
+
+/// Handle to a shape in one World. The generation makes a handle to a destroyed shape detectably stale.
+struct ShapeId {
+    std::uint32_t index = std::numeric_limits<std::uint32_t>::max();
+    std::uint32_t generation = 0;
+
+    bool isNull() const { return index == std::numeric_limits<std::uint32_t>::max(); }
+    friend bool operator==(const ShapeId& a, const ShapeId& b) {
+        return a.index == b.index && a.generation == b.generation;
+    }
+    friend bool operator!=(const ShapeId& a, const ShapeId& b) { return !(a == b); }
+};
+
+/// One more shape for a body (World::createShape). The geometry is in the body's frame, m, relative to the body
+/// origin: its offset from the other shapes is where it lies.
+struct ShapeDef {
+    Geometry geometry = Circle{Vec2::Zero(), 0.5};
+    double density = 1.0;              ///< kg/m^2, >= 0; the shape's mass is density * area
+    double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
+    double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
+    double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+};
+
+}  // namespace physim

@@ -1,0 +1,34 @@
+#pragma once
+// Per-shape record inside World, one slot per shape id. Internal: not installed.
+//
+// A shape is what the broad phase holds (one proxy each) and what a contact joins (a pair of shapes of two bodies);
+// its body holds the motion and the mass. A body's shapes form an intrusive list in the order they were added.
+
+#include "BodyData.hpp"
+
+#include "physim/core/Aabb.hpp"
+#include "physim/core/Geometry.hpp"
+
+#include <cstdint>
+
+namespace physim {
+
+struct ShapeData {
+    // Read for every pair by the broad and narrow phases.
+    std::uint32_t body = 0;                // the owning body's slot
+    std::int32_t proxy = kNullIndex;       // broad-phase proxy key; kNullIndex while its body collides with nothing
+    Aabb aabb;                             // the tight box at the body's pose, m
+    Geometry geometry;                     // body frame, m
+
+    double density = 0.0;                  // kg/m^2
+    double restitution = 0.0;
+    double staticFriction = 0.0;
+    double dynamicFriction = 0.0;
+    MassProperties unitMass;               // per unit density
+
+    std::int32_t next = kNullIndex;        // the body's next shape
+    std::uint32_t generation = 0;
+    bool alive = false;
+};
+
+}  // namespace physim

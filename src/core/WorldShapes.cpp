@@ -1,0 +1,339 @@
+// The World's shapes: several per body, each with its own material; the body's mass, centre of mass and inertia
+// from all of them; their boxes and proxies.
+
+#include "physim/core/World.hpp"
+
+#include "Slots.hpp"
+#include "WorldImpl.hpp"
+#include "shapes/ShapeKinds.hpp"
+
+#include "physim/core/MassData.hpp"
+#include "physim/core/Validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace physim {
+namespace {
+
+double shapeMeanWidth(const Geometry& g) {
+    return withKind(g, [](auto kind, const auto& s) { return kind.meanWidth(s); });
+}
+
+void validate(const ShapeDef& def) {
+    validate(def.geometry);
+    requireNonNegative("shape density", def.density);
+    requireInRange("shape restitution", def.restitution, 0.0, 1.0);
+    requireNonNegative("shape static friction", def.staticFriction);
+    requireNonNegative("shape dynamic friction", def.dynamicFriction);
+}
+
+// The body's mass properties per unit of its reference density (BodyData::density): each shape's weighted by its
+// density over the reference, about the common centroid (parallel axis theorem). A body of one shape at the
+// reference density has its shape's own. Zero-density shapes (and a zero reference) count by area alone, so a
+// static body still has a centre to turn about should it become kinematic.
+MassProperties combine(const WorldImpl& w, const BodyData& b) {
+    if (b.shapeCount == 1) {
+        const ShapeData& only = w.shapes[static_cast<std::size_t>(b.shapeHead)];
+        if (only.density == b.density) return only.unitMass;
+    }
+    const double reference = b.density > 0.0 ? b.density : 1.0;
+    auto total = [&](bool weighted) {
+        MassProperties m;
+        Vec2 moment = Vec2::Zero();
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
+            const ShapeData& shape = w.shapes[static_cast<std::size_t>(s)];
+            const double weight = weighted ? shape.density / reference : 1.0;
+            m.area += weight * shape.unitMass.area;
+            moment += weight * shape.unitMass.area * shape.unitMass.centroid;
+        }
+        if (!(m.area > 0.0)) return m;
+        m.centroid = moment / m.area;
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
+            const ShapeData& shape = w.shapes[static_cast<std::size_t>(s)];
+            const double weight = weighted ? shape.density / reference : 1.0;
+            const Vec2 offset = shape.unitMass.centroid - m.centroid;
+            m.secondMoment += weight * (shape.unitMass.secondMoment + shape.unitMass.area * offset.squaredNorm());
+        }
+        return m;
+    };
+    const MassProperties weighted = total(true);
+    return weighted.area > 0.0 ? weighted : total(false);
+}
+
+// Perimeter of the convex hull of a point set, m (Andrew's monotone chain).
+double hullPerimeter(std::vector<Vec2> points) {
+    std::sort(points.begin(), points.end(),
+              [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    if (points.size() < 2) return 0.0;
+    std::vector<Vec2> hull(2 * points.size());
+    std::size_t k = 0;
+    auto turnsLeft = [&](const Vec2& o, const Vec2& a, const Vec2& b) { return cross(a - o, b - o) > 0.0; };
+    for (const Vec2& p : points) {
+        while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], p)) --k;
+        hull[k++] = p;
+    }
+    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
+        while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
+        hull[k++] = points[i];
+    }
+    double perimeter = 0.0;
+    for (std::size_t i = 0; i + 1 < k; ++i) perimeter += (hull[i + 1] - hull[i]).norm();
+    return perimeter;
+}
+
+}  // namespace
+
+// --- WorldImpl helpers ---------------------------------------------------------------------------------
+
+void WorldImpl::updateBoxes(BodyData& b) {
+    if (b.shapeHead == kNullIndex) {
+        b.aabb = {b.xf.p, b.xf.p};
+        return;
+    }
+    ShapeData& first = shapes[static_cast<std::size_t>(b.shapeHead)];
+    first.aabb = computeAabb(first.geometry, b.xf);
+    b.aabb = first.aabb;
+    for (std::int32_t s = first.next; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+        shape.aabb = computeAabb(shape.geometry, b.xf);
+        b.aabb.lower = b.aabb.lower.cwiseMin(shape.aabb.lower);
+        b.aabb.upper = b.aabb.upper.cwiseMax(shape.aabb.upper);
+    }
+}
+
+void WorldImpl::createProxies(std::uint32_t body) {
+    const BodyData& b = bodies[body];
+    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+        if (shape.proxy == kNullIndex)
+            shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb, kAabbMargin), static_cast<std::uint32_t>(s),
+                                                 b.type == BodyType::Static);
+    }
+}
+
+void WorldImpl::destroyProxies(std::uint32_t body) {
+    for (std::int32_t s = bodies[body].shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+        if (shape.proxy != kNullIndex) broadPhase.destroyProxy(shape.proxy);
+        shape.proxy = kNullIndex;
+    }
+}
+
+void WorldImpl::wakeShapesOverlapping(std::uint32_t body) {
+    for (std::int32_t s = bodies[body].shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        const std::int32_t proxy = shapes[static_cast<std::size_t>(s)].proxy;
+        if (proxy != kNullIndex) wakeOverlapping(broadPhase.fatBox(proxy));
+    }
+}
+
+void WorldImpl::updateMass(std::uint32_t body) {
+    BodyData& b = bodies[body];
+    BodyData trial = b;
+    trial.unitMass = combine(*this, b);
+    if (trial.type == BodyType::Dynamic) assignMass(trial, trial.density * trial.unitMass.area);  // may throw
+    const Vec2 oldCenter = b.center;
+    b.unitMass = trial.unitMass;
+    b.mass = trial.mass;
+    b.density = trial.density;
+    b.invMass = trial.invMass;
+    b.inertia = trial.inertia;
+    b.invInertia = trial.invInertia;
+    b.localCenter = b.unitMass.centroid;
+    b.center = b.xf.apply(b.localCenter);
+    // The body's points keep their velocities: the new centre moves as the point it is moved.
+    if (b.movable()) b.v += cross(b.w, b.center - oldCenter);
+    b.extent = 0.0;
+    b.coreRadius = std::numeric_limits<double>::infinity();
+    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+        b.extent = std::max(b.extent, extentAbout(shape.geometry, b.localCenter));
+        // The thinnest part with area decides how far the body may move in a step before the Continuous stage
+        // looks at it; zero-area parts (segments) are ground, not what tunnels.
+        if (shape.unitMass.area > 0.0) b.coreRadius = std::min(b.coreRadius, coreRadius(shape.geometry));
+    }
+    if (std::isinf(b.coreRadius)) b.coreRadius = 0.0;
+    // The contacts' cached manifolds are kept about the old centre of mass.
+    for (std::int32_t key = b.contactHead; key != kNullIndex;) {
+        ContactData& c = contacts[static_cast<std::size_t>(key >> 1)];
+        c.cache.margin = -1.0;
+        key = c.next[key & 1];
+    }
+}
+
+double WorldImpl::meanWidth(std::uint32_t body) const {
+    const BodyData& b = bodies[body];
+    if (b.shapeCount == 0) return 0.0;
+    if (b.shapeCount == 1) return shapeMeanWidth(shapes[static_cast<std::size_t>(b.shapeHead)].geometry);
+    // Cauchy: the mean width of a convex set is its perimeter over pi; air sees the convex hull of the parts.
+    std::vector<Vec2> points;
+    const Transform local{Vec2::Zero(), Rotation::fromAngle(0.0)};
+    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
+        const std::vector<Vec2> around = outline(shapes[static_cast<std::size_t>(s)].geometry, local);
+        points.insert(points.end(), around.begin(), around.end());
+    }
+    return hullPerimeter(std::move(points)) / M_PI;
+}
+
+void WorldImpl::setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction,
+                                 double dynamicFriction) {
+    ShapeData& s = shapes[shape];
+    s.restitution = restitution;
+    s.staticFriction = staticFriction;
+    s.dynamicFriction = dynamicFriction;
+    forEachContactOfShape(shape, [&](std::uint32_t c) {
+        mixMaterials(contacts[c], shapes[contacts[c].shapeA()], shapes[contacts[c].shapeB()]);
+    });
+}
+
+// --- World -------------------------------------------------------------------------------------------
+
+std::uint32_t World::firstShape(BodyId id) const {
+    const BodyData& b = at(id);
+    if (b.shapeHead == kNullIndex)
+        throw std::invalid_argument("physim: body (index " + std::to_string(id.index) + ") has no shape");
+    return static_cast<std::uint32_t>(b.shapeHead);
+}
+
+std::uint32_t World::shapeSlot(ShapeId id) const {
+    if (!contains(id))
+        throw std::invalid_argument("physim: shape id (index " + std::to_string(id.index) + ", generation " +
+                                    std::to_string(id.generation) + ") is not a live shape of this world");
+    return id.index;
+}
+
+ShapeId World::createShape(BodyId id, const ShapeDef& def) {
+    validate(def);
+    at(id);
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("createShape");
+    const std::uint32_t body = id.index;
+    const std::uint32_t slot = takeSlot(w.shapes, w.freeShapes);
+    ShapeData& shape = w.shapes[slot];
+    shape.body = body;
+    shape.geometry = def.geometry;
+    shape.unitMass = computeMassProperties(def.geometry);
+    shape.density = def.density;
+    shape.restitution = def.restitution;
+    shape.staticFriction = def.staticFriction;
+    shape.dynamicFriction = def.dynamicFriction;
+    BodyData& b = w.bodies[body];
+    const std::int32_t oldTail = b.shapeTail;
+    auto link = [&](std::int32_t tail) {
+        if (tail == kNullIndex) b.shapeHead = static_cast<std::int32_t>(slot);
+        else w.shapes[static_cast<std::size_t>(tail)].next = static_cast<std::int32_t>(slot);
+        b.shapeTail = static_cast<std::int32_t>(slot);
+        ++b.shapeCount;
+    };
+    link(oldTail);
+    try {
+        w.updateMass(body);
+    } catch (...) {
+        if (oldTail == kNullIndex) b.shapeHead = kNullIndex;
+        else w.shapes[static_cast<std::size_t>(oldTail)].next = kNullIndex;
+        b.shapeTail = oldTail;
+        --b.shapeCount;
+        w.shapes[slot].alive = false;
+        w.freeShapes.push_back(slot);
+        throw;
+    }
+    ++w.shapeLiveCount;
+    w.updateBoxes(b);
+    if (b.collides) {
+        w.createProxies(body);
+        if (b.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(w.shapes[slot].proxy));
+    }
+    w.effects.drag.set(body, w.effects.drag.get(body), w.meanWidth(body));
+    w.wakeBody(body);
+    w.touched.push_back(body);
+    ++w.shapeRevision;
+    w.touchingValid = false;
+    return ShapeId{slot, w.shapes[slot].generation};
+}
+
+void World::destroyShape(ShapeId id) {
+    const std::uint32_t slot = shapeSlot(id);
+    WorldImpl& w = *impl_;
+    w.requireNotStepping("destroyShape");
+    const std::uint32_t body = w.shapes[slot].body;
+    BodyData& b = w.bodies[body];
+    // Unlinked first, so the mass rule sees the body without it; put back if the body cannot do without it.
+    std::int32_t before = kNullIndex;
+    for (std::int32_t s = b.shapeHead; s != static_cast<std::int32_t>(slot); s = w.shapes[static_cast<std::size_t>(s)].next)
+        before = s;
+    const std::int32_t after = w.shapes[slot].next;
+    auto relink = [&](bool in) {
+        const std::int32_t target = in ? static_cast<std::int32_t>(slot) : after;
+        if (before == kNullIndex) b.shapeHead = target;
+        else w.shapes[static_cast<std::size_t>(before)].next = target;
+        if (after == kNullIndex) b.shapeTail = in ? static_cast<std::int32_t>(slot) : before;
+        b.shapeCount += in ? 1 : -1;
+    };
+    relink(false);
+    try {
+        if (b.type == BodyType::Dynamic && b.shapeCount == 0)
+            throw std::invalid_argument("physim: destroyShape would leave a dynamic body with no shape");
+        w.updateMass(body);
+    } catch (...) {
+        relink(true);
+        throw;
+    }
+    // Its contacts end, waking what they held.
+    w.forEachContactOfShape(slot, [&](std::uint32_t c) { w.destroyContact(c, true); });
+    ShapeData& shape = w.shapes[slot];
+    if (shape.proxy != kNullIndex) w.broadPhase.destroyProxy(shape.proxy);
+    shape.proxy = kNullIndex;
+    shape.alive = false;
+    shape.next = kNullIndex;
+    w.freeShapes.push_back(slot);
+    --w.shapeLiveCount;
+    w.updateBoxes(b);
+    w.effects.drag.set(body, w.effects.drag.get(body), w.meanWidth(body));
+    w.wakeBody(body);
+    w.touched.push_back(body);
+    ++w.shapeRevision;
+    w.touchingValid = false;
+}
+
+bool World::contains(ShapeId id) const {
+    const auto& shapes = impl_->shapes;
+    return !id.isNull() && id.index < shapes.size() && shapes[id.index].alive &&
+           shapes[id.index].generation == id.generation;
+}
+
+std::size_t World::shapeCount() const { return impl_->shapeLiveCount; }
+
+std::vector<ShapeId> World::shapes(BodyId id) const {
+    std::vector<ShapeId> ids;
+    for (std::int32_t s = at(id).shapeHead; s != kNullIndex; s = impl_->shapes[static_cast<std::size_t>(s)].next)
+        ids.push_back(ShapeId{static_cast<std::uint32_t>(s), impl_->shapes[static_cast<std::size_t>(s)].generation});
+    return ids;
+}
+
+BodyId World::body(ShapeId id) const {
+    const std::uint32_t b = impl_->shapes[shapeSlot(id)].body;
+    return BodyId{b, impl_->bodies[b].generation};
+}
+
+const Geometry& World::geometry(ShapeId id) const { return impl_->shapes[shapeSlot(id)].geometry; }
+Aabb World::bounds(ShapeId id) const { return impl_->shapes[shapeSlot(id)].aabb; }
+double World::density(ShapeId id) const { return impl_->shapes[shapeSlot(id)].density; }
+double World::restitution(ShapeId id) const { return impl_->shapes[shapeSlot(id)].restitution; }
+double World::staticFriction(ShapeId id) const { return impl_->shapes[shapeSlot(id)].staticFriction; }
+double World::dynamicFriction(ShapeId id) const { return impl_->shapes[shapeSlot(id)].dynamicFriction; }
+
+void World::setMaterial(ShapeId id, double restitution, double staticFriction, double dynamicFriction) {
+    requireInRange("shape restitution", restitution, 0.0, 1.0);
+    requireNonNegative("shape static friction", staticFriction);
+    requireNonNegative("shape dynamic friction", dynamicFriction);
+    const std::uint32_t slot = shapeSlot(id);
+    const std::uint32_t body = impl_->shapes[slot].body;
+    wake(BodyId{body, impl_->bodies[body].generation}, "setMaterial");
+    impl_->setShapeMaterial(slot, restitution, staticFriction, dynamicFriction);
+}
+
+}  // namespace physim
