@@ -71,7 +71,9 @@ void closestToEdges(const RoundedCore& p, const RoundedCore& q, bool pIsA, Close
             const double u = (w - v1).dot(e);
             double d;
             int face = i, vertex = i;
-            bool onFace = u > 0.0 && u < ee;
+            // The face's span includes its ends: where a vertex lies straight above another (aligned boxes) the
+            // face and the two vertices are equally close, and the face gives the two-point manifold.
+            const bool onFace = u >= 0.0 && u <= ee;
             if (onFace) {
                 double s = p.normals[i].dot(w - v1);
                 if (s < 0.0) {
@@ -87,7 +89,7 @@ void closestToEdges(const RoundedCore& p, const RoundedCore& q, bool pIsA, Close
                 const Vec2 diff = w - p.vertices[vertex];
                 d = std::hypot(diff.x(), diff.y());
             }
-            if (d < best.distance) {
+            if (d < best.distance || (d == best.distance && onFace && best.kind == Closest::kVertices)) {
                 best.distance = d;
                 best.face = face;
                 if (onFace) {
