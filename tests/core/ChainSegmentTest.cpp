@@ -206,6 +206,50 @@ TEST(ChainSegment, OpenEndedPieceIsItsOneSidedSegment) {
     EXPECT_GT(compared, 200);
 }
 
+// Random joints (turning -60 to 60 degrees) and random shapes near them, far from the chain's open ends: at a flat or
+// concave joint every normal is the piece's face normal; at a convex one it is that or lies between the two pieces'
+// normals (the corner's own); a shape whose centre is behind a piece gets nothing from it.
+TEST(ChainSegment, RandomJointsGiveOnlyFaceOrCornerNormals) {
+    std::mt19937_64 rng(52);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    int contacts = 0, cornerNormals = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const double heading = uniform(-M_PI, M_PI), turn = uniform(-M_PI / 3, M_PI / 3);
+        const Vec2 joint(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+        const Vec2 d1(std::cos(heading), std::sin(heading)), d2(std::cos(heading + turn), std::sin(heading + turn));
+        const std::vector<ChainSegment> chain = openChain({joint - 3.0 * d1, joint, joint + 3.0 * d2});
+        const Vec2 n1 = leftNormal(chain[0]), n2 = leftNormal(chain[1]);
+        const bool convex = turn < 0.0;
+        const Geometry shapes[] = {makeCircle(uniform(0.05, 0.5)), makeBox(uniform(0.05, 0.5), uniform(0.05, 0.5)),
+                                   makeCapsule({-0.3, 0.0}, {0.3, 0.0}, uniform(0.05, 0.3)),
+                                   makeRoundedBox(uniform(0.05, 0.3), uniform(0.05, 0.3), uniform(0.02, 0.2))};
+        const Geometry& shape = shapes[k % 4];
+        const Transform xf{joint + Vec2(uniform(-0.6, 0.6), uniform(-0.6, 0.6)),
+                           Rotation::fromAngle(uniform(-M_PI, M_PI))};
+        const Vec2 centre = xf.apply(computeMassProperties(shape).centroid);
+        for (int i = 0; i < 2; ++i) {
+            const Manifold m = collide(chain[i], Transform{}, shape, xf);
+            const Vec2 face = i == 0 ? n1 : n2;
+            SCOPED_TRACE("draw " + std::to_string(k) + ", piece " + std::to_string(i));
+            if (face.dot(centre - chain[i].segment.point1) < 0.0) {
+                EXPECT_EQ(m.pointCount, 0);
+                continue;
+            }
+            if (m.pointCount == 0) continue;
+            ++contacts;
+            ASSERT_NEAR(m.normal.norm(), 1.0, 1e-12);
+            if ((m.normal - face).norm() < 1e-9) continue;
+            ++cornerNormals;
+            EXPECT_TRUE(convex) << "turn " << turn << ": only a convex joint has a corner";
+            // Between n1 and n2 (n2 is clockwise of n1 at a convex joint), to rounding.
+            EXPECT_LE(cross(n1, m.normal), 1e-12);
+            EXPECT_GE(cross(n2, m.normal), -1e-12);
+        }
+    }
+    EXPECT_GT(contacts, 5000);
+    EXPECT_GT(cornerNormals, 100);
+}
+
 TEST(ChainSegment, GroundAgainstGroundHasNoContact) {
     const ChainSegment piece = openChain({{-3, 0}, {-1, 0}, {1, 0}})[0];
     EXPECT_EQ(collide(piece, Transform{}, piece, Transform{}).pointCount, 0);
