@@ -57,7 +57,7 @@ struct Xf {
 /// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
 /// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon), turningReach, and its
 /// checks in shapeHolds.
-enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1 };
+enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1, kSegment = 2, kCapsule = 3, kChainSegment = 4 };
 constexpr int kMaxVertices = 8;
 
 /// One shape in its body's frame. Circle: vertices[0] is the centre, count 1, radius > 0. Polygon: 3 to 8

@@ -21,15 +21,43 @@ struct Circle {
 
 /// Convex polygon, counter-clockwise, at most maxVertices vertices, with outward unit edge normals:
 /// normals[i] is the normal of the edge vertices[i] -> vertices[(i + 1) % count]. Build one with makeBox or
-/// makePolygon; validate() checks a hand-filled one.
+/// makePolygon; validate() checks a hand-filled one. With radius > 0 it is a rounded polygon: every point within
+/// radius of the core polygon the vertices describe (makeRoundedBox, makeRoundedPolygon).
 struct Polygon {
     static constexpr int maxVertices = 8;
     std::array<Vec2, maxVertices> vertices{};
     std::array<Vec2, maxVertices> normals{};
     int count = 0;
+    double radius = 0.0;  ///< m, >= 0
 };
 
-using Geometry = std::variant<Circle, Polygon>;
+/// A line between two points, zero thickness and two-sided: ground and walls (zero area, so a body made only of
+/// segments must be static or kinematic).
+struct Segment {
+    Vec2 point1 = Vec2::Zero();  ///< m, local
+    Vec2 point2 = Vec2::Zero();  ///< m, local, apart from point1
+};
+
+/// Every point within `radius` of the segment center1-center2: a stadium.
+struct Capsule {
+    Vec2 center1 = Vec2::Zero();  ///< m, local
+    Vec2 center2 = Vec2::Zero();  ///< m, local, apart from center1
+    double radius = 0.0;          ///< m, > 0
+};
+
+/// One piece of a chain (a polyline of ground): a segment that collides only from its left side, whose normal is
+/// point2 - point1 turned 90 degrees counter-clockwise (ground listed left to right is solid below; a
+/// counter-clockwise loop holds bodies inside). ghost1 and ghost2 are the chain's points before point1 and after
+/// point2: with them a body crossing the joint between two pieces feels no bump. An open chain's end piece has its
+/// ghost equal to its own end point (no neighbour: the end is a real corner).
+struct ChainSegment {
+    Vec2 ghost1 = Vec2::Zero();  ///< m, local
+    Segment segment;
+    Vec2 ghost2 = Vec2::Zero();  ///< m, local
+};
+
+/// The kinds, in this order (the kernel's codes, src/core/ContinuousKernel.hpp, are these indices).
+using Geometry = std::variant<Circle, Polygon, Segment, Capsule, ChainSegment>;
 
 /// A circle of the given radius (m) centred at `center`. Throws std::invalid_argument for radius <= 0 or NaN.
 Circle makeCircle(double radius, const Vec2& center = Vec2::Zero());
@@ -48,6 +76,20 @@ Polygon makeBox(double halfWidth, double halfHeight, const Vec2& center, double 
 /// vertex (non-convex) or a boundary that winds more than once (self-intersecting).
 Polygon makePolygon(const std::vector<Vec2>& points);
 
+/// The segment from p1 to p2 (m, local). Throws std::invalid_argument for a non-finite point or p1 == p2.
+Segment makeSegment(const Vec2& p1, const Vec2& p2);
+
+/// The capsule around the segment c1-c2 (m, local) with the given radius (m). Throws std::invalid_argument for a
+/// non-finite centre, c1 == c2 (use a circle) or a radius <= 0 or NaN.
+Capsule makeCapsule(const Vec2& c1, const Vec2& c2, double radius);
+
+/// makeBox(halfWidth, halfHeight) grown by `radius` (m) all round: outer half-extents halfWidth + radius and
+/// halfHeight + radius, with round corners. Throws std::invalid_argument for bad sizes or a radius <= 0 or NaN.
+Polygon makeRoundedBox(double halfWidth, double halfHeight, double radius);
+
+/// makePolygon(points) grown by `radius` (m) all round. Throws as makePolygon does, and for a radius <= 0 or NaN.
+Polygon makeRoundedPolygon(const std::vector<Vec2>& points, double radius);
+
 /// Mass properties per unit density (kg/m^2): area (m^2), centroid (m, local) and the second moment of area
 /// about the centroid (m^4). Multiply area and secondMoment by a density to get mass and inertia.
 struct MassProperties {
@@ -62,17 +104,18 @@ MassProperties computeMassProperties(const Geometry& g);
 Aabb computeAabb(const Geometry& g, const Transform& xf);
 
 /// World points (m) around the boundary of a geometry placed by `xf`, counter-clockwise, for drawing it as a filled
-/// convex polygon: a polygon's vertices, 40 points on a circle.
+/// convex polygon: a polygon's vertices, 40 points on a circle, arcs at a capsule's ends and a rounded polygon's
+/// corners, a segment's two points.
 std::vector<Vec2> outline(const Geometry& g, const Transform& xf);
 
 }  // namespace physim
 
 namespace physim {
 
-/// Throws std::invalid_argument naming the problem: non-positive or non-finite radius, a polygon with fewer
-/// than 3 or more than Polygon::maxVertices vertices, non-finite coordinates, or a polygon that makePolygon
-/// would reject (coincident, collinear, clockwise, non-convex), or whose normals are not its outward unit
-/// edge normals.
+/// Throws std::invalid_argument naming the problem: non-positive or non-finite radius (a polygon's may be 0), a
+/// polygon with fewer than 3 or more than Polygon::maxVertices vertices, non-finite coordinates, or a polygon that
+/// makePolygon would reject (coincident, collinear, clockwise, non-convex), or whose normals are not its outward unit
+/// edge normals; a segment, capsule or chain segment whose two points coincide.
 void validate(const Geometry& g);
 
 }  // namespace physim

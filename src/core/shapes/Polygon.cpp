@@ -127,3 +127,21 @@ Polygon makePolygon(const std::vector<Vec2>& points) {
 }
 
 }  // namespace physim
+
+namespace physim {
+
+Polygon makeRoundedBox(double halfWidth, double halfHeight, double radius) {
+    requirePositive("rounded box radius", radius);
+    Polygon p = makeBox(halfWidth, halfHeight);
+    p.radius = radius;
+    return p;
+}
+
+Polygon makeRoundedPolygon(const std::vector<Vec2>& points, double radius) {
+    requirePositive("rounded polygon radius", radius);
+    Polygon p = makePolygon(points);
+    p.radius = radius;
+    return p;
+}
+
+}  // namespace physim

@@ -1,8 +1,11 @@
 #pragma once
 // The convex polygon's room: everything a polygon provides (ShapeKind.hpp lists what a kind must). Internal.
-// Polygon.cpp builds polygons (makeBox, makePolygon), CollidePolygons.cpp and CollideCircles.cpp hold its narrow
-// phase; its kernel side is kernel::kPolygon in ContinuousKernel.hpp (polygonCircle, polygonPolygon, polygonHolds).
+// Polygon.cpp builds polygons (makeBox, makePolygon, the rounded ones), CollidePolygons.cpp and CollideCircles.cpp
+// hold its narrow phase at radius 0, CollideRounded.cpp with a radius; its kernel side is kernel::kPolygon in
+// ContinuousKernel.hpp (polygonCircle, polygonPolygon, polygonHolds). A rounded polygon is its core (vertices,
+// normals) grown by radius: every query below adds the radius to the core's answer.
 
+#include "RoundedCore.hpp"
 #include "ShapeKind.hpp"
 
 #include <algorithm>
@@ -36,15 +39,17 @@ struct ShapeKind<Polygon> {
             lower = lower.cwiseMin(v);
             upper = upper.cwiseMax(v);
         }
+        if (p.radius > 0.0) return {lower.array() - p.radius, upper.array() + p.radius};
         return {lower, upper};
     }
-    static double boundingRadius(const Polygon& p) {
+    static double boundingRadius(const Polygon& p) { return turningRadius(p) + p.radius; }
+    static double coreRadius(const Polygon& p);
+    // The round corners turn onto themselves: only the core's vertices count (as a circle's centre).
+    static double turningRadius(const Polygon& p) {
         double r = 0.0;
         for (int i = 0; i < p.count; ++i) r = std::max(r, std::hypot(p.vertices[i].x(), p.vertices[i].y()));
         return r;
     }
-    static double coreRadius(const Polygon& p);
-    static double turningRadius(const Polygon& p) { return boundingRadius(p); }
     static double extentAbout(const Polygon& p, const Vec2& center);
     static double meanWidth(const Polygon& p);
     static void validate(const Polygon& p);
@@ -53,23 +58,28 @@ struct ShapeKind<Polygon> {
     static void toKernel(const Polygon& p, kernel::Shape& k) {
         k.kind = kernelKind;
         k.count = p.count;
-        k.radius = 0.0;
+        k.radius = p.radius;
         for (int i = 0; i < p.count; ++i) {
             k.vertices[i] = {p.vertices[i].x(), p.vertices[i].y()};
             k.normals[i] = {p.normals[i].x(), p.normals[i].y()};
         }
     }
     static Polygon fromBatch(const ContinuousBatch::Shapes& s, std::size_t i);
-    static std::string radiusProblem(double radius) { return radius != 0.0 ? "a polygon has radius 0" : ""; }
+    static std::string radiusProblem(double radius) {
+        return std::isfinite(radius) && radius >= 0.0 ? "" : "a polygon's radius is finite and >= 0";
+    }
     static std::string kernelProblem(const Polygon& p);
 
+    // Radius 0: the polygon routines as they were; rounded: the rounded cores' routine.
     static NarrowResult collide(const Polygon& a, const Transform& xa, const Circle& b, const Transform& xb,
                                 double margin) {
-        return collidePolygonAndCircle(a, xa, b, xb, margin);
+        if (a.radius == 0.0) return collidePolygonAndCircle(a, xa, b, xb, margin);
+        return collideRounded(coreOf(a), xa, coreOf(b), xb, margin);
     }
     static NarrowResult collide(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb,
                                 double margin) {
-        return collidePolygons(a, xa, b, xb, margin);
+        if (a.radius == 0.0 && b.radius == 0.0) return collidePolygons(a, xa, b, xb, margin);
+        return collideRounded(coreOf(a), xa, coreOf(b), xb, margin);
     }
 };
 

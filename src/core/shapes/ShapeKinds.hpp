@@ -6,8 +6,11 @@
 // pairs (NarrowPhase.cpp) is built from the same list. A new kind is an alternative of Geometry, its room, and its
 // include below (docs/architecture.md, "Adding a shape kind").
 
+#include "CapsuleKind.hpp"
+#include "ChainSegmentKind.hpp"
 #include "CircleKind.hpp"
 #include "PolygonKind.hpp"
+#include "SegmentKind.hpp"
 
 #include <cstddef>
 #include <utility>

@@ -1,0 +1,70 @@
+// The chain segment's room: its checks and its narrow phase.
+//
+// A chain piece is its segment (CollideRounded.cpp) made one-sided and smooth across its joints:
+// - a body whose core centre lies behind the piece's line (right of point1 -> point2) gets no contact;
+// - a manifold along the piece's face normal (its left normal) stands;
+// - any other normal comes from one end of the piece (the end it leans towards). An open end (ghost equal to the
+//   end point) is a real corner: the manifold stands. At a convex joint (the chain turns right there) the normals
+//   between the two pieces' face normals belong to the corner and stand; beyond the neighbour's normal the
+//   neighbour's face answers, so this piece drops the manifold. At a flat or concave joint the neighbour's face
+//   covers everything past the end, so this piece answers with its own face only: the manifold along its face
+//   normal with the body's points clipped to the piece's span.
+// So a body crossing a flat joint meets two faces with the same normal and never the corner between them.
+
+#include "ChainSegmentKind.hpp"
+
+#include "physim/core/Validate.hpp"
+
+namespace physim {
+namespace {
+
+// A normal this close to the face normal is the face normal (4.5e-5 rad): the face's own manifold, from rounding.
+constexpr double kFaceCosine = 1.0 - 1e-9;
+// A joint whose turn has a smaller sine is flat.
+constexpr double kFlatSine = 1e-9;
+
+// The piece's face: the 2-vertex core's face 1 (edge point2 -> point1), whose normal is the left normal.
+constexpr int kFace = 1;
+
+}  // namespace
+
+void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
+    requireTwoPoints("chain segment", "point1", c.segment.point1, "point2", c.segment.point2);
+    requireFinite("chain segment ghost1", c.ghost1);
+    requireFinite("chain segment ghost2", c.ghost2);
+}
+
+NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
+                                 const Transform& xb, double margin) {
+    const Vec2& p1 = a.segment.point1;
+    const Vec2& p2 = a.segment.point2;
+    const RoundedCore piece = coreOf(p1, p2, 0.0);
+    const RoundedCore local = relativeCore(b, xa, xb);
+    const Vec2 face = piece.normals[kFace];
+
+    Vec2 centre = Vec2::Zero();
+    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
+    centre /= local.count;
+    if (face.dot(centre - p1) < 0.0) return {};  // behind the piece
+
+    const LocalManifold m = collideCores(piece, local, margin);
+    if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);
+    if (m.normal.dot(face) <= 0.0) return placed(collideWithFace(piece, kFace, local, margin), xa);
+
+    const Vec2 along = p2 - p1;
+    const bool atStart = m.normal.dot(along) < 0.0;
+    const Vec2& end = atStart ? p1 : p2;
+    const Vec2& ghost = atStart ? a.ghost1 : a.ghost2;
+    if (ghost == end) return placed(m, xa);  // an open chain's end: a real corner
+
+    const Vec2 neighbour = atStart ? Vec2(p1 - ghost) : Vec2(ghost - p2);  // the neighbour's direction along the chain
+    const double turn = atStart ? cross(neighbour, along) : cross(along, neighbour);  // < 0: turns right, convex
+    if (turn < -kFlatSine * neighbour.norm() * along.norm()) {
+        const Vec2 neighbourNormal = perp(neighbour).normalized();
+        const bool beyond = atStart ? cross(neighbourNormal, m.normal) > 0.0 : cross(m.normal, neighbourNormal) > 0.0;
+        return beyond ? NarrowResult{} : placed(m, xa);
+    }
+    return placed(collideWithFace(piece, kFace, local, margin), xa);
+}
+
+}  // namespace physim

@@ -1,0 +1,61 @@
+#pragma once
+// The chain segment's room: everything a piece of a chain provides (ShapeKind.hpp lists what a kind must).
+// Internal. ChainSegmentKind.cpp holds its checks, outline and narrow phase: the segment's (CollideRounded.cpp),
+// one-sided and smoothed across the joints by the ghost points (the rule is written there).
+
+#include "SegmentKind.hpp"
+
+namespace physim {
+
+/// The manifold of a chain piece (a) and a rounded core b (body-local, placed by xb); normal from a to b.
+NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
+                                 const Transform& xb, double margin);
+
+template <>
+struct ShapeKind<ChainSegment> {
+    static constexpr const char* name = "chain segment";
+    static constexpr kernel::ShapeKind kernelKind = kernel::kChainSegment;
+    static constexpr int minVertices = 2, maxVertices = 2;
+    static constexpr const char* vertexCounts = "2 (its end points)";
+
+    static MassProperties mass(const ChainSegment& c) { return ShapeKind<Segment>::mass(c.segment); }
+    static Aabb aabb(const ChainSegment& c, const Transform& xf) { return ShapeKind<Segment>::aabb(c.segment, xf); }
+    static double boundingRadius(const ChainSegment& c) { return ShapeKind<Segment>::boundingRadius(c.segment); }
+    static double coreRadius(const ChainSegment&) { return 0.0; }
+    static double turningRadius(const ChainSegment& c) { return ShapeKind<Segment>::turningRadius(c.segment); }
+    static double extentAbout(const ChainSegment& c, const Vec2& p) {
+        return ShapeKind<Segment>::extentAbout(c.segment, p);
+    }
+    static double meanWidth(const ChainSegment& c) { return ShapeKind<Segment>::meanWidth(c.segment); }
+    static void validate(const ChainSegment& c);
+    static std::vector<Vec2> outline(const ChainSegment& c, const Transform& xf) {
+        return ShapeKind<Segment>::outline(c.segment, xf);
+    }
+
+    // The kernel sees a two-sided segment (never tunnels); the batch does not carry the ghosts.
+    static void toKernel(const ChainSegment& c, kernel::Shape& k) {
+        TwoPoints::toKernel(kernelKind, c.segment.point1, c.segment.point2, 0.0, k);
+    }
+    static ChainSegment fromBatch(const ContinuousBatch::Shapes& s, std::size_t i) {
+        const Segment segment = ShapeKind<Segment>::fromBatch(s, i);
+        return ChainSegment{segment.point1, segment, segment.point2};
+    }
+    static std::string radiusProblem(double radius) { return radius != 0.0 ? "a chain segment has radius 0" : ""; }
+    static std::string kernelProblem(const ChainSegment&) { return {}; }
+
+    // Ground against ground (another chain piece or a segment): no contact.
+    static NarrowResult collide(const ChainSegment&, const Transform&, const Segment&, const Transform&, double) {
+        return {};
+    }
+    static NarrowResult collide(const ChainSegment&, const Transform&, const ChainSegment&, const Transform&,
+                                double) {
+        return {};
+    }
+    template <class T>
+    static NarrowResult collide(const ChainSegment& a, const Transform& xa, const T& b, const Transform& xb,
+                                double margin) {
+        return collideChainSegment(a, xa, coreOf(b), xb, margin);
+    }
+};
+
+}  // namespace physim
