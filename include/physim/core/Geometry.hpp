@@ -27,6 +27,7 @@ struct Polygon {
     std::array<Vec2, maxVertices> vertices{};
     std::array<Vec2, maxVertices> normals{};
     int count = 0;
+    double radius = 0.0;  ///< m, >= 0; > 0: a rounded polygon (the core polygon grown by radius)
 };
 
 using Geometry = std::variant<Circle, Polygon>;
@@ -47,6 +48,17 @@ Polygon makeBox(double halfWidth, double halfHeight, const Vec2& center, double 
 /// a non-finite coordinate, coincident points, three consecutive collinear points (or zero area), a reflex
 /// vertex (non-convex) or a boundary that winds more than once (self-intersecting).
 Polygon makePolygon(const std::vector<Vec2>& points);
+
+/// The convex hull of `points` (m, body-local, any order), counter-clockwise, built through makePolygon. Points
+/// strictly inside and points on the hull's edges are dropped; corners closer than 1e-6 of the points' extent
+/// (bounding-box diagonal) are welded into one, and a corner turning by less than 1e-6 rad is dropped, so every
+/// point lies inside the hull or within 1e-6 of the extent of it. Throws std::invalid_argument naming the
+/// problem: fewer than 3 points, a non-finite coordinate (its index and value), all points coincident or
+/// collinear, or a hull of more than Polygon::maxVertices corners (how many).
+Polygon computeHull(const std::vector<Vec2>& points);
+
+/// computeHull(points) grown by `radius` (m, finite and >= 0; 0 gives the plain hull): a rounded polygon.
+Polygon computeHull(const std::vector<Vec2>& points, double radius);
 
 /// Mass properties per unit density (kg/m^2): area (m^2), centroid (m, local) and the second moment of area
 /// about the centroid (m^4). Multiply area and secondMoment by a density to get mass and inertia.
