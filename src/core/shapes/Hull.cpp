@@ -47,14 +47,16 @@ std::vector<Vec2> monotoneChain(std::vector<Vec2> p) {
     hull.reserve(p.size() + 1);
     const auto sweep = [&](auto first, auto last, std::size_t floor) {
         for (auto it = first; it != last; ++it) {
-            while (hull.size() > floor && cross(hull.back() - hull[hull.size() - 2], *it - hull[hull.size() - 2]) <= 0.0)
+            // Pop the last corner while it does not turn left on the way to *it.
+            while (hull.size() > floor &&
+                   cross(hull.back() - hull[hull.size() - 2], *it - hull[hull.size() - 2]) <= 0.0)
                 hull.pop_back();
             hull.push_back(*it);
         }
     };
-    sweep(p.begin(), p.end(), 1);                 // lower chain, left to right
-    sweep(p.rbegin() + 1, p.rend(), hull.size()); // upper chain, right to left, back to the start
-    hull.pop_back();                              // the start again
+    sweep(p.begin(), p.end(), 1);                  // lower chain, left to right
+    sweep(p.rbegin() + 1, p.rend(), hull.size());  // upper chain, right to left, back to the start
+    hull.pop_back();                               // the start again
     return hull;
 }
 
