@@ -182,6 +182,18 @@ TEST(Hull, OrderOfThePointsDoesNotMatter) {
     EXPECT_EQ(ccw.vertices[1], Vec2(1, 0));  // counter-clockwise from there
 }
 
+TEST(Hull, DenseSamplesAlongEdgesLeaveOnlyTheCorners) {
+    // 40,000 points along a rotated square's edges: rounding puts some a hair outside their edge, where the chain
+    // keeps them as corners turning by about 1e-16 rad; straightening leaves the four true corners.
+    const Vec2 c[4] = {{1.0, 0.2}, {3.1, 1.1}, {2.2, 3.2}, {0.1, 2.3}};
+    std::vector<Vec2> pts;
+    for (int k = 0; k < 4; ++k)
+        for (int j = 0; j < 10000; ++j) pts.push_back(c[k] + (c[(k + 1) % 4] - c[k]) * (j / 10000.0));
+    const Polygon p = computeHull(pts);
+    ASSERT_EQ(p.count, 4);
+    for (int i = 0; i < 4; ++i) EXPECT_NE(std::find(std::begin(c), std::end(c), p.vertices[i]), std::end(c));
+}
+
 TEST(Hull, WeldsNearlyRepeatedPoints) {
     // Copies 1e-9 m off a 1 m square's corners: one corner each (the weld tolerance is 1e-6 of the extent).
     const std::vector<Vec2> pts{{0, 0}, {1, 0}, {1, 1}, {0, 1}, {1e-9, 0}, {1, 1e-9}, {1 - 1e-9, 1 + 1e-9}, {0, 1}};

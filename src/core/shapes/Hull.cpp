@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace physim {
 namespace {
@@ -61,25 +62,42 @@ std::vector<Vec2> monotoneChain(std::vector<Vec2> p) {
 }
 
 // Drops corners makePolygon would reject as coincident or collinear: each removal keeps the polygon convex and
-// moves its boundary by at most kWeld (or kStraight) times its extent. Repeats until none is left.
+// moves its boundary by at most kWeld (or kStraight) times the extent. The extent is the points' (the hull keeps
+// their extreme points) and only shrinks as corners go, so what is left passes makePolygon's checks. The corners
+// form a ring; after a removal its two neighbours are looked at again, so the pass is linear.
 void weldAndStraighten(std::vector<Vec2>& h) {
-    bool changed = true;
-    while (changed && h.size() >= 3) {
-        changed = false;
-        const double size = extentOf(h);
-        const std::size_t n = h.size();
-        for (std::size_t i = 0; i < n && !changed; ++i) {
-            const Vec2& prev = h[(i + n - 1) % n];
-            const Vec2& next = h[(i + 1) % n];
-            const Vec2 in = h[i] - prev, out = next - h[i];
-            const bool weld = (next - h[i]).norm() <= kWeld * size;
-            const bool straight = std::abs(cross(in, out) / (in.norm() * out.norm())) <= kStraight;
-            if (weld || straight) {
-                h.erase(h.begin() + static_cast<std::ptrdiff_t>(weld ? (i + 1) % n : i));
-                changed = true;
-            }
-        }
+    const double size = extentOf(h);
+    const std::size_t n = h.size();
+    std::vector<std::size_t> prev(n), next(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        prev[i] = (i + n - 1) % n;
+        next[i] = (i + 1) % n;
     }
+    std::size_t alive = n, i = 0, keptInARow = 0;
+    while (alive >= 3 && keptInARow < alive) {
+        const Vec2 in = h[i] - h[prev[i]], out = h[next[i]] - h[i];
+        const bool weld = out.norm() <= kWeld * size;
+        const bool straight = !weld && std::abs(cross(in, out) / (in.norm() * out.norm())) <= kStraight;
+        if (!weld && !straight) {
+            i = next[i];
+            ++keptInARow;
+            continue;
+        }
+        const std::size_t gone = weld ? next[i] : i;
+        next[prev[gone]] = next[gone];
+        prev[next[gone]] = prev[gone];
+        --alive;
+        keptInARow = 0;
+        i = prev[gone];  // its next corner changed; the one after it (its prev changed) comes next
+    }
+    std::vector<Vec2> ring;
+    ring.reserve(alive);
+    for (std::size_t k = 0; k < alive; ++k, i = next[i]) ring.push_back(h[i]);
+    // Start where the chain started (its leftmost, lowest corner), as makePolygon keeps the order given.
+    std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end(), [](const Vec2& a, const Vec2& b) {
+                    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+                }), ring.end());
+    h = std::move(ring);
 }
 
 }  // namespace
