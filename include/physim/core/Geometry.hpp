@@ -27,7 +27,7 @@ struct Polygon {
     std::array<Vec2, maxVertices> vertices{};
     std::array<Vec2, maxVertices> normals{};
     int count = 0;
-    double radius = 0.0;  ///< m, >= 0; > 0: a rounded polygon (the core polygon grown by radius)
+    double radius = 0.0;  ///< m, >= 0
 };
 
 using Geometry = std::variant<Circle, Polygon>;
@@ -51,10 +51,10 @@ Polygon makePolygon(const std::vector<Vec2>& points);
 
 /// The convex hull of `points` (m, body-local, any order), counter-clockwise, built through makePolygon. Points
 /// strictly inside and points on the hull's edges are dropped; corners closer than 1e-6 of the points' extent
-/// (bounding-box diagonal) are welded into one, and a corner turning by less than 1e-6 rad is dropped, so every
-/// point lies inside the hull or within 1e-6 of the extent of it. Throws std::invalid_argument naming the
-/// problem: fewer than 3 points, a non-finite coordinate (its index and value), all points coincident or
-/// collinear, or a hull of more than Polygon::maxVertices corners (how many).
+/// (bounding-box diagonal) are welded into one, and a corner turning by less than 1e-6 rad is dropped (both as
+/// makePolygon would reject them), so every point lies inside the hull or a few millionths of the extent outside.
+/// Throws std::invalid_argument naming the problem: fewer than 3 points, a non-finite coordinate (its index and
+/// value), all points coincident or collinear, or a hull of more than Polygon::maxVertices corners (how many).
 Polygon computeHull(const std::vector<Vec2>& points);
 
 /// computeHull(points) grown by `radius` (m, finite and >= 0; 0 gives the plain hull): a rounded polygon.
