@@ -6,7 +6,9 @@
 // v = (m1 u1 + m2 u2) / (m1 + m2), keeping only (m1 u1 + m2 u2)^2 / (2 (m1 + m2)). Graphs: each pair's
 // momentum and kinetic energy against time, over the analytic values. When a disc leaves the lanes (6 m from
 // the middle), both pairs are launched again, so the discs stay in view. Keys: N launches both pairs again.
-// Parameters: disc a's speed and the density ratio of b to a (b's speeds keep their ratio to a's).
+// Parameters: disc a's speed and the density ratio of b to a (b's speeds keep their ratio to a's). Results
+// (summary.json): both pairs' momentum, and their velocities and kinetic energy after the contact, beside the
+// textbook's.
 
 #include "Scenes.hpp"
 
@@ -115,9 +117,29 @@ public:
         graphsManager.addPoint(inelasticP_ + 1, t, pIn);
         graphsManager.addPoint(inelasticK_, t, inelastic_.kinetic());
         graphsManager.addPoint(inelasticK_ + 1, t, kInelastic);
+        reportResults(t);
     }
 
 private:
+    // Momentum at every frame; the velocities and energies once a frame has passed since the contact.
+    void reportResults(double t) {
+        setResult("elastic: momentum", elastic_.momentum(), elastic_.initialMomentum(), "kg m/s");
+        setResult("inelastic: momentum", inelastic_.momentum(), inelastic_.initialMomentum(), "kg m/s");
+        if (t > elastic_.contactTime() + fixedTimeStep()) {
+            const double mA = elastic_.a->rb.mass(), mB = elastic_.b->rb.mass(), uA = elastic_.uA, uB = elastic_.uB;
+            setResult("elastic: a's velocity after", elastic_.a->rb.velocity().x(),
+                      ((mA - mB) * uA + 2 * mB * uB) / (mA + mB), "m/s");
+            setResult("elastic: b's velocity after", elastic_.b->rb.velocity().x(),
+                      (2 * mA * uA + (mB - mA) * uB) / (mA + mB), "m/s");
+            setResult("elastic: kinetic energy after", elastic_.kinetic(), elastic_.initialKinetic(), "J");
+        }
+        if (t > inelastic_.contactTime() + fixedTimeStep()) {
+            const double mTotal = inelastic_.a->rb.mass() + inelastic_.b->rb.mass(), p = inelastic_.initialMomentum();
+            setResult("inelastic: common velocity after", inelastic_.b->rb.velocity().x(), p / mTotal, "m/s");
+            setResult("inelastic: kinetic energy after", inelastic_.kinetic(), p * p / (2 * mTotal), "J");
+        }
+    }
+
     Pair makePair(double y, double restitution, double uA, double uB) {
         Pair pair;
         pair.uA = uA;

@@ -2,7 +2,8 @@
 // ball in a vacuum. Under F = -1/2 rho C_d w |v| v its speed follows v(t) = v_t tanh(g t / v_t) towards the
 // terminal velocity v_t = sqrt(m g / (1/2 rho C_d w)) = 10.3 m/s; the vacuum ball keeps accelerating (g t).
 // Graph: the air ball's speed against time over the tanh curve, the terminal velocity and free fall, until it
-// lands. Keys: N drops both again.
+// lands. Keys: N drops both again. Results (summary.json): the speed after one time constant v_t / g and just
+// before landing, beside the curve's.
 
 #include "Scenes.hpp"
 
@@ -69,11 +70,20 @@ public:
     // One point per frame while the air ball is falling (until it is about to land).
     void onDrawGraphs() override {
         if (landed_ || air_->getPosition().y() < 2 * kRadius) {
+            if (!landed_) setResult("speed before landing (terminal velocity)", lastSpeed_, terminal_, "m/s");
             landed_ = true;
             return;
         }
         const double t = time - dropTime_, g = -world().settings().gravity.y();
-        graphsManager.addPoint(speed_, t, air_->rb.velocity().norm());
+        const double v = air_->rb.velocity().norm();
+        // The speed at the first frame past one time constant v_t / g (where the curve bends most); the last
+        // frame's before landing is reported against v_t above.
+        if (!timeConstantReported_ && g * t >= terminal_) {
+            setResult("speed at one time constant", v, terminal_ * std::tanh(g * t / terminal_), "m/s");
+            timeConstantReported_ = true;
+        }
+        lastSpeed_ = v;
+        graphsManager.addPoint(speed_, t, v);
         graphsManager.addPoint(theory_, t, terminal_ * std::tanh(g * t / terminal_));
         graphsManager.addPoint(terminalLine_, t, terminal_);
         if (g * t < 1.5 * terminal_) graphsManager.addPoint(freeFall_, t, g * t);
@@ -101,6 +111,7 @@ private:
         }
         dropTime_ = time;
         landed_ = false;
+        timeConstantReported_ = false;
     }
 
     physim::Object* air_ = nullptr;     // owned by the simulation
@@ -108,6 +119,8 @@ private:
     double terminal_ = 0.0;             // m/s
     double dropTime_ = 0.0;             // s
     bool landed_ = false;
+    bool timeConstantReported_ = false;
+    double lastSpeed_ = 0.0;            // m/s, the air ball's at the last frame while falling
     int speed_ = -1, theory_ = -1, terminalLine_ = -1, freeFall_ = -1;
 };
 

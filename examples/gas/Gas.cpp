@@ -3,7 +3,8 @@
 // Maxwell-Boltzmann distribution f(v) = (v / s^2) exp(-v^2 / (2 s^2)), with s^2 = <v^2> / 2 fixed by the
 // (conserved) kinetic energy. Graphs: the speed histogram against f(v) (N x bin width x f at each bin centre),
 // and the total kinetic energy against its initial value. Keys: N gives every disc its initial speed again.
-// Parameters: the number of discs, their initial speed.
+// Parameters: the number of discs, their initial speed. Results (summary.json): the kinetic energy, the mean
+// speed and the distance of the speeds' distribution to Maxwell-Boltzmann's.
 
 #include "Scenes.hpp"
 
@@ -13,7 +14,9 @@
 
 #include <SFML/Window/Event.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <vector>
 
@@ -101,9 +104,29 @@ public:
         graphsManager.setPoints(boltzmann_, theory);
         graphsManager.addPoint(energy_, time, kineticEnergy());
         graphsManager.addPoint(energy0_, time, initialEnergy_);
+        reportResults(s2);
     }
 
 private:
+    // The energy against its start; the mean speed against Maxwell-Boltzmann's s sqrt(pi / 2); and the
+    // Kolmogorov-Smirnov distance between the speeds and F(v) = 1 - exp(-v^2 / (2 s^2)), which has no
+    // predicted value (300 samples from the distribution itself would stay below 0.113 in 999 runs of 1000).
+    void reportResults(double s2) {
+        setResult("kinetic energy", kineticEnergy(), initialEnergy_, "J");
+        std::vector<double> speeds;
+        for (const physim::Object* d : discs_) speeds.push_back(d->rb.velocity().norm());
+        std::sort(speeds.begin(), speeds.end());
+        double sum = 0.0, distance = 0.0;
+        const double n = static_cast<double>(speeds.size());
+        for (std::size_t i = 0; i < speeds.size(); ++i) {
+            sum += speeds[i];
+            const double cdf = 1.0 - std::exp(-speeds[i] * speeds[i] / (2 * s2));
+            distance = std::max({distance, std::abs(cdf - i / n), std::abs(cdf - (i + 1) / n)});
+        }
+        setResult("mean speed", sum / n, std::sqrt(M_PI / 2 * s2), "m/s");
+        setResult("Kolmogorov-Smirnov distance to Maxwell-Boltzmann", distance, std::nullopt, "");
+    }
+
     static void makeElastic(physim::Object& o) {
         o.rb.setRestitution(1.0);
         o.rb.setStaticFriction(0.0);

@@ -7,7 +7,8 @@
 // first contact substep (no normal impulse built up yet) lets it slip, and as tan 30 > mu_d it then keeps
 // sliding, which is Coulomb's hysteresis rather than the sticking the curve shows. The slopes stand in two
 // rows, and a stop at each slope's foot catches its block. Keys: N puts the blocks back at the top and
-// measures again. Parameters: the two friction coefficients.
+// measures again. Parameters: the two friction coefficients. Results (summary.json): each block's measured
+// acceleration beside Coulomb's.
 
 #include "Scenes.hpp"
 
@@ -19,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 
 namespace physim::examples {
 namespace {
@@ -104,7 +106,10 @@ public:
             if (lane.first && !lane.measured && t >= kMeasureTo) {
                 lane.measured = true;
                 const double a = (v - lane.first->v) / (t - lane.first->t);
-                graphsManager.addPoint(acceleration_, lane.theta * 180.0 / M_PI, a);
+                const double degrees = lane.theta * 180.0 / M_PI;
+                graphsManager.addPoint(acceleration_, degrees, a);
+                setResult("acceleration at " + std::to_string(std::lround(degrees)) + " degrees", a,
+                          coulomb(lane.theta), "m/s^2");
             }
         }
     }
@@ -138,14 +143,15 @@ private:
         releaseTime_ = time;
     }
 
-    void drawAnalytic() {
+    // Coulomb's acceleration down a slope of theta rad, m/s^2: 0 while the block sticks.
+    double coulomb(double th) const {
         const double g = -world().settings().gravity.y();
         const double muStatic = parameters.get("mu_s"), muDynamic = parameters.get("mu_d");
-        for (double deg = 0.0; deg <= 50.0; deg += 0.25) {
-            const double th = radians(deg);
-            const double a = std::tan(th) > muStatic ? g * (std::sin(th) - muDynamic * std::cos(th)) : 0.0;
-            graphsManager.addPoint(analytic_, deg, a);
-        }
+        return std::tan(th) > muStatic ? g * (std::sin(th) - muDynamic * std::cos(th)) : 0.0;
+    }
+
+    void drawAnalytic() {
+        for (double deg = 0.0; deg <= 50.0; deg += 0.25) graphsManager.addPoint(analytic_, deg, coulomb(radians(deg)));
     }
 
     std::array<Lane, kCount> lanes_;

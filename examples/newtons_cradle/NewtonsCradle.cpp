@@ -6,7 +6,8 @@
 // a real cradle's shock travels; touching balls would need the shock's order, which no contact solver has.
 // Graphs: each ball's velocity against time, and the total kinetic energy against the constant m v0^2 / 2.
 // Once the last ball is 2 m past the row, the striker strikes again, so the balls stay in view. Keys: N
-// strikes again. Parameter: the number of balls.
+// strikes again. Parameter: the number of balls. Results (summary.json): the kinetic energy, and after the
+// shock the last ball's velocity and the others' largest speed, beside conservation's answer.
 
 #include "Scenes.hpp"
 
@@ -15,6 +16,7 @@
 
 #include <SFML/Window/Event.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -90,6 +92,17 @@ public:
         }
         graphsManager.addPoint(kinetic_, t, k);
         graphsManager.addPoint(kineticTheory_, t, 0.5 * balls_[0]->rb.mass() * kSpeed * kSpeed);
+        setResult("kinetic energy", k, 0.5 * balls_[0]->rb.mass() * kSpeed * kSpeed, "J");
+        // Once the striker has crossed its gap and a frame more has passed (the shock crosses the row in a
+        // few substeps): the last ball's speed and the fastest of the others.
+        const double arrival = (-kStrikerX - 2 * kRadius) / kSpeed;  // s, from the strike to the first contact
+        if (t > arrival + fixedTimeStep()) {
+            setResult("last ball's velocity", balls_.back()->rb.velocity().x(), kSpeed, "m/s");
+            double others = 0.0;
+            for (std::size_t i = 0; i + 1 < balls_.size(); ++i)
+                others = std::max(others, balls_[i]->rb.velocity().norm());
+            setResult("fastest other ball's speed", others, 0.0, "m/s");
+        }
     }
 
 private:

@@ -3,7 +3,7 @@
 // the angular momentum is kept to rounding; the graphs show both against their start values (E / E(0) and
 // L / L(0), the start value drawn at 1). The scene is scaled: G = 1 N m^2/kg^2 and a 1000 kg sun (with the real
 // G the sun would weigh 1.5e13 kg). Keys: N nudges the outer planet (its orbit turns elliptic; the start values
-// are taken again).
+// are taken again). Results (summary.json): the energy and angular momentum beside their start values.
 
 #include "Scenes.hpp"
 
@@ -85,6 +85,8 @@ public:
     }
 
     void onDrawGraphs() override {
+        setResult("total energy", energy(), e0_, "J");
+        setResult("angular momentum", angularMomentum(), l0_, "kg m^2/s");
         graphsManager.addPoint(energy_, time, energy() / e0_);
         graphsManager.addPoint(energyStart_, time, 1.0);
         graphsManager.addPoint(momentum_, time, angularMomentum() / l0_);

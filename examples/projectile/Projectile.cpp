@@ -2,7 +2,9 @@
 // Graphs: the trajectory and the speed against time (the paper's), each with the analytic answer drawn over
 // the simulated points: y(x) = x tan(a) - g x^2 / (2 v0^2 cos^2 a), |v(t)| = sqrt(vx^2 + (vy0 - g t)^2).
 // The ball is recorded until it comes back to launch height; then it lands on the ground 0.5 m below and rolls
-// into a wall past the landing point. Keys: N launches it again. Parameters: launch speed and angle.
+// into a wall past the landing point. Keys: N launches it again. Parameters: launch speed and angle. Results
+// (summary.json): the range, time of flight and highest point beside v0^2 sin 2a / g, 2 v0 sin a / g and
+// (v0 sin a)^2 / (2 g).
 
 #include "Scenes.hpp"
 
@@ -14,6 +16,7 @@
 #include <SFML/Graphics/VertexArray.hpp>
 #include <SFML/Window/Event.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -68,9 +71,15 @@ public:
 
     void onDrawGraphs() override {
         const Vec2 p = ball_->getPosition();
-        if (p.y() < 0.0) return;  // back below launch height: this flight is over
         const double t = time - launchTime_;
         const double vx = speed() * std::cos(angle()), vy = speed() * std::sin(angle());
+        if (p.y() < 0.0) {  // back below launch height: this flight is over
+            if (!landed_ && !trail_.empty()) reportFlight(p, t, vy);
+            landed_ = true;
+            return;
+        }
+        peak_ = std::max(peak_, p.y());
+        lastT_ = t;
         trail_.push_back(p);
         graphsManager.addPoint(trajectory_, p.x(), p.y());
         graphsManager.addPoint(trajectoryTheory_, p.x(),
@@ -106,8 +115,20 @@ private:
     double g() const { return -world().settings().gravity.y(); }              // m/s^2
     double range() const { return speed() * speed() * std::sin(2 * angle()) / g(); }  // m, back at launch height
 
+    // The crossing of launch height, interpolated between the last frame above it and the first below.
+    void reportFlight(const Vec2& below, double t, double vy) {
+        const Vec2 above = trail_.back();
+        const double f = above.y() / (above.y() - below.y());
+        setResult("range at launch height", above.x() + f * (below.x() - above.x()), range(), "m");
+        setResult("time of flight", lastT_ + f * (t - lastT_), 2 * vy / g(), "s");
+        setResult("highest point", peak_, vy * vy / (2 * g()), "m");
+    }
+
     void launch() {
         trail_.clear();
+        landed_ = false;
+        peak_ = 0.0;
+        lastT_ = 0.0;
         ball_->setPosition({0.0, 0.0});
         ball_->setRotation(0.0);
         ball_->rb.setVelocity(speed() * Vec2(std::cos(angle()), std::sin(angle())));
@@ -120,6 +141,9 @@ private:
     int trajectoryTheory_ = -1;
     int speedTheory_ = -1;
     double launchTime_ = 0.0;
+    double lastT_ = 0.0;   // s since launch of the last frame above launch height
+    double peak_ = 0.0;    // m, highest frame of this flight
+    bool landed_ = false;  // back below launch height: the flight's results are reported
     std::vector<Vec2> trail_;  // m, one point per frame of the current flight
 };
 

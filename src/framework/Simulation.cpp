@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace physim {
 
@@ -52,6 +53,17 @@ std::optional<Aabb> Simulation::viewBounds() const {
         bounds = bounds ? Aabb::merged(*bounds, box) : box;
     }
     return bounds;
+}
+
+void Simulation::setResult(std::string name, double measured, std::optional<double> predicted, std::string unit) {
+    if (name.empty()) throw std::invalid_argument("physim: setResult got an empty name");
+    Result r{std::move(name), measured, predicted, std::move(unit)};
+    for (Result& old : results_)
+        if (old.name == r.name) {
+            old = std::move(r);
+            return;
+        }
+    results_.push_back(std::move(r));
 }
 
 void Simulation::setPhysicsRate(double hz) {

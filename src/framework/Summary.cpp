@@ -21,10 +21,17 @@ std::string summaryJson(const Simulation& sim) {
         }
         entities.push_back(std::move(j));
     }
+    nlohmann::ordered_json results = nlohmann::ordered_json::array();
+    for (const Simulation::Result& r : sim.results()) {
+        nlohmann::ordered_json j{{"name", r.name}, {"measured", r.measured}, {"predicted", nullptr}, {"unit", r.unit}};
+        if (r.predicted) j["predicted"] = *r.predicted;
+        results.push_back(std::move(j));
+    }
     const nlohmann::ordered_json summary{{"time", sim.time},
-                                 {"physicsRate", sim.physicsRate()},
-                                 {"steps", sim.world().stepCount()},
-                                 {"entities", std::move(entities)}};
+                                         {"physicsRate", sim.physicsRate()},
+                                         {"steps", sim.world().stepCount()},
+                                         {"entities", std::move(entities)},
+                                         {"results", std::move(results)}};
     return summary.dump(2) + "\n";
 }
 

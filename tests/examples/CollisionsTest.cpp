@@ -1,6 +1,7 @@
 // collisions run headless at 60 Hz (the rate of the core collision-response tests): momentum and kinetic
 // energy of both pairs at every frame against the analytic values.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <nlohmann/json.hpp>
@@ -69,6 +70,25 @@ TEST(Collisions, MomentumKeptEnergyKeptOrLostAsTheTextbookSays) {
     const double kInelastic = worstRelative(inelasticK, graph(dir, 7), 1.0 / 3.0, dt);
     EXPECT_LT(kInelastic, 2e-9);
     EXPECT_NEAR(inelasticK.back().second / inelasticK.front().second, 0.25, 2e-9) << "m1 / (m1 + m2) kept";
+
+    // summary.json's results, after the contacts, within the same bounds: momentum 1e-9, elastic velocities and
+    // energy 1e-6, the inelastic common velocity (1e-9, the core test's) and energy (2e-9), all relative.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 7u);
+    const double mA = M_PI * 0.25, mB = 3 * mA;  // 0.5 m discs of 1 and 3 kg/m^2
+    const double pElastic0 = mA * 3.0 - mB * 0.5, pInelastic0 = mA * 3.0;
+    const double kElastic0 = 0.5 * mA * 9.0 + 0.5 * mB * 0.25;
+    physim::test::expectResult(results, "elastic: momentum", "kg m/s", 1e-9 * pElastic0);
+    physim::test::expectResult(results, "inelastic: momentum", "kg m/s", 1e-9 * pInelastic0);
+    physim::test::expectResult(results, "elastic: a's velocity after", "m/s", 2.25e-6);
+    physim::test::expectResult(results, "elastic: b's velocity after", "m/s", 1.25e-6);
+    physim::test::expectResult(results, "elastic: kinetic energy after", "J", 1e-6 * kElastic0);
+    physim::test::expectResult(results, "inelastic: common velocity after", "m/s", 1e-9 * 0.75);
+    physim::test::expectResult(results, "inelastic: kinetic energy after", "J",
+                               2e-9 * pInelastic0 * pInelastic0 / (2 * (mA + mB)));
+    EXPECT_NEAR(*results.at("elastic: a's velocity after").predicted, -2.25, 1e-12);
+    EXPECT_NEAR(*results.at("inelastic: common velocity after").predicted, 0.75, 1e-12);
+
     RecordProperty("p_elastic_rel", scientific(pElastic));
     RecordProperty("k_elastic_rel", scientific(kElastic));
     RecordProperty("p_inelastic_rel", scientific(pInelastic));

@@ -1,5 +1,6 @@
 // drag run headless: the air ball's speed follows v_t tanh(g t / v_t) to its terminal velocity.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <gtest/gtest.h>
@@ -23,6 +24,13 @@ TEST(DragExample, SpeedFollowsTheTerminalVelocityCurve) {
         EXPECT_NEAR(v, terminal * std::tanh(g * t / terminal), 5e-3 * terminal) << "t = " << t;
     }
     EXPECT_NEAR(speed.back().second / terminal, 1.0, 1e-3) << "terminal velocity before it lands";
+
+    // summary.json's results, within the same bounds: 0.5% of v_t on the curve, 0.1% at the end.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 2u);
+    physim::test::expectResult(results, "speed at one time constant", "m/s", 5e-3 * terminal);
+    physim::test::expectResult(results, "speed before landing (terminal velocity)", "m/s", 1e-3 * terminal);
+    EXPECT_NEAR(*results.at("speed before landing (terminal velocity)").predicted, terminal, 1e-9 * terminal);
     std::filesystem::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 // gas run headless: the speeds relax from one value to the 2D Maxwell-Boltzmann distribution, and the elastic
 // collisions keep the kinetic energy.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <nlohmann/json.hpp>
@@ -52,6 +53,18 @@ TEST(Gas, SpeedsFollowMaxwellBoltzmannAndEnergyIsKept) {
     const double initial = 300 * 0.5 * (M_PI * 0.04) * 25.0;
     EXPECT_NEAR(energy / initial, 1.0, 1e-6);
     EXPECT_LT(energy, initial * (1 + 1e-9));
+
+    // summary.json's results: the energy (1e-6, as above); the mean speed against s sqrt(pi / 2), within four
+    // standard errors of a mean of 300 Rayleigh speeds (sd s sqrt(2 - pi / 2): 3.0% of the mean each, 12%); the
+    // KS distance, which has no prediction, below the same critical value.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 3u);
+    physim::test::expectResult(results, "kinetic energy", "J", 1e-6 * initial);
+    physim::test::expectResult(results, "mean speed", "m/s", 0.12 * std::sqrt(M_PI / 2 * s2));
+    const auto ks = results.find("Kolmogorov-Smirnov distance to Maxwell-Boltzmann");
+    ASSERT_NE(ks, results.end());
+    EXPECT_FALSE(ks->second.predicted.has_value()) << "written as null";
+    EXPECT_NEAR(ks->second.measured, d, 1e-12) << "the same distance as computed here";
     std::filesystem::remove_all(dir);
 }
 

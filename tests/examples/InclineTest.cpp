@@ -1,12 +1,14 @@
 // incline run headless at 60 Hz (the rate the core friction tests hold their criteria at): each block's
 // measured acceleration along its slope against Coulomb's a(theta).
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 namespace {
 
@@ -34,6 +36,20 @@ TEST(Incline, AccelerationFollowsCoulombsLaw) {
         RecordProperty("a_" + std::to_string(std::lround(degrees)) + "deg", std::to_string(a));
     }
     EXPECT_EQ(sliding, 3) << "35, 40 and 45 degrees are above the angle of repose (31 degrees)";
+
+    // summary.json's results: the same accelerations beside Coulomb's, within the same bounds as above.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 7u);
+    for (int degrees : {10, 15, 20, 25, 35, 40, 45}) {
+        const double theta = degrees * M_PI / 180.0;
+        const double expected = std::tan(theta) > muS ? g * (std::sin(theta) - muD * std::cos(theta)) : 0.0;
+        const std::string name = "acceleration at " + std::to_string(degrees) + " degrees";
+        physim::test::expectResult(results, name, "m/s^2", expected > 0.0 ? 0.02 * expected : 1e-3);
+        const auto it = results.find(name);
+        if (it != results.end() && it->second.predicted) {
+            EXPECT_NEAR(*it->second.predicted, expected, 1e-12) << name << ": the prediction is Coulomb's";
+        }
+    }
     std::filesystem::remove_all(dir);
 }
 

@@ -1,6 +1,7 @@
 // newtons_cradle run headless at 60 Hz (the rate of the core cradle test): one ball in, one ball out, and the
 // kinetic energy constant at every frame.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,14 @@ TEST(NewtonsCradle, OneBallInOneBallOutAndEnergyKept) {
     for (std::size_t i = 0; i < kinetic.size(); ++i)
         worst = std::max(worst, std::abs(kinetic[i].second - analytic[i].second) / analytic[i].second);
     EXPECT_LT(worst, 1e-6);
+
+    // summary.json's results, within the same bounds: energy 1e-6 relative, the last ball 1e-9 m/s, the
+    // others 1e-3 m/s.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 3u);
+    physim::test::expectResult(results, "kinetic energy", "J", 1e-6 * analytic.back().second);
+    physim::test::expectResult(results, "last ball's velocity", "m/s", 1e-9);
+    physim::test::expectResult(results, "fastest other ball's speed", "m/s", 1e-3);
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", worst);
     RecordProperty("kinetic_rel", text);

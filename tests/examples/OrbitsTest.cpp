@@ -1,5 +1,6 @@
 // orbits run headless: the energy stays in its band about the start value and the angular momentum is kept.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <gtest/gtest.h>
@@ -32,6 +33,16 @@ TEST(OrbitsExample, EnergyAndAngularMomentumStayAtTheirStartValues) {
     EXPECT_LT(worstEnergy, 3.95 / 480.0);
     EXPECT_LT(secondHalf, 2.0 * firstHalf + 1e-12) << "bounded, not drifting";
     EXPECT_LT(worstMomentum, 1e-11);
+
+    // summary.json's results: energy and angular momentum beside their start values, to the same bounds.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 2u);
+    ASSERT_TRUE(results.count("total energy") && results.at("total energy").predicted);
+    ASSERT_TRUE(results.count("angular momentum") && results.at("angular momentum").predicted);
+    physim::test::expectResult(results, "total energy", "J",
+                               3.95 / 480.0 * std::abs(*results.at("total energy").predicted));
+    physim::test::expectResult(results, "angular momentum", "kg m^2/s",
+                               1e-11 * std::abs(*results.at("angular momentum").predicted));
     std::filesystem::remove_all(dir);
 }
 

@@ -1,5 +1,6 @@
 // projectile run headless: the simulated flight against the analytic one, with the integrator's known error.
 
+#include "Results.hpp"
 #include "RunProgram.hpp"
 
 #include <physim/core/WorldSettings.hpp>
@@ -37,6 +38,18 @@ TEST(Projectile, FlightMatchesTheAnalyticAnswer) {
         // Its velocities are exact at the step times: the speed curve matches the analytic one.
         EXPECT_NEAR(speed[i].second, std::hypot(vx, vy - g * speed[i].first), 1e-9) << "t = " << t;
     }
+
+    // summary.json's results: range, time of flight and highest point beside the no-air formulas. Semi-implicit
+    // Euler lags the parabola by g h t / 2 (above): 2e-3 of the height at the apex and 5e-4 of the range (the
+    // lag over the landing's vertical speed, times vx); the frames sample the apex within g dt^2 / 8 = 3.4e-4 m
+    // and the interpolated crossing is off by less. Bound: 0.5% of each.
+    const auto results = physim::test::readResults((dir / "summary.json").string());
+    EXPECT_EQ(results.size(), 3u);
+    const double range = v0 * v0 * std::sin(2 * angle) / g, flight = 2 * vy / g, height = vy * vy / (2 * g);
+    physim::test::expectResult(results, "range at launch height", "m", 5e-3 * range);
+    physim::test::expectResult(results, "time of flight", "s", 5e-3 * flight);
+    physim::test::expectResult(results, "highest point", "m", 5e-3 * height);
+    EXPECT_NEAR(*results.at("range at launch height").predicted, range, 1e-12 * range);
     std::filesystem::remove_all(dir);
 }
 

@@ -90,6 +90,17 @@ Polygon makeRoundedBox(double halfWidth, double halfHeight, double radius);
 /// makePolygon(points) grown by `radius` (m) all round. Throws as makePolygon does, and for a radius <= 0 or NaN.
 Polygon makeRoundedPolygon(const std::vector<Vec2>& points, double radius);
 
+/// The convex hull of `points` (m, body-local, any order), counter-clockwise, built through makePolygon. Points
+/// strictly inside and points on the hull's edges are dropped; corners closer than 1e-6 of the points' extent
+/// (bounding-box diagonal) are welded into one, and a corner turning by less than 1e-6 rad is dropped (both as
+/// makePolygon would reject them), so every point lies inside the hull or a few millionths of the extent outside.
+/// Throws std::invalid_argument naming the problem: fewer than 3 points, a non-finite coordinate (its index and
+/// value), all points coincident or collinear, or a hull of more than Polygon::maxVertices corners (how many).
+Polygon computeHull(const std::vector<Vec2>& points);
+
+/// computeHull(points) grown by `radius` (m, finite and >= 0; 0 gives the plain hull): a rounded polygon.
+Polygon computeHull(const std::vector<Vec2>& points, double radius);
+
 /// Mass properties per unit density (kg/m^2): area (m^2), centroid (m, local) and the second moment of area
 /// about the centroid (m^4). Multiply area and secondMoment by a density to get mass and inertia.
 struct MassProperties {

@@ -26,6 +26,14 @@ namespace physim {
 
 class Simulation {
 public:
+    /// One headline figure of a lesson beside its analytic prediction, as summary.json's "results" lists it.
+    struct Result {
+        std::string name;                 ///< e.g. "period at 90 degrees"
+        double measured = 0.0;            ///< in `unit`
+        std::optional<double> predicted;  ///< the closed form's value in `unit`; nullopt where there is none
+        std::string unit;                 ///< SI, e.g. "m/s", "s", "J"; empty for a pure number
+    };
+
     double time = 0.0;             ///< simulated seconds since the start (advances by one fixed step at a time)
     GraphsManager graphsManager;
     bool start = false;            ///< true once onCreate has run
@@ -85,6 +93,12 @@ public:
     World& world() { return world_; }
     const World& world() const { return world_; }
 
+    /// Records a headline figure for summary.json's "results" (Summary.hpp), replacing the one of the same name
+    /// (a lesson measures again after a relaunch; the list keeps the order of first report). Report it when it
+    /// is measured, e.g. from onDrawGraphs. Throws std::invalid_argument for an empty name.
+    void setResult(std::string name, double measured, std::optional<double> predicted, std::string unit);
+    const std::vector<Result>& results() const { return results_; }
+
     /// Fixed physics rate in Hz (default 40, the paper's 1/40 s step). Throws for hz <= 0, NaN or > 10000.
     void setPhysicsRate(double hz);
     double physicsRate() const { return 1.0 / fixedTimeStep_; }
@@ -105,6 +119,7 @@ private:
 
     World world_;
     std::vector<std::unique_ptr<Entity>> entities_;
+    std::vector<Result> results_;
     int nextId_ = 1;
     int iterating_ = 0;  // > 0 while a phase walks the entity list
     double fixedTimeStep_ = 1.0 / 40.0;
