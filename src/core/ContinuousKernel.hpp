@@ -34,6 +34,7 @@ PHYSIM_HOST_DEVICE inline Vec operator*(double s, Vec a) { return {s * a.x, s * 
 PHYSIM_HOST_DEVICE inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
 PHYSIM_HOST_DEVICE inline double lengthSquared(Vec a) { return a.x * a.x + a.y * a.y; }
 PHYSIM_HOST_DEVICE inline double minOf(double a, double b) { return b < a ? b : a; }
+PHYSIM_HOST_DEVICE inline double maxOf(double a, double b) { return a < b ? b : a; }
 PHYSIM_HOST_DEVICE inline double clamp01(double s) { return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s); }
 
 /// Rotation as cosine and sine (the core's Rotation without Eigen).
@@ -55,13 +56,18 @@ struct Xf {
 
 /// The shape kinds, each coded by its index in the core's Geometry (src/core/shapes/ShapeKinds.hpp checks it; the
 /// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
-/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon), turningReach, and its
-/// checks in shapeHolds.
-enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1 };
+/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon for the circle and the
+/// sharp polygon; roundedCircle, roundedPolygons for the rest), turningReach, and its checks in shapeHolds.
+enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1, kSegment = 2, kCapsule = 3, kChainSegment = 4 };
 constexpr int kMaxVertices = 8;
 
 /// One shape in its body's frame. Circle: vertices[0] is the centre, count 1, radius > 0. Polygon: 3 to 8
-/// counter-clockwise vertices with outward unit normals (normals[i] for the edge i -> i + 1), radius 0.
+/// counter-clockwise vertices with outward unit normals (normals[i] for the edge i -> i + 1), radius >= 0 (> 0: a
+/// rounded polygon, its core grown by radius). Segment, capsule, chain segment: count 2, the two points (centres),
+/// normals[0] = (dy, -dx) / length for the edge 0 -> 1 and normals[1] = -normals[0] (the two edges of a 2-vertex
+/// polygon); radius the capsule's (> 0), 0 for the others. So every kind but the circle is a rounded polygon of 2
+/// to 8 vertices: its core (the vertices' hull, a segment for 2) grown by radius. A chain segment is two-sided here
+/// (conservative: it never tunnels); the core's continuous stage skips it for a body that starts behind it.
 /// boundingRadius: the farthest point of the shape from the body origin (m), which bounds how fast rotation moves
 /// any of its points.
 struct Shape {
@@ -194,19 +200,113 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
     return fromPoints(xa.apply(pa), xa.apply(pb));
 }
 
+/// The shapes whose paths predate the rounded kinds (polygonCircle, polygonPolygon): polygons of radius 0. Every
+/// other kind but the circle (radius > 0 or 2 vertices) takes roundedCircle and roundedPolygons.
+PHYSIM_HOST_DEVICE inline bool sharpPolygon(const Shape& s) { return s.kind == kPolygon && s.radius == 0.0; }
+
+// A rounded shape a (any kind but the circle) against a circle, in a's frame: the distance from the centre to a's
+// core minus both radii. A core of 3 or more vertices holds the centre when no face has it in front; a 2-vertex
+// core (a segment, searched as its one edge) holds it only on the segment, where its distance is 0.
+PHYSIM_HOST_DEVICE inline Distance roundedCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    const Vec c = xa.applyInverse(xb.apply(b.vertices[0]));
+    const int edges = a.count == 2 ? 1 : a.count;
+    double bestSq = INFINITY;
+    Vec surface{0.0, 0.0};
+    bool outside = a.count == 2;
+    for (int i = 0; i < edges; ++i) {
+        if (dot(a.normals[i], c - a.vertices[i]) > 0.0) outside = true;
+        const Vec q = closestOnSegment(c, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
+        const double sq = lengthSquared(c - q);
+        if (sq < bestSq) {
+            bestSq = sq;
+            surface = q;
+        }
+    }
+    if (!outside) return noDistance();
+    const double toCentre = ::sqrt(bestSq), radii = a.radius + b.radius;
+    if (!(toCentre > radii)) return noDistance();
+    const Vec n = (1.0 / toCentre) * (c - surface);
+    return {toCentre - radii, xa.q.apply(n), xa.apply(surface + a.radius * n), xa.apply(c - b.radius * n)};
+}
+
+// Two shapes, neither a circle, in a's frame: polygonPolygon's separation test and vertex-edge search on the cores,
+// then both radii off. A 2-vertex core is a segment whose two edges (0 -> 1 and back) are one: it is searched once
+// and every vertex counts against it (none faces away from both). Two segments on one line are separated by
+// neither's normal, only along their direction, which is tested too.
+PHYSIM_HOST_DEVICE inline Distance roundedPolygons(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+    const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
+    const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
+    bool separated = false;
+    for (int i = 0; i < a.count && !separated; ++i) {
+        double s = INFINITY;
+        for (int j = 0; j < b.count; ++j) s = minOf(s, dot(a.normals[i], relative.apply(b.vertices[j]) - a.vertices[i]));
+        separated = s > 0.0;
+    }
+    for (int j = 0; j < b.count && !separated; ++j) {
+        const Vec nb = q.apply(b.normals[j]);
+        const Vec vb = relative.apply(b.vertices[j]);
+        double s = INFINITY;
+        for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb, a.vertices[i] - vb));
+        separated = s > 0.0;
+    }
+    if (!separated && a.count == 2 && b.count == 2) {
+        const Vec e = a.vertices[1] - a.vertices[0];  // a spans [e.v0, e.v1] along e
+        const double h0 = dot(e, relative.apply(b.vertices[0])), h1 = dot(e, relative.apply(b.vertices[1]));
+        separated = minOf(h0, h1) > dot(e, a.vertices[1]) || maxOf(h0, h1) < dot(e, a.vertices[0]);
+    }
+    if (!separated) return noDistance();
+
+    const int edgesA = a.count == 2 ? 1 : a.count, edgesB = b.count == 2 ? 1 : b.count;
+    double bestSq = INFINITY;
+    Vec pa{0.0, 0.0}, pb{0.0, 0.0};
+    for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
+        const Vec vb = relative.apply(b.vertices[j]);
+        for (int i = 0; i < edgesA; ++i) {
+            if (a.count > 2 && dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
+            const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
+            const double sq = lengthSquared(vb - on);
+            if (sq < bestSq) {
+                bestSq = sq;
+                pa = on;
+                pb = vb;
+            }
+        }
+    }
+    for (int j = 0; j < edgesB; ++j) {  // a's vertices against b's edges
+        const Vec from = relative.apply(b.vertices[j]);
+        const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
+        const Vec nb = q.apply(b.normals[j]);
+        for (int i = 0; i < a.count; ++i) {
+            if (b.count > 2 && dot(nb, a.vertices[i] - from) < 0.0) continue;
+            const Vec on = closestOnSegment(a.vertices[i], from, to);
+            const double sq = lengthSquared(a.vertices[i] - on);
+            if (sq < bestSq) {
+                bestSq = sq;
+                pa = a.vertices[i];
+                pb = on;
+            }
+        }
+    }
+    const double cores = ::sqrt(bestSq), radii = a.radius + b.radius;
+    if (!(cores > radii)) return noDistance();
+    const Vec n = (1.0 / cores) * (pb - pa);
+    return {cores - radii, xa.q.apply(n), xa.apply(pa + a.radius * n), xa.apply(pb - b.radius * n)};
+}
+
 /// Exact Euclidean distance between two placed convex shapes.
 PHYSIM_HOST_DEVICE inline Distance shapeDistance(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     if (a.kind == kCircle && b.kind == kCircle) return circleCircle(a, xa, b, xb);
-    if (b.kind == kCircle) return polygonCircle(a, xa, b, xb);
+    if (b.kind == kCircle) return sharpPolygon(a) ? polygonCircle(a, xa, b, xb) : roundedCircle(a, xa, b, xb);
     if (a.kind == kCircle) {
-        Distance d = polygonCircle(b, xb, a, xa);
+        Distance d = sharpPolygon(b) ? polygonCircle(b, xb, a, xa) : roundedCircle(b, xb, a, xa);
         const Vec swap = d.pointA;
         d.pointA = d.pointB;
         d.pointB = swap;
         d.normal = -d.normal;
         return d;
     }
-    return polygonPolygon(a, xa, b, xb);
+    if (sharpPolygon(a) && sharpPolygon(b)) return polygonPolygon(a, xa, b, xb);
+    return roundedPolygons(a, xa, b, xb);
 }
 
 /// kInvalid: the pair's entries failed the batch's checks (pairHolds) and were not solved. kFailed: the advancement
@@ -227,13 +327,17 @@ struct Toi {
 };
 
 PHYSIM_HOST_DEVICE inline Vec perp(Vec v) { return {-v.y, v.x}; }
-PHYSIM_HOST_DEVICE inline double maxOf(double a, double b) { return a < b ? b : a; }
 
-/// How far the points that bound a shape (a polygon's vertices, a circle's centre) lie from the body origin (m):
-/// what turning the body moves them by per radian. A circle turning about its own centre moves no boundary point
-/// outward, so its radius does not count.
+/// How far the points that bound a shape's core (a polygon's vertices, a circle's centre, a capsule's centres) lie
+/// from the body origin (m): what turning the body moves them by per radian. A radius about the core turns onto
+/// itself and moves no boundary point outward, so it does not count (safeAdvance adds it to the extents). A sharp
+/// polygon's core reaches its bounding radius.
 PHYSIM_HOST_DEVICE inline double turningReach(const Shape& s) {
-    return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
+    if (s.kind == kCircle || sharpPolygon(s))
+        return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
+    double reach = 0.0;
+    for (int i = 0; i < s.count; ++i) reach = maxOf(reach, ::sqrt(lengthSquared(s.vertices[i])));
+    return reach;
 }
 
 /// Smallest s > 0 where e + b s - k s^2 / 2 falls to 0, for e > 0 and any k (k < 0 curves up); INFINITY when it
@@ -489,7 +593,8 @@ PHYSIM_HOST_DEVICE inline bool finite(double x) { return x - x == 0.0; }
 /// Each normal is its edge's outward unit normal (unit to 2e-9, square to the edge to 1e-9 rad, the bounds
 /// validate(Geometry) allows) and every other vertex lies strictly inside every edge's line. Together these hold
 /// exactly for strictly convex, counter-clockwise, simple polygons (a star, or a repeated, coincident or collinear
-/// vertex, breaks the second). O(count^2) multiplications, no square roots or divisions.
+/// vertex, breaks the second). O(count^2) multiplications, no square roots or divisions. For 2 vertices (a segment:
+/// edges 0 -> 1 and back) it asks two distinct finite points with normals[1] = -normals[0] square to them.
 PHYSIM_HOST_DEVICE inline bool polygonHolds(const BatchView& v, std::int32_t first, std::int32_t count) {
     for (std::int32_t i = 0; i < count; ++i) {
         const std::int32_t a = first + i, next = i + 1 == count ? 0 : i + 1, b = first + next;
@@ -521,18 +626,19 @@ PHYSIM_HOST_DEVICE inline bool radiusBounds(const BatchView& v, std::int32_t s) 
 }
 
 /// Shape s is one the kernel can read and trust: a known kind, a vertex range inside the arrays, the geometry of
-/// its kind, and a bounding radius that bounds it.
+/// its kind, and a bounding radius that bounds it. Vertex counts: circle 1, polygon 3 to 8, the others 2. Radius:
+/// circle and capsule > 0, polygon >= 0, segment and chain segment 0.
 PHYSIM_HOST_DEVICE inline bool shapeHolds(const BatchView& v, std::int32_t s) {
     if (s < 0 || s >= v.shapeCount) return false;
     const std::int32_t kind = v.kind[s], first = v.firstVertex[s], count = v.vertexCount[s];
-    const bool circle = kind == kCircle;
-    if (!circle && kind != kPolygon) return false;
-    if (count < (circle ? 1 : 3) || count > (circle ? 1 : kMaxVertices)) return false;
+    if (kind < kCircle || kind > kChainSegment) return false;
+    const bool circle = kind == kCircle, polygon = kind == kPolygon;
+    if (count < (circle ? 1 : polygon ? 3 : 2) || count > (circle ? 1 : polygon ? kMaxVertices : 2)) return false;
     if (first < 0 || first > v.vertexTotal - count) return false;
-    const bool geometry = circle ? finite(v.vertexX[first]) && finite(v.vertexY[first]) && v.radius[s] > 0.0 &&
-                                       finite(v.radius[s])
-                                 : v.radius[s] == 0.0 && polygonHolds(v, first, count);
-    return geometry && radiusBounds(v, s);
+    const double r = v.radius[s];
+    const bool radius = circle || kind == kCapsule ? r > 0.0 && finite(r) : polygon ? r >= 0.0 && finite(r) : r == 0.0;
+    const bool geometry = circle ? finite(v.vertexX[first]) && finite(v.vertexY[first]) : polygonHolds(v, first, count);
+    return radius && geometry && radiusBounds(v, s);
 }
 
 PHYSIM_HOST_DEVICE inline bool bodyHolds(const BatchView& v, std::int32_t body) {
