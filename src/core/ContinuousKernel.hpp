@@ -56,8 +56,8 @@ struct Xf {
 
 /// The shape kinds, each coded by its index in the core's Geometry (src/core/shapes/ShapeKinds.hpp checks it; the
 /// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
-/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon for the circle and the
-/// sharp polygon; roundedCircle, roundedPolygons for the rest), turningReach, and its checks in shapeHolds.
+/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon: every kind but the circle
+/// is a polygon there), turningReach, and its checks in shapeHolds.
 enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1, kSegment = 2, kCapsule = 3, kChainSegment = 4 };
 constexpr int kMaxVertices = 8;
 
@@ -120,94 +120,12 @@ PHYSIM_HOST_DEVICE inline Distance circleCircle(const Shape& a, const Xf& xa, co
     return {centres - a.radius - b.radius, n, ca + a.radius * n, cb - b.radius * n};
 }
 
-// In the polygon's frame: the centre is inside when no face has it in front; otherwise the closest boundary point
-// is the nearest of the edges' closest points.
+// Every kind but the circle is a polygon here: its core (2 to 8 vertices) grown by its radius.
+
+// In the polygon's frame: a core of 3 or more vertices holds the centre when no face has it in front; otherwise the
+// closest core point is the nearest of the edges' closest points. A 2-vertex core (a segment) is searched as its one
+// edge and holds the centre only on it, where the distance is 0. Both radii then come off.
 PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
-    const Vec c = xa.applyInverse(xb.apply(b.vertices[0]));
-    double bestSq = INFINITY;
-    Vec surface{0.0, 0.0};
-    bool outside = false;
-    for (int i = 0; i < a.count; ++i) {
-        if (dot(a.normals[i], c - a.vertices[i]) > 0.0) outside = true;
-        const Vec q = closestOnSegment(c, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
-        const double sq = lengthSquared(c - q);
-        if (sq < bestSq) {
-            bestSq = sq;
-            surface = q;
-        }
-    }
-    if (!outside) return noDistance();
-    const double toCentre = ::sqrt(bestSq);
-    if (!(toCentre > b.radius)) return noDistance();
-    const Vec n = (1.0 / toCentre) * (c - surface);
-    return {toCentre - b.radius, xa.q.apply(n), xa.apply(surface), xa.apply(c - b.radius * n)};
-}
-
-// In a's frame. Disjoint convex polygons (some face separates them: SAT over both polygons' faces) have their
-// closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge pairs
-// (at most 2 * 8 * 8) is the exact distance. A vertex outside a convex polygon is nearest to an edge that faces
-// it (its outward normal has the vertex in front, or on the line), so edges facing away are skipped. b's vertices
-// and normals are moved into a's frame where they are used rather than stored in local arrays: the same
-// arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such arrays (docs/cuda.md).
-PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
-    const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
-    const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
-    bool separated = false;
-    for (int i = 0; i < a.count && !separated; ++i) {
-        double s = INFINITY;
-        for (int j = 0; j < b.count; ++j) s = minOf(s, dot(a.normals[i], relative.apply(b.vertices[j]) - a.vertices[i]));
-        separated = s > 0.0;
-    }
-    for (int j = 0; j < b.count && !separated; ++j) {
-        const Vec nb = q.apply(b.normals[j]);
-        const Vec vb = relative.apply(b.vertices[j]);
-        double s = INFINITY;
-        for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb, a.vertices[i] - vb));
-        separated = s > 0.0;
-    }
-    if (!separated) return noDistance();
-
-    double bestSq = INFINITY;
-    Vec pa{0.0, 0.0}, pb{0.0, 0.0};
-    for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
-        const Vec vb = relative.apply(b.vertices[j]);
-        for (int i = 0; i < a.count; ++i) {
-            if (dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
-            const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
-            const double sq = lengthSquared(vb - on);
-            if (sq < bestSq) {
-                bestSq = sq;
-                pa = on;
-                pb = vb;
-            }
-        }
-    }
-    for (int j = 0; j < b.count; ++j) {  // a's vertices against b's edges
-        const Vec from = relative.apply(b.vertices[j]);
-        const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
-        const Vec nb = q.apply(b.normals[j]);
-        for (int i = 0; i < a.count; ++i) {
-            if (dot(nb, a.vertices[i] - from) < 0.0) continue;
-            const Vec on = closestOnSegment(a.vertices[i], from, to);
-            const double sq = lengthSquared(a.vertices[i] - on);
-            if (sq < bestSq) {
-                bestSq = sq;
-                pa = a.vertices[i];
-                pb = on;
-            }
-        }
-    }
-    return fromPoints(xa.apply(pa), xa.apply(pb));
-}
-
-/// The shapes whose paths predate the rounded kinds (polygonCircle, polygonPolygon): polygons of radius 0. Every
-/// other kind but the circle (radius > 0 or 2 vertices) takes roundedCircle and roundedPolygons.
-PHYSIM_HOST_DEVICE inline bool sharpPolygon(const Shape& s) { return s.kind == kPolygon && s.radius == 0.0; }
-
-// A rounded shape a (any kind but the circle) against a circle, in a's frame: the distance from the centre to a's
-// core minus both radii. A core of 3 or more vertices holds the centre when no face has it in front; a 2-vertex
-// core (a segment, searched as its one edge) holds it only on the segment, where its distance is 0.
-PHYSIM_HOST_DEVICE inline Distance roundedCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     const Vec c = xa.applyInverse(xb.apply(b.vertices[0]));
     const int edges = a.count == 2 ? 1 : a.count;
     double bestSq = INFINITY;
@@ -223,17 +141,23 @@ PHYSIM_HOST_DEVICE inline Distance roundedCircle(const Shape& a, const Xf& xa, c
         }
     }
     if (!outside) return noDistance();
-    const double toCentre = ::sqrt(bestSq), radii = a.radius + b.radius;
+    const double toCentre = ::sqrt(bestSq), radii = a.radius + b.radius;  // radii = b.radius exactly for radius 0
     if (!(toCentre > radii)) return noDistance();
     const Vec n = (1.0 / toCentre) * (c - surface);
-    return {toCentre - radii, xa.q.apply(n), xa.apply(surface + a.radius * n), xa.apply(c - b.radius * n)};
+    const Vec onA = a.radius == 0.0 ? surface : surface + a.radius * n;
+    return {toCentre - radii, xa.q.apply(n), xa.apply(onA), xa.apply(c - b.radius * n)};
 }
 
-// Two shapes, neither a circle, in a's frame: polygonPolygon's separation test and vertex-edge search on the cores,
-// then both radii off. A 2-vertex core is a segment whose two edges (0 -> 1 and back) are one: it is searched once
-// and every vertex counts against it (none faces away from both). Two segments on one line are separated by
-// neither's normal, only along their direction, which is tested too.
-PHYSIM_HOST_DEVICE inline Distance roundedPolygons(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
+// In a's frame, on the cores. Disjoint convex polygons (some face separates them: SAT over both polygons' faces)
+// have their closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge
+// pairs (at most 2 * 8 * 8) is the exact distance; both radii then come off. A vertex outside a convex polygon is
+// nearest to an edge that faces it (its outward normal has the vertex in front, or on the line), so edges facing
+// away are skipped. A 2-vertex core is a segment whose two edges (0 -> 1 and back) are one: it is searched once and
+// no vertex is skipped against it. Two segments on one line are separated by neither's normal, only along their
+// direction, which is tested too. b's vertices and normals are moved into a's frame where they are used rather
+// than stored in local arrays: the same arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such
+// arrays (docs/cuda.md).
+PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
     const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
     bool separated = false;
@@ -287,6 +211,7 @@ PHYSIM_HOST_DEVICE inline Distance roundedPolygons(const Shape& a, const Xf& xa,
             }
         }
     }
+    if (a.radius == 0.0 && b.radius == 0.0) return fromPoints(xa.apply(pa), xa.apply(pb));
     const double cores = ::sqrt(bestSq), radii = a.radius + b.radius;
     if (!(cores > radii)) return noDistance();
     const Vec n = (1.0 / cores) * (pb - pa);
@@ -296,17 +221,16 @@ PHYSIM_HOST_DEVICE inline Distance roundedPolygons(const Shape& a, const Xf& xa,
 /// Exact Euclidean distance between two placed convex shapes.
 PHYSIM_HOST_DEVICE inline Distance shapeDistance(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     if (a.kind == kCircle && b.kind == kCircle) return circleCircle(a, xa, b, xb);
-    if (b.kind == kCircle) return sharpPolygon(a) ? polygonCircle(a, xa, b, xb) : roundedCircle(a, xa, b, xb);
+    if (b.kind == kCircle) return polygonCircle(a, xa, b, xb);
     if (a.kind == kCircle) {
-        Distance d = sharpPolygon(b) ? polygonCircle(b, xb, a, xa) : roundedCircle(b, xb, a, xa);
+        Distance d = polygonCircle(b, xb, a, xa);
         const Vec swap = d.pointA;
         d.pointA = d.pointB;
         d.pointB = swap;
         d.normal = -d.normal;
         return d;
     }
-    if (sharpPolygon(a) && sharpPolygon(b)) return polygonPolygon(a, xa, b, xb);
-    return roundedPolygons(a, xa, b, xb);
+    return polygonPolygon(a, xa, b, xb);
 }
 
 /// kInvalid: the pair's entries failed the batch's checks (pairHolds) and were not solved. kFailed: the advancement
@@ -333,7 +257,7 @@ PHYSIM_HOST_DEVICE inline Vec perp(Vec v) { return {-v.y, v.x}; }
 /// itself and moves no boundary point outward, so it does not count (safeAdvance adds it to the extents). A sharp
 /// polygon's core reaches its bounding radius.
 PHYSIM_HOST_DEVICE inline double turningReach(const Shape& s) {
-    if (s.kind == kCircle || sharpPolygon(s))
+    if (s.kind == kCircle || (s.kind == kPolygon && s.radius == 0.0))
         return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
     double reach = 0.0;
     for (int i = 0; i < s.count; ++i) reach = maxOf(reach, ::sqrt(lengthSquared(s.vertices[i])));

@@ -85,7 +85,8 @@ struct KernelPair {
 /// Fast movers (circle, sharp box, capsule, rounded box; 2 to 20 cm) shot at thin obstacles near the origin (a
 /// segment, a capsule 1 cm thick, a rounded pentagon, a chain segment; 0.5 to 2 m long), every mover against every
 /// obstacle in turn. The mover starts 0.3 to 3 m away, travels 1 to 20 m, aimed within 0.6 m of the centre, and
-/// turns up to 6 rad either way; the obstacle turns up to 0.5 rad and drifts up to 0.1 m. Without continuous
+/// turns up to 6 rad either way; the obstacle drifts up to 0.1 m and turns up to 0.5 rad, or in every other run of
+/// 16 pairs (every mover against every obstacle) spins like a propeller, up to 17 rad. Without continuous
 /// detection most of these tunnel: a segment has no thickness at all. Pairs may start touching.
 inline std::vector<KernelPair> roundedKindsPairs(int count, unsigned seed) {
     std::mt19937 rng(seed);
@@ -120,7 +121,8 @@ inline std::vector<KernelPair> roundedKindsPairs(int count, unsigned seed) {
         const Vec2 start = -in(0.3, 3.0) * dir + in(-0.6, 0.6) * side;
         const double a0 = in(-M_PI, M_PI), travel = in(1.0, 20.0), turn = in(-6.0, 6.0);
         p.sa = Sweep{start, start + travel * dir, a0, a0 + turn};
-        const double b0 = in(-M_PI, M_PI), drift = in(-0.1, 0.1), spin = in(-0.5, 0.5);
+        const double b0 = in(-M_PI, M_PI), drift = in(-0.1, 0.1);
+        const double spin = (i / 16) % 2 == 0 ? in(-0.5, 0.5) : in(-17.0, 17.0);
         p.sb = Sweep{Vec2::Zero(), Vec2(drift, -drift), b0, b0 + spin};
         pairs.push_back(p);
     }
