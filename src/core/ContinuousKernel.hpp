@@ -34,6 +34,7 @@ PHYSIM_HOST_DEVICE inline Vec operator*(double s, Vec a) { return {s * a.x, s * 
 PHYSIM_HOST_DEVICE inline double dot(Vec a, Vec b) { return a.x * b.x + a.y * b.y; }
 PHYSIM_HOST_DEVICE inline double lengthSquared(Vec a) { return a.x * a.x + a.y * a.y; }
 PHYSIM_HOST_DEVICE inline double minOf(double a, double b) { return b < a ? b : a; }
+PHYSIM_HOST_DEVICE inline double maxOf(double a, double b) { return a < b ? b : a; }
 PHYSIM_HOST_DEVICE inline double clamp01(double s) { return s < 0.0 ? 0.0 : (s > 1.0 ? 1.0 : s); }
 
 /// Rotation as cosine and sine (the core's Rotation without Eigen).
@@ -55,13 +56,18 @@ struct Xf {
 
 /// The shape kinds, each coded by its index in the core's Geometry (src/core/shapes/ShapeKinds.hpp checks it; the
 /// kind's room there converts it to a Shape). A kind appears in this file only in: its layout in Shape (below), its
-/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon), turningReach, and its
-/// checks in shapeHolds.
+/// distance to every kind in shapeDistance (circleCircle, polygonCircle, polygonPolygon: every kind but the circle
+/// is a polygon there), turningReach, and its checks in shapeHolds.
 enum ShapeKind : std::int32_t { kCircle = 0, kPolygon = 1, kSegment = 2, kCapsule = 3, kChainSegment = 4 };
 constexpr int kMaxVertices = 8;
 
 /// One shape in its body's frame. Circle: vertices[0] is the centre, count 1, radius > 0. Polygon: 3 to 8
-/// counter-clockwise vertices with outward unit normals (normals[i] for the edge i -> i + 1), radius 0.
+/// counter-clockwise vertices with outward unit normals (normals[i] for the edge i -> i + 1), radius >= 0 (> 0: a
+/// rounded polygon, its core grown by radius). Segment, capsule, chain segment: count 2, the two points (centres),
+/// normals[0] = (dy, -dx) / length for the edge 0 -> 1 and normals[1] = -normals[0] (the two edges of a 2-vertex
+/// polygon); radius the capsule's (> 0), 0 for the others. So every kind but the circle is a rounded polygon of 2
+/// to 8 vertices: its core (the vertices' hull, a segment for 2) grown by radius. A chain segment is two-sided here
+/// (conservative: it never tunnels); the core's continuous stage skips it for a body that starts behind it.
 /// boundingRadius: the farthest point of the shape from the body origin (m), which bounds how fast rotation moves
 /// any of its points.
 struct Shape {
@@ -114,14 +120,18 @@ PHYSIM_HOST_DEVICE inline Distance circleCircle(const Shape& a, const Xf& xa, co
     return {centres - a.radius - b.radius, n, ca + a.radius * n, cb - b.radius * n};
 }
 
-// In the polygon's frame: the centre is inside when no face has it in front; otherwise the closest boundary point
-// is the nearest of the edges' closest points.
+// Every kind but the circle is a polygon here: its core (2 to 8 vertices) grown by its radius.
+
+// In the polygon's frame: a core of 3 or more vertices holds the centre when no face has it in front; otherwise the
+// closest core point is the nearest of the edges' closest points. A 2-vertex core (a segment) is searched as its one
+// edge and holds the centre only on it, where the distance is 0. Both radii then come off.
 PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     const Vec c = xa.applyInverse(xb.apply(b.vertices[0]));
+    const int edges = a.count == 2 ? 1 : a.count;
     double bestSq = INFINITY;
     Vec surface{0.0, 0.0};
-    bool outside = false;
-    for (int i = 0; i < a.count; ++i) {
+    bool outside = a.count == 2;
+    for (int i = 0; i < edges; ++i) {
         if (dot(a.normals[i], c - a.vertices[i]) > 0.0) outside = true;
         const Vec q = closestOnSegment(c, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
         const double sq = lengthSquared(c - q);
@@ -131,18 +141,22 @@ PHYSIM_HOST_DEVICE inline Distance polygonCircle(const Shape& a, const Xf& xa, c
         }
     }
     if (!outside) return noDistance();
-    const double toCentre = ::sqrt(bestSq);
-    if (!(toCentre > b.radius)) return noDistance();
+    const double toCentre = ::sqrt(bestSq), radii = a.radius + b.radius;  // radii = b.radius exactly for radius 0
+    if (!(toCentre > radii)) return noDistance();
     const Vec n = (1.0 / toCentre) * (c - surface);
-    return {toCentre - b.radius, xa.q.apply(n), xa.apply(surface), xa.apply(c - b.radius * n)};
+    const Vec onA = a.radius == 0.0 ? surface : surface + a.radius * n;
+    return {toCentre - radii, xa.q.apply(n), xa.apply(onA), xa.apply(c - b.radius * n)};
 }
 
-// In a's frame. Disjoint convex polygons (some face separates them: SAT over both polygons' faces) have their
-// closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge pairs
-// (at most 2 * 8 * 8) is the exact distance. A vertex outside a convex polygon is nearest to an edge that faces
-// it (its outward normal has the vertex in front, or on the line), so edges facing away are skipped. b's vertices
-// and normals are moved into a's frame where they are used rather than stored in local arrays: the same
-// arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such arrays (docs/cuda.md).
+// In a's frame, on the cores. Disjoint convex polygons (some face separates them: SAT over both polygons' faces)
+// have their closest points at a vertex of one against an edge of the other, so the minimum over all vertex-edge
+// pairs (at most 2 * 8 * 8) is the exact distance; both radii then come off. A vertex outside a convex polygon is
+// nearest to an edge that faces it (its outward normal has the vertex in front, or on the line), so edges facing
+// away are skipped. A 2-vertex core is a segment whose two edges (0 -> 1 and back) are one: it is searched once and
+// no vertex is skipped against it. Two segments on one line are separated by neither's normal, only along their
+// direction, which is tested too. b's vertices and normals are moved into a's frame where they are used rather
+// than stored in local arrays: the same arithmetic, and nvcc 13.0 at -O3 computed wrong distances from such
+// arrays (docs/cuda.md).
 PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, const Shape& b, const Xf& xb) {
     const Rot q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
     const Xf relative{xa.q.applyInverse(xb.p - xa.p), q};
@@ -159,14 +173,20 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
         for (int i = 0; i < a.count; ++i) s = minOf(s, dot(nb, a.vertices[i] - vb));
         separated = s > 0.0;
     }
+    if (!separated && a.count == 2 && b.count == 2) {
+        const Vec e = a.vertices[1] - a.vertices[0];  // a spans [e.v0, e.v1] along e
+        const double h0 = dot(e, relative.apply(b.vertices[0])), h1 = dot(e, relative.apply(b.vertices[1]));
+        separated = minOf(h0, h1) > dot(e, a.vertices[1]) || maxOf(h0, h1) < dot(e, a.vertices[0]);
+    }
     if (!separated) return noDistance();
 
+    const int edgesA = a.count == 2 ? 1 : a.count, edgesB = b.count == 2 ? 1 : b.count;
     double bestSq = INFINITY;
     Vec pa{0.0, 0.0}, pb{0.0, 0.0};
     for (int j = 0; j < b.count; ++j) {  // b's vertices against a's edges
         const Vec vb = relative.apply(b.vertices[j]);
-        for (int i = 0; i < a.count; ++i) {
-            if (dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
+        for (int i = 0; i < edgesA; ++i) {
+            if (a.count > 2 && dot(a.normals[i], vb - a.vertices[i]) < 0.0) continue;
             const Vec on = closestOnSegment(vb, a.vertices[i], a.vertices[i + 1 == a.count ? 0 : i + 1]);
             const double sq = lengthSquared(vb - on);
             if (sq < bestSq) {
@@ -176,12 +196,12 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
             }
         }
     }
-    for (int j = 0; j < b.count; ++j) {  // a's vertices against b's edges
+    for (int j = 0; j < edgesB; ++j) {  // a's vertices against b's edges
         const Vec from = relative.apply(b.vertices[j]);
         const Vec to = relative.apply(b.vertices[j + 1 == b.count ? 0 : j + 1]);
         const Vec nb = q.apply(b.normals[j]);
         for (int i = 0; i < a.count; ++i) {
-            if (dot(nb, a.vertices[i] - from) < 0.0) continue;
+            if (b.count > 2 && dot(nb, a.vertices[i] - from) < 0.0) continue;
             const Vec on = closestOnSegment(a.vertices[i], from, to);
             const double sq = lengthSquared(a.vertices[i] - on);
             if (sq < bestSq) {
@@ -191,7 +211,11 @@ PHYSIM_HOST_DEVICE inline Distance polygonPolygon(const Shape& a, const Xf& xa, 
             }
         }
     }
-    return fromPoints(xa.apply(pa), xa.apply(pb));
+    if (a.radius == 0.0 && b.radius == 0.0) return fromPoints(xa.apply(pa), xa.apply(pb));
+    const double cores = ::sqrt(bestSq), radii = a.radius + b.radius;
+    if (!(cores > radii)) return noDistance();
+    const Vec n = (1.0 / cores) * (pb - pa);
+    return {cores - radii, xa.q.apply(n), xa.apply(pa + a.radius * n), xa.apply(pb - b.radius * n)};
 }
 
 /// Exact Euclidean distance between two placed convex shapes.
@@ -227,13 +251,17 @@ struct Toi {
 };
 
 PHYSIM_HOST_DEVICE inline Vec perp(Vec v) { return {-v.y, v.x}; }
-PHYSIM_HOST_DEVICE inline double maxOf(double a, double b) { return a < b ? b : a; }
 
-/// How far the points that bound a shape (a polygon's vertices, a circle's centre) lie from the body origin (m):
-/// what turning the body moves them by per radian. A circle turning about its own centre moves no boundary point
-/// outward, so its radius does not count.
+/// How far the points that bound a shape's core (a polygon's vertices, a circle's centre, a capsule's centres) lie
+/// from the body origin (m): what turning the body moves them by per radian. A radius about the core turns onto
+/// itself and moves no boundary point outward, so it does not count (safeAdvance adds it to the extents). A sharp
+/// polygon's core reaches its bounding radius.
 PHYSIM_HOST_DEVICE inline double turningReach(const Shape& s) {
-    return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
+    if (s.kind == kCircle || (s.kind == kPolygon && s.radius == 0.0))
+        return s.kind == kCircle ? ::sqrt(lengthSquared(s.vertices[0])) : s.boundingRadius;
+    double reach = 0.0;
+    for (int i = 0; i < s.count; ++i) reach = maxOf(reach, ::sqrt(lengthSquared(s.vertices[i])));
+    return reach;
 }
 
 /// Smallest s > 0 where e + b s - k s^2 / 2 falls to 0, for e > 0 and any k (k < 0 curves up); INFINITY when it
@@ -489,7 +517,8 @@ PHYSIM_HOST_DEVICE inline bool finite(double x) { return x - x == 0.0; }
 /// Each normal is its edge's outward unit normal (unit to 2e-9, square to the edge to 1e-9 rad, the bounds
 /// validate(Geometry) allows) and every other vertex lies strictly inside every edge's line. Together these hold
 /// exactly for strictly convex, counter-clockwise, simple polygons (a star, or a repeated, coincident or collinear
-/// vertex, breaks the second). O(count^2) multiplications, no square roots or divisions.
+/// vertex, breaks the second). O(count^2) multiplications, no square roots or divisions. For 2 vertices (a segment:
+/// edges 0 -> 1 and back) it asks two distinct finite points with normals[1] = -normals[0] square to them.
 PHYSIM_HOST_DEVICE inline bool polygonHolds(const BatchView& v, std::int32_t first, std::int32_t count) {
     for (std::int32_t i = 0; i < count; ++i) {
         const std::int32_t a = first + i, next = i + 1 == count ? 0 : i + 1, b = first + next;
@@ -521,18 +550,19 @@ PHYSIM_HOST_DEVICE inline bool radiusBounds(const BatchView& v, std::int32_t s) 
 }
 
 /// Shape s is one the kernel can read and trust: a known kind, a vertex range inside the arrays, the geometry of
-/// its kind, and a bounding radius that bounds it.
+/// its kind, and a bounding radius that bounds it. Vertex counts: circle 1, polygon 3 to 8, the others 2. Radius:
+/// circle and capsule > 0, polygon >= 0, segment and chain segment 0.
 PHYSIM_HOST_DEVICE inline bool shapeHolds(const BatchView& v, std::int32_t s) {
     if (s < 0 || s >= v.shapeCount) return false;
     const std::int32_t kind = v.kind[s], first = v.firstVertex[s], count = v.vertexCount[s];
-    const bool circle = kind == kCircle;
-    if (!circle && kind != kPolygon) return false;
-    if (count < (circle ? 1 : 3) || count > (circle ? 1 : kMaxVertices)) return false;
+    if (kind < kCircle || kind > kChainSegment) return false;
+    const bool circle = kind == kCircle, polygon = kind == kPolygon;
+    if (count < (circle ? 1 : polygon ? 3 : 2) || count > (circle ? 1 : polygon ? kMaxVertices : 2)) return false;
     if (first < 0 || first > v.vertexTotal - count) return false;
-    const bool geometry = circle ? finite(v.vertexX[first]) && finite(v.vertexY[first]) && v.radius[s] > 0.0 &&
-                                       finite(v.radius[s])
-                                 : v.radius[s] == 0.0 && polygonHolds(v, first, count);
-    return geometry && radiusBounds(v, s);
+    const double r = v.radius[s];
+    const bool radius = circle || kind == kCapsule ? r > 0.0 && finite(r) : polygon ? r >= 0.0 && finite(r) : r == 0.0;
+    const bool geometry = circle ? finite(v.vertexX[first]) && finite(v.vertexY[first]) : polygonHolds(v, first, count);
+    return radius && geometry && radiusBounds(v, s);
 }
 
 PHYSIM_HOST_DEVICE inline bool bodyHolds(const BatchView& v, std::int32_t body) {

@@ -4,15 +4,18 @@
 // World whose continuous stage goes through the solver.
 
 #include "KernelBridge.hpp"
+#include "shapes/ShapeKinds.hpp"
 
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/World.hpp"
 
+#include "support/KernelShapes.hpp"
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -227,6 +230,132 @@ TEST(ContinuousBatch, BadInputIsNamed) {
     b = good;
     b.maxIterations = 0;
     expectRejected(b, "maxIterations must be in [1, 1000000], got 0");
+}
+
+// Segments, capsules, chain segments and rounded polygons (shapes built by hand in the kernel's layout,
+// testing::roundedKindsPairs) go through the batch as circles and polygons do: every field of every pair is the
+// one-pair kernel's to the bit.
+TEST(ContinuousBatch, SegmentCapsuleChainAndRoundedMatchTheOnePairKernel) {
+    const std::vector<testing::KernelPair> pairs = testing::roundedKindsPairs(800, 7);
+    const ContinuousBatch batch = testing::kernelBatch(pairs);
+    EXPECT_NO_THROW(validate(batch));
+    ContinuousBatchResult result;
+    CpuContinuousSolver().solve(batch, result);
+    int hits = 0;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+        const testing::KernelPair& p = pairs[i];
+        const kernel::Toi one = kernel::timeOfImpact(p.a, testing::kernelMotion(p.sa), p.b,
+                                                     testing::kernelMotion(p.sb), batch.tolerance, batch.maxIterations);
+        ASSERT_EQ(result.state[i], one.state) << "pair " << i;
+        ASSERT_EQ(result.iterations[i], one.iterations) << "pair " << i;
+        ASSERT_EQ(result.t[i], one.t) << "pair " << i;
+        ASSERT_EQ(result.gap[i], one.gap) << "pair " << i;
+        ASSERT_EQ(result.normalX[i], one.normal.x) << "pair " << i;
+        ASSERT_EQ(result.pointY[i], one.point.y) << "pair " << i;
+        hits += result.state[i] == kernel::kHit;
+    }
+    EXPECT_GT(hits, 300);
+}
+
+// A batch of one shape, built by hand and then broken by `edit`, followed by a triangle so that a vertex count
+// larger than the shape's still indexes inside the arrays (only the kind's own rule can refuse it).
+ContinuousBatch oneShape(const kernel::Shape& shape, const std::function<void(ContinuousBatch::Shapes&)>& edit) {
+    ContinuousBatch batch;
+    testing::appendShape(batch, shape);
+    testing::appendShape(batch, testing::kernelRounded(kernel::kPolygon, {{0, 0}, {1, 0}, {0, 1}}, 0.0));
+    edit(batch.shapes);
+    return batch;
+}
+
+// What the kernel accepts of the kinds beyond the circle and the sharp polygon (kernel::shapeHolds, which every
+// pair's solve runs first): 2 vertices for a segment, a capsule or a chain segment, radius 0 for a segment and a
+// chain segment, > 0 for a capsule, >= 0 for a polygon, a bounding radius that includes the radius; and a
+// segment's geometry: two distinct finite points, normals[0] the unit normal on its right, normals[1] its negative.
+TEST(ContinuousBatch, SegmentCapsuleChainAndRoundedEntriesTheKernelRefuses) {
+    const kernel::Shape segment = testing::kernelSegment({-1.0, 0.5}, {2.0, 0.0});
+    const kernel::Shape chain = testing::kernelChainSegment({1.0, 0.0}, {-1.0, 0.0});
+    const kernel::Shape capsule = testing::kernelCapsule({-0.5, 0.0}, {0.5, 0.2}, 0.1);
+    const kernel::Shape rounded = testing::kernelBox(0.3, 0.2, 0.05);
+    auto holds = [](const ContinuousBatch& b) { return kernel::shapeHolds(viewOf(b), 0); };
+    auto none = [](ContinuousBatch::Shapes&) {};
+    for (const kernel::Shape& good : {segment, chain, capsule, rounded}) EXPECT_TRUE(holds(oneShape(good, none)));
+
+    const std::vector<std::pair<const char*, std::function<void(ContinuousBatch::Shapes&)>>> broken = {
+        {"3 vertices", [](auto& s) { s.vertexCount[0] = 3; }},
+        {"1 vertex", [](auto& s) { s.vertexCount[0] = 1; }},
+        {"zero length", [](auto& s) { s.vertexX[1] = s.vertexX[0], s.vertexY[1] = s.vertexY[0]; }},
+        {"NaN point", [](auto& s) { s.vertexY[1] = std::nan(""); }},
+        {"infinite points", [](auto& s) { s.vertexX[0] = s.vertexX[1] = INFINITY; }},
+        {"normals on the left", [](auto& s) {
+             for (int k : {0, 1}) s.normalX[k] = -s.normalX[k], s.normalY[k] = -s.normalY[k];
+         }},
+        {"normals[1] = normals[0]", [](auto& s) { s.normalX[1] = s.normalX[0], s.normalY[1] = s.normalY[0]; }},
+        {"normal not unit", [](auto& s) { s.normalX[0] *= 1.001, s.normalY[0] *= 1.001; }},
+        {"bounding radius short of the radius", [](auto& s) { s.boundingRadius[0] -= s.radius[0] + 1e-3; }},
+        {"kind 5", [](auto& s) { s.kind[0] = 5; }},
+        {"kind -1", [](auto& s) { s.kind[0] = -1; }},
+    };
+    for (const kernel::Shape& shape : {segment, chain, capsule})
+        for (const auto& [what, edit] : broken)
+            EXPECT_FALSE(holds(oneShape(shape, edit))) << "kind " << shape.kind << ": " << what;
+
+    auto radius = [](double r) { return [r](ContinuousBatch::Shapes& s) { s.radius[0] = r, s.boundingRadius[0] += 1.0; }; };
+    for (const double r : {0.1, -0.1, std::nan("")}) {
+        EXPECT_FALSE(holds(oneShape(segment, radius(r)))) << "segment radius " << r;
+        EXPECT_FALSE(holds(oneShape(chain, radius(r)))) << "chain segment radius " << r;
+    }
+    for (const double r : {0.0, -0.1, std::nan(""), double(INFINITY)})
+        EXPECT_FALSE(holds(oneShape(capsule, radius(r)))) << "capsule radius " << r;
+    for (const double r : {-0.01, std::nan(""), double(INFINITY)})
+        EXPECT_FALSE(holds(oneShape(rounded, radius(r)))) << "rounded polygon radius " << r;
+    EXPECT_TRUE(holds(oneShape(rounded, radius(0.0)))) << "a polygon of radius 0 is the sharp one";
+    EXPECT_FALSE(holds(oneShape(rounded, [](auto& s) { s.vertexCount[0] = 2; }))) << "a polygon has 3 or more";
+
+    // A refused entry is never solved: the solver throws std::invalid_argument (validate() names it; see below).
+    ContinuousBatch bad = oneShape(capsule, radius(0.0));
+    bad.addBody(0, Sweep{{0, 0}, {1, 0}, 0, 0});
+    bad.addBody(1, Sweep{{3, 0}, {3, 0}, 0, 0});
+    bad.addPair(0, 1);
+    ContinuousBatchResult r;
+    EXPECT_THROW(CpuContinuousSolver().solve(bad, r), std::invalid_argument);
+}
+
+// validate() names a refused entry of the new kinds through their rooms (src/core/shapes/: fromBatch, radiusProblem,
+// validate, kernelProblem), which come with Geometry's alternatives Segment, Capsule and ChainSegment; until then
+// a kind code without a room is "unsupported", and this test waits for them.
+TEST(ContinuousBatch, SegmentCapsuleChainAndRoundedBadInputIsNamed) {
+    if (kKindCount <= kernel::kChainSegment) GTEST_SKIP() << "Geometry has no Segment, Capsule, ChainSegment rooms yet";
+    auto named = [](const ContinuousBatch& b, std::initializer_list<const char*> expected) {
+        ContinuousBatch batch = b;
+        batch.addBody(0, Sweep{{0, 0}, {1, 0}, 0, 0});
+        batch.addBody(1, Sweep{{3, 0}, {3, 0}, 0, 0});
+        batch.addPair(0, 1);
+        try {
+            validate(batch);
+            ADD_FAILURE() << "accepted";
+        } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            bool found = false;
+            for (const char* x : expected) found = found || what.find(x) != std::string::npos;
+            EXPECT_TRUE(found) << what;
+            EXPECT_EQ(what.find("unsupported shape kind"), std::string::npos) << what;
+        }
+    };
+    const kernel::Shape segment = testing::kernelSegment({-1.0, 0.5}, {2.0, 0.0});
+    const kernel::Shape capsule = testing::kernelCapsule({-0.5, 0.0}, {0.5, 0.2}, 0.1);
+    const kernel::Shape chain = testing::kernelChainSegment({1.0, 0.0}, {-1.0, 0.0});
+    named(oneShape(segment, [](auto& s) { s.vertexCount[0] = 3; }), {"shapes.vertexCount[0] = 3"});
+    named(oneShape(chain, [](auto& s) { s.vertexCount[0] = 1; }), {"shapes.vertexCount[0] = 1"});
+    named(oneShape(capsule, [](auto& s) { s.radius[0] = 0.0; }), {"shapes.radius[0]", "shape 0:"});
+    named(oneShape(segment, [](auto& s) { s.radius[0] = 0.1, s.boundingRadius[0] += 0.1; }),
+          {"shapes.radius[0]", "shape 0:"});
+    named(oneShape(segment, [](auto& s) { s.vertexX[1] = s.vertexX[0], s.vertexY[1] = s.vertexY[0]; }),
+          {"shape 0:"});
+    named(oneShape(chain, [](auto& s) { s.normalX[1] = s.normalX[0], s.normalY[1] = s.normalY[0]; }),
+          {"shape 0:"});
+    named(oneShape(capsule, [](auto& s) { s.boundingRadius[0] -= 0.05; }), {"shapes.boundingRadius[0]"});
+    named(oneShape(testing::kernelBox(0.3, 0.2, 0.05), [](auto& s) { s.radius[0] = -0.05; }),
+          {"shapes.radius[0]", "shape 0:"});
 }
 
 // A solver that counts what the World hands it and solves on the CPU.

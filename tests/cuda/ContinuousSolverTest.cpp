@@ -7,6 +7,7 @@
 
 #include "ContinuousKernel.hpp"
 
+#include "support/KernelShapes.hpp"
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
@@ -43,13 +44,13 @@ TEST(GpuContinuousSolver, BadInputIsNamedAndNeverFaultsTheDevice) {
     // Bad entries: the kernel checks each pair before reading it, so a wild index or an unknown shape kind is
     // reported by name, and with a GPU, the device is still usable afterwards.
     batch = testing::randomBatch(10, 2);
-    batch.shapes.kind[1] = 3;
+    batch.shapes.kind[1] = 7;  // no kind has code 7
     batch.pairs.b[7] = 1 << 30;
     try {
         solver.solve(batch, r);
         ADD_FAILURE() << "accepted an unknown shape kind";
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("unsupported shape kind 3 at shapes.kind[1]"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("unsupported shape kind 7 at shapes.kind[1]"), std::string::npos)
             << e.what();
     }
     batch.shapes.kind[1] = kernel::kPolygon;
@@ -114,6 +115,33 @@ TEST(GpuContinuousSolver, ACudaErrorIsReportedAndTheCpuSolvesTheBatch) {
     EXPECT_EQ(log.str(), before);
     EXPECT_EQ(gpu.t, cpu.t);
     EXPECT_NE(solver.name().find("gpu stopped"), std::string::npos) << solver.name();
+}
+
+// Segments, capsules, chain segments and rounded polygons need no CPU route of their own: the device compiles the
+// same kernel header, so the GPU solver takes them as it takes circles and polygons. With a GPU the batch runs
+// there and agrees with the CPU (testing::compareResults' bound); without one the solver's CUDA-error fallback
+// solves it on the CPU, to the CPU's bits.
+TEST(GpuContinuousSolver, SegmentCapsuleChainAndRoundedKindsRunOnTheGpuOrFallBack) {
+    std::ostringstream log;
+    GpuSolverOptions options;
+    options.minPairs = 0;
+    options.log = &log;
+    GpuContinuousSolver solver(options);
+    const ContinuousBatch batch = testing::kernelBatch(testing::roundedKindsPairs(2000, 12));
+    ContinuousBatchResult gpu, cpu;
+    solver.solve(batch, gpu);
+    CpuContinuousSolver().solve(batch, cpu);
+    ASSERT_EQ(gpu.size(), batch.pairCount());
+    if (haveGpu()) {
+        EXPECT_TRUE(solver.lastRanOnGpu()) << solver.error();
+        EXPECT_EQ(testing::compareResults(batch, gpu, cpu).disagree, 0);
+    } else {
+        EXPECT_FALSE(solver.lastRanOnGpu());
+        EXPECT_NE(log.str().find("run on the CPU"), std::string::npos) << log.str();
+        EXPECT_EQ(gpu.state, cpu.state);
+        EXPECT_EQ(gpu.t, cpu.t);
+        EXPECT_EQ(gpu.normalY, cpu.normalY);
+    }
 }
 
 }  // namespace

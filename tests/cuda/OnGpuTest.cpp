@@ -10,6 +10,7 @@
 
 #include "ContinuousKernel.hpp"
 
+#include "support/KernelShapes.hpp"
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
@@ -114,6 +115,30 @@ TEST(GpuContinuousSolverOnGpu, ShapesKeptOnTheDeviceGiveTheSameAnswers) {
     gpu.solve(batch, second);
     CpuContinuousSolver().solve(batch, cpu);
     EXPECT_EQ(testing::compareResults(batch, second, cpu).disagree, 0);
+}
+
+// Segments, capsules, chain segments and rounded polygons on the device (the kernel header's rounded paths as nvcc
+// compiles them): the same answers as the CPU's within the tolerance, and a hit's gap under it.
+TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnSegmentCapsuleChainAndRoundedPairs) {
+    GpuSolverOptions options;
+    options.minPairs = 0;
+    GpuContinuousSolver solver(options);
+    const ContinuousBatch batch = testing::kernelBatch(testing::roundedKindsPairs(20000, 41));
+    ContinuousBatchResult gpu, cpu;
+    solver.solve(batch, gpu);
+    ASSERT_TRUE(solver.lastRanOnGpu()) << solver.error();
+    CpuContinuousSolver(0).solve(batch, cpu);
+    const testing::Agreement a = testing::compareResults(batch, gpu, cpu);
+    std::cout << "identical " << a.identical << ", within tolerance " << a.within << ", disagreeing " << a.disagree
+              << " of " << batch.pairCount() << "\n";
+    EXPECT_EQ(a.disagree, 0);
+    int hits = 0;
+    for (std::size_t i = 0; i < batch.pairCount(); ++i)
+        if (gpu.state[i] == kernel::kHit) {
+            ++hits;
+            ASSERT_LT(gpu.gap[i], batch.tolerance) << "pair " << i;
+        }
+    EXPECT_GT(hits, 5000);
 }
 
 }  // namespace

@@ -5,7 +5,10 @@
 // code (the shared kernel, src/core/ContinuousKernel.hpp). docs/cuda.md explains the design.
 //
 //   shapes: one entry per distinct shape; its kind's points (and edge normals, where it has edges) sit in the flat
-//           vertex arrays from firstVertex, as addShape lays them out.
+//           vertex arrays from firstVertex, as addShape lays them out: a circle its centre; a polygon 3 to 8
+//           counter-clockwise vertices with outward unit normals, radius >= 0 (> 0: rounded); a segment, capsule or
+//           chain segment its 2 points, normal 0 the unit normal of 0 -> 1 on its right ((dy, -dx) / length) and
+//           normal 1 its negative, radius the capsule's (0 for the others).
 //   bodies: a shape and a motion (pose at t = 0 and at t = 1, linear in between).
 //   pairs:  two bodies each; result i belongs to pair i.
 
@@ -77,8 +80,10 @@ struct ContinuousBatchResult {
 
 /// Throws std::invalid_argument naming the array or the value when the batch is not one the kernel can read:
 /// arrays of one group with different sizes, an unknown shape kind, a vertex count or range
-/// that does not fit, a polygon that is not strictly convex and counter-clockwise with its outward unit normals
-/// (validate(Geometry) names the problem), a bounding radius that does not bound its shape, a non-finite
+/// that does not fit, a radius the kind does not take (circle and capsule > 0, polygon >= 0, segment and chain
+/// segment 0), a polygon that is not strictly convex and counter-clockwise with its outward unit normals or a
+/// segment of zero length or with other normals (validate(Geometry) names the problem), a bounding radius that
+/// does not bound its shape (radius included), a non-finite
 /// coordinate or pose, a body or pair index out of range, a pair of one body with itself, tolerance <= 0 or
 /// maxIterations outside [1, 1e6], or more entries than 32-bit indices hold.
 void validate(const ContinuousBatch& batch);
