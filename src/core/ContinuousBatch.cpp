@@ -95,6 +95,16 @@ std::string kindCodes() {
         }
         const std::string refused = kind.kernelProblem(shape);
         if (!refused.empty()) reject("shape " + std::to_string(i) + ": " + refused);
+        // Kinds built from their points alone (segments, capsules) carry normals the entry must match.
+        kernel::Shape expected{};
+        kind.toKernel(shape, expected);
+        for (std::int32_t v = 0; v < count; ++v) {
+            const std::size_t e = static_cast<std::size_t>(first + v);
+            const double dx = s.normalX[e] - expected.normals[v].x, dy = s.normalY[e] - expected.normals[v].y;
+            if (!(dx * dx + dy * dy <= 1e-18))  // unit normals to rounding
+                reject("shape " + std::to_string(i) + ": " + at("shapes.normalX", e) + ", normalY is not the " +
+                       kind.name + "'s outward unit normal there");
+        }
         reject(at("shapes.boundingRadius", i) + " = " + std::to_string(s.boundingRadius[i]) +
                " does not bound the shape (at least " + std::to_string(kind.boundingRadius(shape)) + " m)");
     });

@@ -163,6 +163,9 @@ void ContinuousStage::run(WorldImpl& w) {
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;
                 const bool still = !o.awake();
                 if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
+                // A chain is one-sided: a body that starts behind a piece passes through it, as in the narrow phase.
+                if (const auto* piece = std::get_if<ChainSegment>(&theirGeometry))
+                    if (behind(*piece, sweepFor(other).at(0.0), myGeometry, c.sweep.at(0.0))) continue;
                 if (b.detection == CollisionDetection::ContinuousSampled) {
                     const Sweep& theirs = sweepFor(other);
                     consider(c, sampledTimeOfImpact(myGeometry, c.sweep, theirGeometry, theirs, b.precision),

@@ -208,51 +208,83 @@ std::uint32_t World::shapeSlot(ShapeId id) const {
 
 ShapeId World::createShape(BodyId id, const ShapeDef& def) {
     validate(def);
+    return addShapes(id, {def}, "createShape").front();
+}
+
+std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
+    requireInRange("chain restitution", def.restitution, 0.0, 1.0);
+    requireNonNegative("chain static friction", def.staticFriction);
+    requireNonNegative("chain dynamic friction", def.dynamicFriction);
+    std::vector<ShapeDef> pieces;
+    for (const ChainSegment& piece : makeChain(def.points, def.loop)) {
+        requireWithin("chain point", piece.segment.point1, kMaxCoordinate);
+        ShapeDef d;
+        d.geometry = piece;
+        d.density = 0.0;
+        d.restitution = def.restitution;
+        d.staticFriction = def.staticFriction;
+        d.dynamicFriction = def.dynamicFriction;
+        pieces.push_back(d);
+    }
+    return addShapes(id, pieces, "createChain");
+}
+
+std::vector<ShapeId> World::addShapes(BodyId id, const std::vector<ShapeDef>& defs, const char* call) {
     at(id);
     WorldImpl& w = *impl_;
-    w.requireNotStepping("createShape");
+    w.requireNotStepping(call);
     const std::uint32_t body = id.index;
-    const std::uint32_t slot = takeSlot(w.shapes, w.freeShapes);
-    ShapeData& shape = w.shapes[slot];
-    shape.body = body;
-    shape.geometry = def.geometry;
-    shape.unitMass = computeMassProperties(def.geometry);
-    shape.density = def.density;
-    shape.restitution = def.restitution;
-    shape.staticFriction = def.staticFriction;
-    shape.dynamicFriction = def.dynamicFriction;
     BodyData& b = w.bodies[body];
     const std::int32_t oldTail = b.shapeTail;
-    auto link = [&](std::int32_t tail) {
-        if (tail == kNullIndex) b.shapeHead = static_cast<std::int32_t>(slot);
-        else w.shapes[static_cast<std::size_t>(tail)].next = static_cast<std::int32_t>(slot);
+    std::vector<std::uint32_t> slots;
+    slots.reserve(defs.size());
+    for (const ShapeDef& def : defs) {
+        const std::uint32_t slot = takeSlot(w.shapes, w.freeShapes);
+        ShapeData& shape = w.shapes[slot];
+        shape.body = body;
+        shape.geometry = def.geometry;
+        shape.unitMass = computeMassProperties(def.geometry);
+        shape.density = def.density;
+        shape.restitution = def.restitution;
+        shape.staticFriction = def.staticFriction;
+        shape.dynamicFriction = def.dynamicFriction;
+        if (b.shapeTail == kNullIndex) b.shapeHead = static_cast<std::int32_t>(slot);
+        else w.shapes[static_cast<std::size_t>(b.shapeTail)].next = static_cast<std::int32_t>(slot);
         b.shapeTail = static_cast<std::int32_t>(slot);
         ++b.shapeCount;
-    };
-    link(oldTail);
+        slots.push_back(slot);
+    }
     try {
         w.updateMass(body);
     } catch (...) {
         if (oldTail == kNullIndex) b.shapeHead = kNullIndex;
         else w.shapes[static_cast<std::size_t>(oldTail)].next = kNullIndex;
         b.shapeTail = oldTail;
-        --b.shapeCount;
-        w.shapes[slot].alive = false;
-        w.freeShapes.push_back(slot);
+        b.shapeCount -= static_cast<std::int32_t>(slots.size());
+        // The slots go back as they came: new ones off the end, free ones onto the free list in their order.
+        for (auto s = slots.rbegin(); s != slots.rend(); ++s) {
+            w.shapes[*s].alive = false;
+            if (*s + 1 == w.shapes.size()) w.shapes.pop_back();
+            else w.freeShapes.push_back(*s);
+        }
         throw;
     }
-    ++w.shapeLiveCount;
+    w.shapeLiveCount += slots.size();
     w.updateBoxes(b);
     if (b.collides) {
         w.createProxies(body);
-        if (b.type == BodyType::Static) w.wakeOverlapping(w.broadPhase.fatBox(w.shapes[slot].proxy));
+        if (b.type == BodyType::Static)
+            for (const std::uint32_t slot : slots) w.wakeOverlapping(w.broadPhase.fatBox(w.shapes[slot].proxy));
     }
     w.effects.drag.set(body, w.effects.drag.get(body), w.meanWidth(body));
     w.wakeBody(body);
     w.touched.push_back(body);
     ++w.shapeRevision;
     w.touchingValid = false;
-    return ShapeId{slot, w.shapes[slot].generation};
+    std::vector<ShapeId> ids;
+    ids.reserve(slots.size());
+    for (const std::uint32_t slot : slots) ids.push_back(ShapeId{slot, w.shapes[slot].generation});
+    return ids;
 }
 
 void World::destroyShape(ShapeId id) {

@@ -79,6 +79,13 @@ Polygon makePolygon(const std::vector<Vec2>& points);
 /// The segment from p1 to p2 (m, local). Throws std::invalid_argument for a non-finite point or p1 == p2.
 Segment makeSegment(const Vec2& p1, const Vec2& p2);
 
+/// The pieces of a chain through `points` (m, local), each with its neighbours as ghosts: an open chain of n points
+/// gives n - 1 pieces (its two end pieces' outer ghosts are their own end points), a loop gives n, the last joining
+/// the last point to the first. Bodies collide with the left side of the direction of travel (ChainSegment).
+/// Throws std::invalid_argument naming the problem: fewer than 2 points (3 for a loop), a non-finite point, or two
+/// consecutive points that coincide (a zero-length piece; for a loop, a last point repeating the first included).
+std::vector<ChainSegment> makeChain(const std::vector<Vec2>& points, bool loop = false);
+
 /// The capsule around the segment c1-c2 (m, local) with the given radius (m). Throws std::invalid_argument for a
 /// non-finite centre, c1 == c2 (use a circle) or a radius <= 0 or NaN.
 Capsule makeCapsule(const Vec2& c1, const Vec2& c2, double radius);

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace physim {
 
@@ -30,6 +31,17 @@ struct ShapeDef {
     double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+};
+
+/// A chain (World::createChain): ground or walls as a polyline of many pieces (makeChain, Geometry.hpp), smooth
+/// where pieces meet, colliding on the left of the direction of travel: ground listed left to right is solid
+/// below, a counter-clockwise loop holds bodies inside. Its pieces have no area, so no mass.
+struct ChainDef {
+    std::vector<Vec2> points;          ///< m, in the body's frame
+    bool loop = false;                 ///< true: the last point joins the first
+    double restitution = 0.0;          ///< in [0, 1]
+    double staticFriction = 0.6;       ///< >= 0
+    double dynamicFriction = 0.4;      ///< >= 0
 };
 
 }  // namespace physim

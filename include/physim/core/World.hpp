@@ -141,6 +141,9 @@ public:
     /// dynamic body's mass, centre of mass and inertia are recomputed from all its shapes (a body whose mass was
     /// set with setMass gets its shapes' mass again); its origin stays where it is. Wakes the body.
     ShapeId createShape(BodyId body, const ShapeDef& def);
+    /// Adds a chain's pieces (ChainDef) to the body as shapes, in order; validated first (std::invalid_argument
+    /// naming the bad point or value, the world unchanged). Wakes the body.
+    std::vector<ShapeId> createChain(BodyId body, const ChainDef& def);
     /// Removes a shape; its contacts end and what they held wakes. A dynamic body keeps at least one shape with mass
     /// (std::invalid_argument otherwise).
     void destroyShape(ShapeId id);
@@ -252,6 +255,8 @@ private:
     const BodyData& at(BodyId id) const;
     std::uint32_t firstShape(BodyId id) const;  // slot of the body's first shape; throws for a shapeless body
     std::uint32_t shapeSlot(ShapeId id) const;  // checked
+    /// createShape's and createChain's one path: appends the shapes (validated by the caller) to the body.
+    std::vector<ShapeId> addShapes(BodyId body, const std::vector<ShapeDef>& defs, const char* call);
     BodyData& mutableBody(BodyId id, const char* call);  // checked, not during the step
     BodyData& wake(BodyId id, const char* call);         // mutableBody, and its island woken
     const JointData& joint(JointId id) const;

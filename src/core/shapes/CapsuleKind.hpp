@@ -5,6 +5,8 @@
 
 #include "SegmentKind.hpp"
 
+#include <cmath>
+
 namespace physim {
 
 template <>
@@ -40,7 +42,9 @@ struct ShapeKind<Capsule> {
     static Capsule fromBatch(const ContinuousBatch::Shapes& s, std::size_t i) {
         return Capsule{TwoPoints::vertex(s, i, 0), TwoPoints::vertex(s, i, 1), s.radius[i]};
     }
-    static std::string radiusProblem(double) { return {}; }  // validate() checks the radius
+    static std::string radiusProblem(double radius) {
+        return radius > 0.0 && std::isfinite(radius) ? "" : "a capsule's radius is positive and finite";
+    }
     static std::string kernelProblem(const Capsule&) { return {}; }
 
     template <class T>

@@ -34,6 +34,25 @@ void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
     requireFinite("chain segment ghost2", c.ghost2);
 }
 
+bool behind(const ChainSegment& a, const RoundedCore& local) {
+    Vec2 centre = Vec2::Zero();
+    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
+    centre /= local.count;
+    const Vec2 along = a.segment.point2 - a.segment.point1;
+    return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) < 0.0;
+}
+
+bool behind(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    if (std::holds_alternative<ChainSegment>(b)) return false;
+    const RoundedCore core = std::visit(
+        [](const auto& s) -> RoundedCore {
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
+            else return coreOf(s);
+        },
+        b);
+    return behind(a, relativeCore(core, xa, xb));
+}
+
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
                                  const Transform& xb, double margin) {
     const Vec2& p1 = a.segment.point1;
@@ -42,10 +61,7 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     const RoundedCore local = relativeCore(b, xa, xb);
     const Vec2 face = piece.normals[kFace];
 
-    Vec2 centre = Vec2::Zero();
-    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
-    centre /= local.count;
-    if (face.dot(centre - p1) < 0.0) return {};  // behind the piece
+    if (behind(a, local)) return {};
 
     const LocalManifold m = collideCores(piece, local, margin);
     if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);
