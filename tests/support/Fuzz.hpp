@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -55,15 +56,24 @@ private:
 
 inline bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y()); }
 
-/// A valid geometry of size 1e-3 to 1e2 m: a circle, a box, or the convex hull-ordered polygon of 3 to 8 points
-/// on an ellipse (so makePolygon accepts it unless points nearly coincide; then a box).
+/// A valid geometry of size 1e-3 to 1e2 m: a circle, a box, a rounded box, a capsule, a segment (no mass: a dynamic
+/// body of one is refused), or the convex hull-ordered polygon of 3 to 8 points on an ellipse (so makePolygon accepts
+/// it unless points nearly coincide; then a box).
 inline Geometry geometry(Bytes& in) {
     const double scale = std::pow(10.0, in.in(-3.0, 2.0));
-    switch (in.pick(3)) {
+    switch (in.pick(6)) {
     case 0:
         return makeCircle(scale * in.in(0.1, 1.0), scale * Vec2(in.in(-1.0, 1.0), in.in(-1.0, 1.0)));
     case 1:
         return makeBox(scale * in.in(0.05, 1.0), scale * in.in(0.05, 1.0));
+    case 2:
+        return makeRoundedBox(scale * in.in(0.05, 1.0), scale * in.in(0.05, 1.0), scale * in.in(0.01, 0.5));
+    case 3:
+        return makeCapsule(scale * Vec2(in.in(-1.0, -0.1), in.in(-1.0, 1.0)),
+                           scale * Vec2(in.in(0.1, 1.0), in.in(-1.0, 1.0)), scale * in.in(0.05, 0.5));
+    case 4:
+        return makeSegment(scale * Vec2(in.in(-1.0, -0.1), in.in(-1.0, 1.0)),
+                           scale * Vec2(in.in(0.1, 1.0), in.in(-1.0, 1.0)));
     default: {
         const int n = 3 + in.pick(Polygon::maxVertices - 2);
         const double rx = scale * in.in(0.1, 1.0), ry = scale * in.in(0.1, 1.0);
@@ -114,6 +124,20 @@ inline std::string collideOnce(const std::uint8_t* data, std::size_t size) {
     return "";
 }
 
+/// The state a refused call must leave as it was: the bodies' motion (test::stateHash) and their mass and shapes.
+inline std::uint64_t refusalHash(const World& world, const std::vector<BodyId>& ids) {
+    std::uint64_t h = test::stateHash(world, ids);
+    for (const BodyId id : ids) {
+        double mass[2] = {world.mass(id), world.inertia(id)};
+        std::uint64_t bits[2];
+        std::memcpy(bits, mass, sizeof bits);
+        h = (h ^ bits[0]) * 1099511628211ull;
+        h = (h ^ bits[1]) * 1099511628211ull;
+        h = (h ^ world.shapes(id).size()) * 1099511628211ull;
+    }
+    return h;
+}
+
 /// A world driven by the bytes: bodies of every kind created, changed, pushed, joined and destroyed (with stale
 /// ids and bad values among them), settings changed, steps taken. Refused calls leave the world bit-identical;
 /// accepted sane values never lead to NaN or infinity.
@@ -122,6 +146,7 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
     World world(test::awakeSettings());
     std::vector<BodyId> ids;      // every id handed out, destroyed ones included
     std::vector<JointId> joints;  // likewise
+    std::vector<ShapeId> shapes;  // shapes added after their bodies, destroyed ones included
     auto anyBody = [&]() { return ids.empty() ? BodyId{} : ids[in.pick(static_cast<int>(ids.size()))]; };
     auto live = [&]() {
         std::vector<BodyId> alive;
@@ -131,10 +156,10 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
     };
     for (int op = 0; op < 64 && !in.empty(); ++op) {
         const std::vector<BodyId> before = live();
-        const std::uint64_t hash = test::stateHash(world, before);
+        const std::uint64_t hash = refusalHash(world, before);
         const std::size_t joinedBefore = world.jointCount();
         try {
-            switch (in.pick(12)) {
+            switch (in.pick(15)) {
             case 0:
             case 1: {
                 BodyDef d;
@@ -236,13 +261,36 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
                 world.setSettings(s);
                 break;
             }
+            case 12: {
+                ShapeDef d;
+                d.geometry = geometry(in);
+                d.density = in.maybeBad(0.0, 100.0);
+                d.restitution = in.maybeBad(0.0, 1.0, 32);
+                d.staticFriction = in.maybeBad(0.0, 1.0, 32);
+                shapes.push_back(world.createShape(anyBody(), d));
+                break;
+            }
+            case 13:
+                if (!shapes.empty()) world.destroyShape(shapes[in.pick(static_cast<int>(shapes.size()))]);
+                break;
+            case 14: {
+                ChainDef c;
+                const int n = in.pick(8);
+                for (int i = 0; i < n; ++i)  // sometimes a repeated or non-finite point
+                    c.points.push_back(in.pick(8) == 0 && i > 0 ? c.points.back()
+                                                                : Vec2(in.maybeBad(-20.0, 20.0), in.maybeBad(-5.0, 5.0)));
+                c.loop = in.pick(3) == 0;
+                c.restitution = in.maybeBad(0.0, 1.0, 32);
+                for (const ShapeId s : world.createChain(anyBody(), c)) shapes.push_back(s);
+                break;
+            }
             default:
                 world.step(in.pick(16) == 0 ? in.maybeBad(0.0, 1.0, 1) : in.in(1e-3, 1.0 / 30.0));
                 break;
             }
         } catch (const std::invalid_argument& e) {
             if (std::string(e.what()).empty()) return "a refusal with no message";
-            if (live() != before || test::stateHash(world, before) != hash || world.jointCount() != joinedBefore)
+            if (live() != before || refusalHash(world, before) != hash || world.jointCount() != joinedBefore)
                 return std::string("a refused call changed the world: ") + e.what();
         } catch (const std::exception& e) {
             return std::string("unexpected exception: ") + e.what();
