@@ -59,6 +59,8 @@ struct alignas(64) ContactData {
     std::int32_t prev[2] = {kNullIndex, kNullIndex};
     std::int32_t next[2] = {kNullIndex, kNullIndex};
     std::uint32_t generation = 0;
+    // The shapes' proxy keys, fixed while the contact lives (a shape's proxy is remade only after its contacts end).
+    std::int32_t proxyA = kNullIndex, proxyB = kNullIndex;
 
     std::uint32_t a() const { return manifold.bodyA.index; }  // body slots
     std::uint32_t b() const { return manifold.bodyB.index; }

@@ -277,9 +277,7 @@ constexpr std::size_t kAhead = 4;
 
 // Whether contact i's enlarged boxes parted (then flagged): a pair that no longer overlaps is destroyed.
 [[gnu::always_inline]] inline bool parted(const RefreshPass& p, std::size_t i, const ContactData& c) {
-    if (p.overlapsKnown) return false;
-    const BroadPhase& broad = *p.broadPhase;
-    if (broad.fatBox(p.shapes[c.shapeA()].proxy).overlaps(broad.fatBox(p.shapes[c.shapeB()].proxy))) return false;
+    if (p.overlapsKnown || p.broadPhase->fatBox(c.proxyA).overlaps(p.broadPhase->fatBox(c.proxyB))) return false;
     p.flags[i] = kParted;
     return true;
 }
@@ -453,6 +451,8 @@ void WorldImpl::createContact(std::uint32_t shapeA, std::uint32_t shapeB) {
     c.manifold.shapeA = ShapeId{shapeA, shapes[shapeA].generation};
     c.manifold.shapeB = ShapeId{shapeB, shapes[shapeB].generation};
     mixMaterials(c, shapes[shapeA], shapes[shapeB]);
+    c.proxyA = shapes[shapeA].proxy;
+    c.proxyB = shapes[shapeB].proxy;
     const std::uint32_t ends[2] = {a, b};
     for (int side = 0; side < 2; ++side) {
         BodyData& body = bodies[ends[side]];
@@ -561,7 +561,7 @@ void WorldImpl::updateContacts() {
         const bool dynamicPair = bodies[c.a()].type == BodyType::Dynamic && bodies[c.b()].type == BodyType::Dynamic;
         if (flag == kParted || flag == kDeferred) {
             if (c.touching) events.end.push_back(event);
-            if (flag == kDeferred) broadPhase.requery(shapes[c.shapeA()].proxy);
+            if (flag == kDeferred) broadPhase.requery(c.proxyA);
             destroyContact(index, false);
         } else if (flag == kBegan) {
             events.begin.push_back(event);
