@@ -8,6 +8,7 @@
 
 #include "physim/core/Aabb.hpp"
 #include "physim/core/Geometry.hpp"
+#include "physim/core/Shape.hpp"
 
 #include <cstdint>
 
@@ -30,5 +31,16 @@ struct ShapeData {
     std::uint32_t generation = 0;
     bool alive = false;
 };
+
+/// A new shape of `body` from its definition (validated by the caller) and its mass per unit density.
+inline void assignShape(ShapeData& s, std::uint32_t body, const ShapeDef& def, const MassProperties& unitMass) {
+    s.body = body;
+    s.geometry = def.geometry;
+    s.unitMass = unitMass;
+    s.density = def.density;
+    s.restitution = def.restitution;
+    s.staticFriction = def.staticFriction;
+    s.dynamicFriction = def.dynamicFriction;
+}
 
 }  // namespace physim

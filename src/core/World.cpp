@@ -199,14 +199,9 @@ BodyId World::createBody(const BodyDef& def) {
     b.type = def.type;
     if (def.withShape) {
         const std::uint32_t s = takeSlot(w.shapes, w.freeShapes);
-        ShapeData& shape = w.shapes[s];
-        shape.body = index;
-        shape.geometry = def.shape;
-        shape.unitMass = massed.unitMass;
-        shape.density = def.density;
-        shape.restitution = def.restitution;
-        shape.staticFriction = def.staticFriction;
-        shape.dynamicFriction = def.dynamicFriction;
+        assignShape(w.shapes[s], index,
+                    ShapeDef{def.shape, def.density, def.restitution, def.staticFriction, def.dynamicFriction},
+                    massed.unitMass);
         b.shapeHead = b.shapeTail = static_cast<std::int32_t>(s);
         b.shapeCount = 1;
         ++w.shapeLiveCount;

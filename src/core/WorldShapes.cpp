@@ -5,6 +5,7 @@
 
 #include "Slots.hpp"
 #include "WorldImpl.hpp"
+#include "shapes/PolygonCheck.hpp"
 #include "shapes/ShapeKinds.hpp"
 
 #include "physim/core/MassData.hpp"
@@ -63,27 +64,6 @@ MassProperties combine(const WorldImpl& w, const BodyData& b) {
     };
     const MassProperties weighted = total(true);
     return weighted.area > 0.0 ? weighted : total(false);
-}
-
-// Perimeter of the convex hull of a point set, m (Andrew's monotone chain).
-double hullPerimeter(std::vector<Vec2> points) {
-    std::sort(points.begin(), points.end(),
-              [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
-    if (points.size() < 2) return 0.0;
-    std::vector<Vec2> hull(2 * points.size());
-    std::size_t k = 0;
-    auto turnsLeft = [&](const Vec2& o, const Vec2& a, const Vec2& b) { return cross(a - o, b - o) > 0.0; };
-    for (const Vec2& p : points) {
-        while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], p)) --k;
-        hull[k++] = p;
-    }
-    for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-        while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i])) --k;
-        hull[k++] = points[i];
-    }
-    double perimeter = 0.0;
-    for (std::size_t i = 0; i + 1 < k; ++i) perimeter += (hull[i + 1] - hull[i]).norm();
-    return perimeter;
 }
 
 }  // namespace
@@ -176,7 +156,10 @@ double WorldImpl::meanWidth(std::uint32_t body) const {
         const std::vector<Vec2> around = outline(shapes[static_cast<std::size_t>(s)].geometry, local);
         points.insert(points.end(), around.begin(), around.end());
     }
-    return hullPerimeter(std::move(points)) / M_PI;
+    const std::vector<Vec2> hull = convexHullCorners(std::move(points));
+    double perimeter = 0.0;
+    for (std::size_t i = 0; i < hull.size(); ++i) perimeter += (hull[(i + 1) % hull.size()] - hull[i]).norm();
+    return perimeter / M_PI;
 }
 
 void WorldImpl::setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction,
@@ -240,14 +223,7 @@ std::vector<ShapeId> World::addShapes(BodyId id, const std::vector<ShapeDef>& de
     slots.reserve(defs.size());
     for (const ShapeDef& def : defs) {
         const std::uint32_t slot = takeSlot(w.shapes, w.freeShapes);
-        ShapeData& shape = w.shapes[slot];
-        shape.body = body;
-        shape.geometry = def.geometry;
-        shape.unitMass = computeMassProperties(def.geometry);
-        shape.density = def.density;
-        shape.restitution = def.restitution;
-        shape.staticFriction = def.staticFriction;
-        shape.dynamicFriction = def.dynamicFriction;
+        assignShape(w.shapes[slot], body, def, computeMassProperties(def.geometry));
         if (b.shapeTail == kNullIndex) b.shapeHead = static_cast<std::int32_t>(slot);
         else w.shapes[static_cast<std::size_t>(b.shapeTail)].next = static_cast<std::int32_t>(slot);
         b.shapeTail = static_cast<std::int32_t>(slot);

@@ -1,6 +1,7 @@
 // Narrow phase for two convex polygons: separating axes (SAT) over both polygons' face normals, then a
 // contact manifold from clipping the incident edge against the reference face.
 
+#include "Faces.hpp"
 #include "PolygonKind.hpp"
 
 #include <algorithm>
@@ -12,33 +13,6 @@ namespace {
 // Faces count as facing each other (a resting stack) when their normals are within about 1.1 degrees of
 // antiparallel; only then is the reference-face tolerance applied.
 constexpr double kFacingCosine = -0.9998;
-
-struct FaceQuery {
-    int face = 0;
-    double separation = -std::numeric_limits<double>::infinity();
-};
-
-// The face of `p` whose supporting line is farthest from `q` (greatest separation). Its separation is
-// min over q's vertices of n_i . (w - v_i); the shapes are disjoint when some face's separation is > 0.
-FaceQuery maxSeparation(const Polygon& p, const Polygon& q) {
-    FaceQuery best;
-    for (int i = 0; i < p.count; ++i) {
-        double s = std::numeric_limits<double>::infinity();
-        for (int j = 0; j < q.count; ++j) s = std::min(s, p.normals[i].dot(q.vertices[j] - p.vertices[i]));
-        if (s > best.separation) best = {i, s};
-    }
-    return best;
-}
-
-// Feature id of a clipped point: the vertex of the first shape and the vertex of the second shape it lies
-// between (the reference face's end and the incident edge's end on the same side of the clip). It does not say
-// which shape is the reference, so a reference face that swaps between two facing faces (a box on a box, tilted
-// by a hair one way or the other) keeps its ids, and with them the warm-start impulses.
-std::uint32_t featureId(bool flip, int referenceVertex, int incidentVertex) {
-    const int onA = flip ? incidentVertex : referenceVertex;
-    const int onB = flip ? referenceVertex : incidentVertex;
-    return static_cast<std::uint32_t>(onA) << 4 | static_cast<std::uint32_t>(onB);
-}
 
 }  // namespace
 

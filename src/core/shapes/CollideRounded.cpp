@@ -8,6 +8,7 @@
 // Separating axes alone would miss the gap between two collinear segments (their Minkowski difference has no
 // area), so cores of at most 2 vertices are checked by their closest features unless they cross.
 
+#include "Faces.hpp"
 #include "RoundedCore.hpp"
 
 #include <algorithm>
@@ -20,28 +21,10 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 constexpr double kFacingCosine = -0.9998;  // as CollidePolygons.cpp: faces within about 1.1 degrees of antiparallel
 
-struct FaceQuery {
-    int face = -1;
-    double separation = -kInfinity;
-};
-
-// The face of p whose line is farthest from q (none when p has no edges).
-FaceQuery maxSeparation(const RoundedCore& p, const RoundedCore& q) {
-    FaceQuery best;
-    if (p.count < 2) return best;
-    for (int i = 0; i < p.count; ++i) {
-        double s = kInfinity;
-        for (int j = 0; j < q.count; ++j) s = std::min(s, p.normals[i].dot(q.vertices[j] - p.vertices[i]));
-        if (s > best.separation) best = {i, s};
-    }
-    return best;
-}
-
-// As CollidePolygons.cpp: the vertex of a and the vertex of b a point lies between, whichever is the reference.
-std::uint32_t featureId(bool flip, int referenceVertex, int incidentVertex) {
-    const int onA = flip ? incidentVertex : referenceVertex;
-    const int onB = flip ? referenceVertex : incidentVertex;
-    return static_cast<std::uint32_t>(onA) << 4 | static_cast<std::uint32_t>(onB);
+// The face of p whose line is farthest from q (face -1 when p has no edges).
+FaceQuery facesOf(const RoundedCore& p, const RoundedCore& q) {
+    if (p.count < 2) return {-1, -kInfinity};
+    return maxSeparation(p, q);
 }
 
 Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
@@ -258,8 +241,8 @@ RoundedCore relativeCore(const RoundedCore& b, const Transform& xa, const Transf
 
 LocalManifold collideCores(const RoundedCore& a, const RoundedCore& b, double margin) {
     const double radii = a.radius + b.radius;
-    const FaceQuery onA = maxSeparation(a, b);
-    const FaceQuery onB = maxSeparation(b, a);
+    const FaceQuery onA = facesOf(a, b);
+    const FaceQuery onB = facesOf(b, a);
     const double sat = std::max(onA.separation, onB.separation);  // a lower bound of the cores' distance
     LocalManifold m;
     if (sat - radii > margin) {

@@ -4,6 +4,8 @@
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Validate.hpp"
 
+#include "PolygonCheck.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -14,18 +16,10 @@
 namespace physim {
 namespace {
 
-// The tolerances of makePolygon (shapes/Polygon.cpp), relative to the hull's extent (its bounding-box diagonal):
-// corners closer than kWeld * extent are one corner, and a corner whose turn has a sine below kStraight is no
-// corner. Cleaning the hull with the same formulas means makePolygon accepts what is left.
-constexpr double kWeld = 1e-6;
-constexpr double kStraight = 1e-6;
-
-std::string show(const Vec2& v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(" << v.x() << ", " << v.y() << ")";
-    return os.str();
-}
+// makePolygon's tolerances (PolygonCheck.hpp), relative to the hull's extent (its bounding-box diagonal): corners
+// closer than kWeld * extent are one corner, and a corner whose turn has a sine below kStraight is no corner.
+constexpr double kWeld = kCoincident;
+constexpr double kStraight = kCollinear;
 
 [[noreturn]] void fail(const std::string& problem) { throw std::invalid_argument("physim: convex hull " + problem); }
 
@@ -36,29 +30,6 @@ double extentOf(const std::vector<Vec2>& v) {
         upper = upper.cwiseMax(p);
     }
     return (upper - lower).norm();
-}
-
-// Counter-clockwise hull starting at the lowest-x (then lowest-y) point. Points strictly inside and points on
-// an edge (cross product exactly 0, repeats included) are left out.
-std::vector<Vec2> monotoneChain(std::vector<Vec2> p) {
-    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
-    std::vector<Vec2> hull;
-    hull.reserve(p.size() + 1);
-    const auto sweep = [&](auto first, auto last, std::size_t floor) {
-        for (auto it = first; it != last; ++it) {
-            // Pop the last corner while it does not turn left on the way to *it.
-            while (hull.size() > floor &&
-                   cross(hull.back() - hull[hull.size() - 2], *it - hull[hull.size() - 2]) <= 0.0)
-                hull.pop_back();
-            hull.push_back(*it);
-        }
-    };
-    sweep(p.begin(), p.end(), 1);                  // lower chain, left to right
-    sweep(p.rbegin() + 1, p.rend(), hull.size());  // upper chain, right to left, back to the start
-    hull.pop_back();                               // the start again
-    return hull;
 }
 
 // Drops corners makePolygon would reject as coincident or collinear: each removal keeps the polygon convex and
@@ -102,6 +73,28 @@ void weldAndStraighten(std::vector<Vec2>& h) {
 
 }  // namespace
 
+std::vector<Vec2> convexHullCorners(std::vector<Vec2> p) {
+    if (p.empty()) return p;
+    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
+        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+    });
+    std::vector<Vec2> hull;
+    hull.reserve(p.size() + 1);
+    const auto sweep = [&](auto first, auto last, std::size_t floor) {
+        for (auto it = first; it != last; ++it) {
+            // Pop the last corner while it does not turn left on the way to *it.
+            while (hull.size() > floor &&
+                   cross(hull.back() - hull[hull.size() - 2], *it - hull[hull.size() - 2]) <= 0.0)
+                hull.pop_back();
+            hull.push_back(*it);
+        }
+    };
+    sweep(p.begin(), p.end(), 1);                  // lower chain, left to right
+    sweep(p.rbegin() + 1, p.rend(), hull.size());  // upper chain, right to left, back to the start
+    hull.pop_back();                               // the start again
+    return hull;
+}
+
 Polygon computeHull(const std::vector<Vec2>& points) {
     if (points.size() < 3) fail("needs at least 3 points, got " + std::to_string(points.size()));
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -112,7 +105,7 @@ Polygon computeHull(const std::vector<Vec2>& points) {
         fail("points are too far apart: their extent overflows squared lengths");
     if (extent == 0.0) fail("points all coincide at " + show(points[0]) + ": no area");
 
-    std::vector<Vec2> hull = monotoneChain(points);
+    std::vector<Vec2> hull = convexHullCorners(points);
     weldAndStraighten(hull);
     if (hull.size() < 3)
         fail("points are all collinear (within " + std::to_string(kStraight) + " of their extent " +

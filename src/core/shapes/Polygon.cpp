@@ -14,19 +14,6 @@
 namespace physim {
 namespace {
 
-// Relative tolerances, as fractions of the polygon's size, so the checks mean the same for a 1 mm and a 10 m
-// shape. Points closer than kCoincident * size are one point; a turn whose sine is below kCollinear is no turn.
-// Both are far above rounding (1e-16) and far below any shape worth simulating.
-constexpr double kCoincident = 1e-6;
-constexpr double kCollinear = 1e-6;
-
-std::string show(const Vec2& v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(" << v.x() << ", " << v.y() << ")";
-    return os.str();
-}
-
 [[noreturn]] void fail(const char* what, const std::string& problem) {
     throw std::invalid_argument(std::string("physim: ") + what + " " + problem);
 }
@@ -39,6 +26,13 @@ void computeNormals(Polygon& p) {
 }
 
 }  // namespace
+
+std::string show(const Vec2& v) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "(" << v.x() << ", " << v.y() << ")";
+    return os.str();
+}
 
 double signedArea(const Vec2* v, int count) {
     // Shoelace formula about the first vertex (smaller terms than about the origin, so less rounding).

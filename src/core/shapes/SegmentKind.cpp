@@ -1,6 +1,7 @@
 // The segment's room: its factory, its checks and its outline.
 
 #include "SegmentKind.hpp"
+#include "PolygonCheck.hpp"
 
 #include "physim/core/Validate.hpp"
 
@@ -12,14 +13,7 @@ namespace {
 
 // Points closer than this fraction of their distance from the body origin are one point: far above rounding
 // (1e-16), far below any segment worth simulating.
-constexpr double kCoincident = 1e-12;
-
-std::string show(const Vec2& v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(" << v.x() << ", " << v.y() << ")";
-    return os.str();
-}
+constexpr double kApart = 1e-12;
 
 }  // namespace
 
@@ -30,7 +24,7 @@ void requireTwoPoints(const char* what, const char* first, const Vec2& p1, const
     if (!std::isfinite(length))
         throw std::invalid_argument(std::string("physim: ") + what + " is too long: " + show(p1) + " to " + show(p2) +
                                     " overflows its length");
-    if (!(length > kCoincident * std::max(p1.norm(), p2.norm())))
+    if (!(length > kApart * std::max(p1.norm(), p2.norm())))
         throw std::invalid_argument(std::string("physim: ") + what + " " + first + " and " + second +
                                     " must be apart (zero length), got " + show(p1) + " and " + show(p2));
 }
