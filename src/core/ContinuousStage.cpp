@@ -163,9 +163,19 @@ void ContinuousStage::run(WorldImpl& w) {
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;
                 const bool still = !o.awake();
                 if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
-                // A chain is one-sided: a body that starts behind a piece passes through it, as in the narrow phase.
-                if (const auto* piece = std::get_if<ChainSegment>(&theirGeometry))
-                    if (behind(*piece, sweepFor(other).at(0.0), myGeometry, c.sweep.at(0.0))) continue;
+                if (const auto* piece = std::get_if<ChainSegment>(&theirGeometry)) {
+                    // A chain is one-sided: a body that starts behind a piece passes through it, as in the narrow
+                    // phase.
+                    const Sweep& ground = sweepFor(other);
+                    if (frontOffset(*piece, ground.at(0.0), myGeometry, c.sweep.at(0.0)) < 0.0) continue;
+                    // A discrete body whose centre ends the step at least half its core radius in front of the
+                    // piece's line has not passed it, and the contacts answer its overlap. Rolling along a curved
+                    // chain sweeps into the next piece's line at every concave joint: an impact there would put the
+                    // body back with its speed kept and gain energy each step.
+                    if (!c.continuous &&
+                        frontOffset(*piece, ground.at(1.0), myGeometry, c.sweep.at(1.0)) >= 0.5 * b.coreRadius)
+                        continue;
+                }
                 if (b.detection == CollisionDetection::ContinuousSampled) {
                     const Sweep& theirs = sweepFor(other);
                     consider(c, sampledTimeOfImpact(myGeometry, c.sweep, theirGeometry, theirs, b.precision),

@@ -37,7 +37,7 @@ std::vector<Vec2> halfPipe(double R, int pieces) {
     return points;
 }
 
-TEST(Chain, DISABLED_ADiscRollsDownACurvedChainAsDownTheCurve) {
+TEST(Chain, ADiscRollsDownACurvedChainAsDownTheCurve) {
     // The half-pipe: radius 3 m, a 0.2 m disc released 60 degrees up the side, default 40 Hz. A rolling disc
     // on a circular track reaches v = sqrt(4 g h / 3) at the bottom, h the fall of its centre; pieces meeting at
     // flat-to-convex joints must not take energy. Tolerance 2%: the chord of 120 pieces sits 0.3 mm inside the
