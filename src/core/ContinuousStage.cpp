@@ -163,9 +163,20 @@ void ContinuousStage::run(WorldImpl& w) {
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;
                 const bool still = !o.awake();
                 if (!c.continuous && !still) continue;  // fast discrete bodies: static (and sleeping) bodies only
-                // A chain is one-sided: a body that starts behind a piece passes through it, as in the narrow phase.
-                if (const auto* piece = std::get_if<ChainSegment>(&theirGeometry))
-                    if (behind(*piece, sweepFor(other).at(0.0), myGeometry, c.sweep.at(0.0))) continue;
+                if (const auto* piece = std::get_if<ChainSegment>(&theirGeometry)) {
+                    // A chain is one-sided: a body that starts behind a piece passes through it, as in the narrow
+                    // phase.
+                    const Sweep& ground = sweepFor(other);
+                    const double from = frontOffset(*piece, ground.at(0.0), myGeometry, c.sweep.at(0.0));
+                    if (from < 0.0) continue;
+                    // A body whose centre ends the step at least half its core radius in front of the piece's line
+                    // has not passed it, and the contacts answer its overlap (a continuous body's only if it came
+                    // no more than a quarter core radius closer to the line: it slides along, it does not strike).
+                    // Rolling along a curved chain sweeps into the next piece's line at every concave joint: an
+                    // impact there would put the body back with its speed kept and gain energy each step.
+                    const double to = frontOffset(*piece, ground.at(1.0), myGeometry, c.sweep.at(1.0));
+                    if (to >= 0.5 * b.coreRadius && (!c.continuous || from - to <= 0.25 * b.coreRadius)) continue;
+                }
                 if (b.detection == CollisionDetection::ContinuousSampled) {
                     const Sweep& theirs = sweepFor(other);
                     consider(c, sampledTimeOfImpact(myGeometry, c.sweep, theirGeometry, theirs, b.precision),

@@ -4,6 +4,7 @@
 // joint's vertex and the shape's meet and their direction is straight up to 1e-12 rad: kStraightUp allows that.
 
 #include "physim/core/Collide.hpp"
+#include "shapes/ChainSegmentKind.hpp"
 
 #include <gtest/gtest.h>
 
@@ -248,6 +249,29 @@ TEST(ChainSegment, RandomJointsGiveOnlyFaceOrCornerNormals) {
     }
     EXPECT_GT(contacts, 5000);
     EXPECT_GT(cornerNormals, 100);
+}
+
+TEST(ChainSegment, FrontOffsetIsTheShapeCentresSignedDistanceFromThePiecesLine) {
+    // What the Continuous stage asks of a piece (whether a body stays in front of it): the signed distance of the
+    // shape's centre from the piece's line, here from world points by the cross product. Random poses within 10 m;
+    // 1e-12 m per metre of scale is the rounding of two transforms.
+    std::mt19937 rng(52);
+    std::uniform_real_distribution<double> coord(-5.0, 5.0), angle(-3.2, 3.2);
+    const ChainSegment piece{{-2.0, -0.5}, makeSegment({-1.0, 0.0}, {1.0, 0.2}), {2.0, 0.6}};
+    const Geometry shapes[] = {makeCircle(0.3, {0.1, -0.2}), makeBox(0.4, 0.2, {0.3, 0.1}, 0.5),
+                               makeCapsule({-0.2, 0.0}, {0.4, 0.3}, 0.1)};
+    const Vec2 centres[] = {{0.1, -0.2}, {0.3, 0.1}, {0.1, 0.15}};  // each shape's centre, body-local
+    for (int trial = 0; trial < 200; ++trial) {
+        const Transform xa{{coord(rng), coord(rng)}, Rotation::fromAngle(angle(rng))};
+        const Transform xb{{coord(rng), coord(rng)}, Rotation::fromAngle(angle(rng))};
+        const Vec2 p1 = xa.apply(piece.segment.point1), p2 = xa.apply(piece.segment.point2);
+        for (int k = 0; k < 3; ++k) {
+            const Vec2 c = xb.apply(centres[k]);
+            const double expected = cross(p2 - p1, c - p1) / (p2 - p1).norm();
+            EXPECT_NEAR(frontOffset(piece, xa, shapes[k], xb), expected, 1e-11) << trial << " " << k;
+        }
+    }
+    EXPECT_TRUE(std::isinf(frontOffset(piece, {}, Geometry{piece}, {})));
 }
 
 TEST(ChainSegment, GroundAgainstGroundHasNoContact) {

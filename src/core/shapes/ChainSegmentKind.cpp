@@ -15,6 +15,8 @@
 
 #include "physim/core/Validate.hpp"
 
+#include <limits>
+
 namespace physim {
 namespace {
 
@@ -42,15 +44,20 @@ bool behind(const ChainSegment& a, const RoundedCore& local) {
     return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) < 0.0;
 }
 
-bool behind(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    if (std::holds_alternative<ChainSegment>(b)) return false;
+double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
     const RoundedCore core = std::visit(
         [](const auto& s) -> RoundedCore {
             if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
             else return coreOf(s);
         },
         b);
-    return behind(a, relativeCore(core, xa, xb));
+    const RoundedCore local = relativeCore(core, xa, xb);
+    Vec2 centre = Vec2::Zero();
+    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
+    centre /= local.count;
+    const Vec2 along = a.segment.point2 - a.segment.point1;
+    return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) / along.norm();
 }
 
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
