@@ -112,11 +112,7 @@ inline std::vector<KernelPair> roundedKindsPairs(int count, unsigned seed) {
             }
             default: p.b = kernelChainSegment({0.5 * length, 0.1}, {-0.5 * length, -0.1});
         }
-        const double heading = in(0.0, 2.0 * M_PI);
-        const Vec2 dir(std::cos(heading), std::sin(heading)), side(-dir.y(), dir.x());
-        const Vec2 start = -in(0.3, 3.0) * dir + in(-0.6, 0.6) * side;
-        const double a0 = in(-M_PI, M_PI), travel = in(1.0, 20.0), turn = in(-6.0, 6.0);
-        p.sa = Sweep{start, start + travel * dir, a0, a0 + turn};
+        p.sa = draw.aimedSweep(0.3, 3.0, 0.6, 20.0, 6.0);
         const double b0 = in(-M_PI, M_PI), drift = in(-0.1, 0.1);
         const double spin = (i / 16) % 2 == 0 ? in(-0.5, 0.5) : in(-17.0, 17.0);
         p.sb = Sweep{Vec2::Zero(), Vec2(drift, -drift), b0, b0 + spin};

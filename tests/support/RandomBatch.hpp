@@ -49,6 +49,16 @@ public:
     }
     double move(double still) { return unit() < still ? 0.0 : logUniform(0.05, 8.0); }
 
+    /// A shot at the origin from a random heading: it starts `nearest` to `farthest` m away, aimed within `aim` m
+    /// of the origin, travels 1 to `longest` m over the motion and turns up to `turn` rad either way.
+    Sweep aimedSweep(double nearest, double farthest, double aim, double longest, double turn) {
+        const double heading = in(0.0, 2.0 * M_PI);
+        const Vec2 dir(std::cos(heading), std::sin(heading)), side(-dir.y(), dir.x());
+        const Vec2 start = -in(nearest, farthest) * dir + in(-aim, aim) * side;
+        const double a0 = in(-M_PI, M_PI), travel = in(1.0, longest), spin = in(-turn, turn);
+        return {start, start + travel * dir, a0, a0 + spin};
+    }
+
 private:
     std::mt19937 rng_;
     std::uniform_real_distribution<double> u_{0.0, 1.0};
@@ -76,12 +86,7 @@ inline std::vector<FastPair> randomPairs(int count, unsigned seed) {
             case 1: p.b = makeCircle(in(0.01, 0.1)); break;
             default: p.b = makePolygon({{-0.1, -0.05}, {0.12, -0.08}, {0.15, 0.06}, {-0.02, 0.12}});
         }
-        const double heading = in(0.0, 2.0 * M_PI);
-        const Vec2 dir(std::cos(heading), std::sin(heading));
-        const Vec2 side(-dir.y(), dir.x());
-        const Vec2 start = -in(0.5, 5.0) * dir + in(-0.3, 0.3) * side;
-        const double a0 = in(-M_PI, M_PI);
-        p.sa = Sweep{start, start + in(1.0, 20.0) * dir, a0, a0 + in(-2.0, 2.0)};
+        p.sa = draw.aimedSweep(0.5, 5.0, 0.3, 20.0, 2.0);
         const double b0 = in(-M_PI, M_PI);
         p.sb = Sweep{Vec2::Zero(), Vec2::Zero(), b0, b0};
         if (collide(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).pointCount > 0) {
