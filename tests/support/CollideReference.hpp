@@ -243,7 +243,7 @@ inline void checkManifoldIsSane(const Geometry& a, const Transform& xa, const Ge
     }
 }
 
-/// The shape scaled about its body origin by `scale` (lengths and radii).
+/// The shape scaled about its body origin by `factor` (lengths and radii).
 inline void scale(Geometry& g, double factor) {
     if (auto* c = std::get_if<Circle>(&g)) {
         c->radius *= factor;
