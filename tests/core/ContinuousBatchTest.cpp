@@ -43,6 +43,19 @@ Geometry shapeOf(const ContinuousBatch& b, std::int32_t body) {
     return p;
 }
 
+// Every field of pair i of the batch's result is the one-pair kernel's, to the bit (one piece of code). Fatal
+// failures end the pair: call through ASSERT_NO_FATAL_FAILURE.
+void expectTheOnePairKernels(const ContinuousBatchResult& result, std::size_t i, const kernel::Toi& one) {
+    ASSERT_EQ(result.state[i], one.state) << "pair " << i;
+    ASSERT_EQ(result.iterations[i], one.iterations) << "pair " << i;
+    ASSERT_EQ(result.t[i], one.t) << "pair " << i;
+    ASSERT_EQ(result.gap[i], one.gap) << "pair " << i;
+    ASSERT_EQ(result.normalX[i], one.normal.x) << "pair " << i;
+    ASSERT_EQ(result.normalY[i], one.normal.y) << "pair " << i;
+    ASSERT_EQ(result.pointX[i], one.point.x) << "pair " << i;
+    ASSERT_EQ(result.pointY[i], one.point.y) << "pair " << i;
+}
+
 TEST(ContinuousBatch, AnswersWhatTheOnePairFunctionsAnswer) {
     const ContinuousBatch batch = testing::randomBatch(3000, 11);
     ContinuousBatchResult result;
@@ -86,14 +99,7 @@ TEST(ContinuousBatch, SpinningPairsAndFailuresMatchTheOnePairKernel) {
             const kernel::Toi one =
                 kernel::timeOfImpact(toKernel(shapeOf(batch, a)), toKernel(sweepOf(batch, a)),
                                      toKernel(shapeOf(batch, b)), toKernel(sweepOf(batch, b)), batch.tolerance, budget);
-            ASSERT_EQ(result.state[i], one.state) << "pair " << i;
-            ASSERT_EQ(result.iterations[i], one.iterations) << "pair " << i;
-            ASSERT_EQ(result.t[i], one.t) << "pair " << i;
-            ASSERT_EQ(result.gap[i], one.gap) << "pair " << i;
-            ASSERT_EQ(result.normalX[i], one.normal.x) << "pair " << i;
-            ASSERT_EQ(result.normalY[i], one.normal.y) << "pair " << i;
-            ASSERT_EQ(result.pointX[i], one.point.x) << "pair " << i;
-            ASSERT_EQ(result.pointY[i], one.point.y) << "pair " << i;
+            ASSERT_NO_FATAL_FAILURE(expectTheOnePairKernels(result, i, one));
             if (result.state[i] != kernel::kFailed) continue;
             ++failed;
             EXPECT_EQ(result.toi(i).state, ToiState::Failed);
@@ -246,12 +252,7 @@ TEST(ContinuousBatch, SegmentCapsuleChainAndRoundedMatchTheOnePairKernel) {
         const testing::KernelPair& p = pairs[i];
         const kernel::Toi one = kernel::timeOfImpact(p.a, testing::kernelMotion(p.sa), p.b,
                                                      testing::kernelMotion(p.sb), batch.tolerance, batch.maxIterations);
-        ASSERT_EQ(result.state[i], one.state) << "pair " << i;
-        ASSERT_EQ(result.iterations[i], one.iterations) << "pair " << i;
-        ASSERT_EQ(result.t[i], one.t) << "pair " << i;
-        ASSERT_EQ(result.gap[i], one.gap) << "pair " << i;
-        ASSERT_EQ(result.normalX[i], one.normal.x) << "pair " << i;
-        ASSERT_EQ(result.pointY[i], one.point.y) << "pair " << i;
+        ASSERT_NO_FATAL_FAILURE(expectTheOnePairKernels(result, i, one));
         hits += result.state[i] == kernel::kHit;
     }
     EXPECT_GT(hits, 300);

@@ -4,6 +4,8 @@
 
 #include "physim/core/World.hpp"
 
+#include "support/ThrowsNaming.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -209,14 +211,7 @@ TEST(MouseJoint, OffCentreGrabAddsNoEnergy) {
     EXPECT_GT(swing, 1.0) << "it did swing about the corner";
 }
 
-void expectThrowsNaming(const std::function<void()>& call, const std::string& name) {
-    try {
-        call();
-        ADD_FAILURE() << "no exception; expected one naming " << name;
-    } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
-    }
-}
+using testing::expectThrowsNaming;
 
 TEST(MouseJoint, BadInputIsRefusedByName) {
     World world;

@@ -3,6 +3,8 @@
 
 #include "physim/core/Geometry.hpp"
 
+#include "support/ThrowsNaming.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -159,14 +161,7 @@ TEST(RoundedCapsuleOutline, PointsLieOnTheBoundaryCounterClockwise) {
     }
 }
 
-void expectThrowsNaming(const std::function<void()>& f, const std::string& words) {
-    try {
-        f();
-        ADD_FAILURE() << "no exception; expected one naming " << words;
-    } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
-}
+using testing::expectThrowsNaming;
 
 TEST(SegmentBadInput, NonFiniteOrZeroLengthThrows) {
     expectThrowsNaming([] { makeSegment({kNaN, 0.0}, {1.0, 0.0}); }, "segment point1");

@@ -9,7 +9,9 @@
 
 #include "KernelBridge.hpp"
 
+#include "support/DenseSampling.hpp"
 #include "support/KernelShapes.hpp"
+#include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -174,50 +176,12 @@ TEST(ShapeDistanceKinds, SegmentsCapsulesAndRoundedBoxesInClosedForm) {
                 0.5 - 0.05, 1e-15);
 }
 
-// --- Over a motion: the true distance sampled densely, refined where it comes near (TimeOfImpactTest.cpp's
-// sampleDistance with the reference distance). No two points of the pair approach faster than L = |motion_b -
-// motion_a| + |turn_a| R_a + |turn_b| R_b (R: bounding radius), so between samples d0, d1 at spacing h the
-// distance stays above (d0 + d1 - L h) / 2; intervals where that bound is below the tolerance are halved down to
-// tolerance / (10 L): the sampling's error bound is tolerance / 20.
-struct Sampled {
-    double minimum = INFINITY;
-    double firstBelowHalf = INFINITY;  ///< first sampled t with distance < tolerance / 2
-    double firstOverlap = INFINITY;    ///< first sampled t with distance 0
-};
-
-Sampled sampleMotion(const kernel::Shape& a, const Sweep& sa, const kernel::Shape& b, const Sweep& sb, double tol) {
-    const double speed = ((sb.p1 - sb.p0) - (sa.p1 - sa.p0)).norm() + std::abs(sa.a1 - sa.a0) * a.boundingRadius +
-                         std::abs(sb.a1 - sb.a0) * b.boundingRadius;
-    const double finest = 0.1 * tol / std::max(speed, 1e-300);
-    Sampled s;
-    auto sample = [&](double t) {
-        const double d = referenceDistance(place(a, sa.at(t)), place(b, sb.at(t)));
-        s.minimum = std::min(s.minimum, d);
-        if (d < 0.5 * tol) s.firstBelowHalf = std::min(s.firstBelowHalf, t);
-        if (d == 0.0) s.firstOverlap = std::min(s.firstOverlap, t);
-        return d;
-    };
-    struct Interval {
-        double t0, d0, t1, d1;
-    };
-    std::vector<Interval> stack;
-    const int grid = 1000;
-    double t0 = 0.0, d0 = sample(0.0);
-    for (int k = 1; k <= grid && s.firstBelowHalf == INFINITY; ++k) {
-        const double t1 = static_cast<double>(k) / grid, d1 = sample(t1);
-        stack.push_back({t0, d0, t1, d1});
-        while (!stack.empty() && s.firstBelowHalf == INFINITY) {
-            const Interval i = stack.back();
-            stack.pop_back();
-            if (0.5 * (i.d0 + i.d1 - speed * (i.t1 - i.t0)) >= tol || i.t1 - i.t0 <= finest) continue;
-            const double tm = 0.5 * (i.t0 + i.t1), dm = sample(tm);
-            stack.push_back({tm, dm, i.t1, i.d1});  // the earlier half on top: time order
-            stack.push_back({i.t0, i.d0, tm, dm});
-        }
-        t0 = t1;
-        d0 = d1;
-    }
-    return s;
+// --- Over a motion: the true distance sampled densely, refined where it comes near (tests/support/DenseSampling.hpp,
+// as TimeOfImpactTest.cpp, with the reference distance): the sampling's error bound is tolerance / 20.
+testing::DenseSampling sampleMotion(const kernel::Shape& a, const Sweep& sa, const kernel::Shape& b, const Sweep& sb,
+                                    double tol) {
+    return testing::sampleDistance(testing::closingSpeedBound(sa, a.boundingRadius, sb, b.boundingRadius), tol,
+                                   [&](double t) { return referenceDistance(place(a, sa.at(t)), place(b, sb.at(t))); });
 }
 
 // What the exact method answered on a set of pairs, against dense sampling of the reference distance.
@@ -239,7 +203,7 @@ Tally checkAgainstSampling(const std::vector<testing::KernelPair>& pairs) {
         ++n.tested;
         const kernel::Toi r = kernel::timeOfImpact(p.a, testing::kernelMotion(p.sa), p.b,
                                                    testing::kernelMotion(p.sb), tol, 100);
-        const Sampled truth = sampleMotion(p.a, p.sa, p.b, p.sb, tol);
+        const testing::DenseSampling truth = sampleMotion(p.a, p.sa, p.b, p.sb, tol);
         n.overlaps += truth.firstOverlap < INFINITY;
         n.nearMisses += truth.minimum >= tol && truth.minimum <= 3.0 * tol;
         EXPECT_NE(r.state, kernel::kTouching) << "pair " << i << " starts apart";
@@ -278,62 +242,30 @@ TEST(TimeOfImpactKinds, FastBodiesNeverTunnelThroughSegmentCapsuleChainOrRounded
 }
 
 // Every kind against every kind, spinning up to 17 rad and moving up to 8 m, placed to graze at a random moment t*
-// (TimeOfImpactTest.cpp's testing::spinningPairs for kernel shapes): b is put `gap` from a along their closest-point
+// (testing::placeGrazing, spinningPairs' rule, on kernel shapes): b is put `gap` from a along their closest-point
 // normal at t*, and in three pairs of four b's motion along that normal is set so that the gap's rate is zero
 // there (a graze, or a hit just after). Gaps: overlaps of 1 mm and 10 um, then 0.2 to 20 tolerances; the fourth
 // pair has a random gap up to 0.5 m. Near misses are where loose bounds for a radius would give phantom hits or
 // run out of iterations.
 std::vector<testing::KernelPair> grazingPairs(int count, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-    auto direction = [&] {
-        const double angle = in(0.0, 2.0 * M_PI);
-        return Vec2(std::cos(angle), std::sin(angle));
-    };
-    auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
-    auto turn = [&](double still) {
-        if (u(rng) < still) return 0.0;
-        const double sign = u(rng) < 0.5 ? -1.0 : 1.0;
-        return sign * logUniform(0.1, 17.0);
-    };
-    auto move = [&](double still) { return u(rng) < still ? 0.0 : logUniform(0.05, 8.0); };
+    testing::PairDraws draw(seed);
     std::vector<kernel::Shape> shapes = everyKind();
     shapes.push_back(kernelSegment({-1.0, 0.0}, {1.0, 0.0}));
     shapes.push_back(kernelCapsule({-1.0, 0.0}, {1.0, 0.0}, 0.005));
     shapes.push_back(kernelBox(1.0, 0.005, 0.01));
-    const double tol = kToiTolerance;
-    const double gaps[12] = {-1e-3, -1e-5, 0.2 * tol, 0.45 * tol, 0.55 * tol, 0.9 * tol,
-                             1.1 * tol, 1.3 * tol, 1.6 * tol, 2.0 * tol, 3.0 * tol, 20.0 * tol};
     std::vector<testing::KernelPair> pairs;
     while (static_cast<int>(pairs.size()) < count) {
         const int i = static_cast<int>(pairs.size());
         testing::KernelPair p;
-        p.a = shapes[static_cast<std::size_t>(u(rng) * shapes.size())];
-        p.b = shapes[static_cast<std::size_t>(u(rng) * shapes.size())];
-        const double spinA = turn(0.2), spinB = turn(0.5), speedA = move(0.3), speedB = move(0.5);
-        const Vec2 vA = speedA * direction();
-        Vec2 vB = speedB * direction();
-        const double tStar = in(0.05, 0.95), angleA = in(-M_PI, M_PI), angleB = in(-M_PI, M_PI);
-        const double reach = in(0.3, 1.0) * (p.a.boundingRadius + p.b.boundingRadius + 0.1);
-        const Vec2 cA = Vec2::Zero();
-        Vec2 cB = reach * direction();
-        const kernel::Distance d = kernel::shapeDistance(p.a, toXf({cA, Rotation::fromAngle(angleA)}), p.b,
-                                                         toXf({cB, Rotation::fromAngle(angleB)}));
-        if (!(d.distance > 0.0)) continue;  // overlapping: draw again
-        const Vec2 normal(d.normal.x, d.normal.y);
-        const bool graze = i % 4 != 0;
-        const double shift = (graze ? gaps[i % 12] : in(0.0, 0.5)) - d.distance;
-        cB += shift * normal;
-        if (graze) {  // zero the rate of change of the gap between the closest points at t*
-            const Vec2 pointA(d.pointA.x, d.pointA.y), pointB = Vec2(d.pointB.x, d.pointB.y) + shift * normal;
-            const Vec2 velocityA = vA + spinA * Vec2(-(pointA - cA).y(), (pointA - cA).x());
-            const Vec2 velocityB = vB + spinB * Vec2(-(pointB - cB).y(), (pointB - cB).x());
-            vB -= normal.dot(velocityB - velocityA) * normal;
-        }
-        p.sa = {cA - tStar * vA, cA + (1.0 - tStar) * vA, angleA - tStar * spinA, angleA + (1.0 - tStar) * spinA};
-        p.sb = {cB - tStar * vB, cB + (1.0 - tStar) * vB, angleB - tStar * spinB, angleB + (1.0 - tStar) * spinB};
-        if (referenceDistance(place(p.a, p.sa.at(0.0)), place(p.b, p.sb.at(0.0))) < tol) continue;
+        p.a = shapes[static_cast<std::size_t>(draw.unit() * shapes.size())];
+        p.b = shapes[static_cast<std::size_t>(draw.unit() * shapes.size())];
+        auto distance = [&](const Transform& xa, const Transform& xb) {
+            const kernel::Distance d = kernel::shapeDistance(p.a, toXf(xa), p.b, toXf(xb));
+            return DistanceOutput{d.distance, Vec2(d.normal.x, d.normal.y), Vec2(d.pointA.x, d.pointA.y),
+                                  Vec2(d.pointB.x, d.pointB.y)};
+        };
+        if (!testing::placeGrazing(draw, i, p.a.boundingRadius, p.b.boundingRadius, p.sa, p.sb, distance)) continue;
+        if (referenceDistance(place(p.a, p.sa.at(0.0)), place(p.b, p.sb.at(0.0))) < kToiTolerance) continue;
         pairs.push_back(p);
     }
     return pairs;

@@ -8,6 +8,7 @@
 
 #include "physim/core/Collide.hpp"
 
+#include "support/DenseSampling.hpp"
 #include "support/RandomBatch.hpp"
 
 #include <gtest/gtest.h>
@@ -242,52 +243,12 @@ TEST(TimeOfImpact, RunningOutOfIterationsIsFailedNotAHit) {
     }
 }
 
-// The true distance over [0, 1] by dense sampling, refined where it matters. No two points of the pair move apart
-// or together faster than L = |motion_b - motion_a| + |turn_a| R_a + |turn_b| R_b (m per unit t, R: bounding
-// radius), so between samples d0 and d1 at spacing h the distance stays above (d0 + d1 - L h) / 2. Intervals where
-// that bound is below the tolerance are halved down to a spacing of tolerance / (10 L), where the bound is within
-// tolerance / 20 of the samples. So the true minimum is at least min(tolerance, sampled minimum - tolerance / 20):
-// the sampling's error bound is tolerance / 20 = 5 um. The walk goes in time order and stops at the first sample
-// closer than half the tolerance (all the checks below need).
-struct DenseSampling {
-    double minimum = INFINITY;         ///< m, of the samples
-    double firstBelowHalf = INFINITY;  ///< first sampled t with distance < tolerance / 2
-    double firstOverlap = INFINITY;    ///< first sampled t with distance 0 (touching or overlapping)
-};
-
-DenseSampling sampleDistance(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb, double tolerance) {
-    const double speed = ((sb.p1 - sb.p0) - (sa.p1 - sa.p0)).norm() + std::abs(sa.a1 - sa.a0) * boundingRadius(a) +
-                         std::abs(sb.a1 - sb.a0) * boundingRadius(b);
-    const double finest = 0.1 * tolerance / std::max(speed, 1e-300);
-    DenseSampling s;
-    auto sample = [&](double t) {
-        const double d = shapeDistance(a, sa.at(t), b, sb.at(t)).distance;
-        s.minimum = std::min(s.minimum, d);
-        if (d < 0.5 * tolerance) s.firstBelowHalf = std::min(s.firstBelowHalf, t);
-        if (d == 0.0) s.firstOverlap = std::min(s.firstOverlap, t);
-        return d;
-    };
-    struct Interval {
-        double t0, d0, t1, d1;
-    };
-    std::vector<Interval> stack;
-    const int grid = 1000;
-    double t0 = 0.0, d0 = sample(0.0);
-    for (int k = 1; k <= grid && s.firstBelowHalf == INFINITY; ++k) {
-        const double t1 = static_cast<double>(k) / grid, d1 = sample(t1);
-        stack.push_back({t0, d0, t1, d1});
-        while (!stack.empty() && s.firstBelowHalf == INFINITY) {
-            const Interval i = stack.back();
-            stack.pop_back();
-            if (0.5 * (i.d0 + i.d1 - speed * (i.t1 - i.t0)) >= tolerance || i.t1 - i.t0 <= finest) continue;
-            const double tm = 0.5 * (i.t0 + i.t1), dm = sample(tm);
-            stack.push_back({tm, dm, i.t1, i.d1});  // the earlier half on top: time order
-            stack.push_back({i.t0, i.d0, tm, dm});
-        }
-        t0 = t1;
-        d0 = d1;
-    }
-    return s;
+// The true distance over [0, 1] by dense sampling (tests/support/DenseSampling.hpp): its error bound is
+// tolerance / 20 = 5 um.
+testing::DenseSampling sampleDistance(const Geometry& a, const Sweep& sa, const Geometry& b, const Sweep& sb,
+                                      double tolerance) {
+    return testing::sampleDistance(testing::closingSpeedBound(sa, boundingRadius(a), sb, boundingRadius(b)), tolerance,
+                                   [&](double t) { return shapeDistance(a, sa.at(t), b, sb.at(t)).distance; });
 }
 
 // The exact method against dense sampling on fast-spinning pairs, most built to graze at a chosen gap around the
@@ -303,7 +264,7 @@ TEST(TimeOfImpact, AgreesWithDenseSamplingOnSpinningGrazingPairs) {
     for (std::size_t i = 0; i < pairs.size(); ++i) {
         const testing::FastPair& p = pairs[i];
         const ToiResult r = timeOfImpact(p.a, p.sa, p.b, p.sb);
-        const DenseSampling truth = sampleDistance(p.a, p.sa, p.b, p.sb, tol);
+        const testing::DenseSampling truth = sampleDistance(p.a, p.sa, p.b, p.sb, tol);
         iterations += r.iterations;
         mostIterations = std::max(mostIterations, r.iterations);
         ASSERT_NE(r.state, ToiState::Touching) << "pair " << i << " starts apart";

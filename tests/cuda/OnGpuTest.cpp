@@ -22,20 +22,43 @@
 namespace physim::cuda {
 namespace {
 
-TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnRandomPairs) {
-    GpuSolverOptions options;
-    options.minPairs = 0;
-    GpuContinuousSolver solver(options);
-    const ContinuousBatch batch = testing::randomBatch(20000, 21);
-    ContinuousBatchResult gpu, cpu;
+// The batch solved on the GPU (asserting it ran there) and on the CPU, and how the answers compare; none may
+// disagree. Fatal failures end the test: call through ASSERT_NO_FATAL_FAILURE.
+void solveOnBoth(GpuContinuousSolver& solver, const ContinuousBatch& batch, ContinuousBatchResult& gpu,
+                 ContinuousBatchResult& cpu, testing::Agreement& a) {
     solver.solve(batch, gpu);
     ASSERT_TRUE(solver.lastRanOnGpu()) << solver.error();
     CpuContinuousSolver(0).solve(batch, cpu);
-    const testing::Agreement a = testing::compareResults(batch, gpu, cpu);
+    a = testing::compareResults(batch, gpu, cpu);
     std::cout << "identical " << a.identical << ", within tolerance " << a.within << ", disagreeing " << a.disagree
-              << " of " << batch.pairCount() << "; kernel " << solver.lastTimings().kernelMs << " ms, total "
-              << solver.lastTimings().totalMs << " ms\n";
+              << " of " << batch.pairCount() << "\n";
     EXPECT_EQ(a.disagree, 0);
+}
+
+// Hits report a gap under the tolerance on the GPU too; counts them in hits. Fatal failures end the test: call
+// through ASSERT_NO_FATAL_FAILURE.
+void expectGpuHitsUnderTheTolerance(const ContinuousBatch& batch, const ContinuousBatchResult& gpu, int& hits) {
+    for (std::size_t i = 0; i < batch.pairCount(); ++i)
+        if (gpu.state[i] == kernel::kHit) {
+            ++hits;
+            ASSERT_LT(gpu.gap[i], batch.tolerance) << "pair " << i;
+        }
+}
+
+GpuSolverOptions everyBatchOnTheGpu() {
+    GpuSolverOptions options;
+    options.minPairs = 0;  // every batch on the GPU, however small
+    return options;
+}
+
+TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnRandomPairs) {
+    GpuContinuousSolver solver(everyBatchOnTheGpu());
+    const ContinuousBatch batch = testing::randomBatch(20000, 21);
+    ContinuousBatchResult gpu, cpu;
+    testing::Agreement a;
+    ASSERT_NO_FATAL_FAILURE(solveOnBoth(solver, batch, gpu, cpu, a));
+    std::cout << "kernel " << solver.lastTimings().kernelMs << " ms, total " << solver.lastTimings().totalMs
+              << " ms\n";
     for (std::size_t i = 0, shown = 0; i < batch.pairCount() && shown < 8 && a.disagree > 0; ++i) {
         if (gpu.state[i] == cpu.state[i] && gpu.t[i] == cpu.t[i]) continue;
         ++shown;
@@ -45,11 +68,8 @@ TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnRandomPairs) {
                   << " | cpu " << cpu.state[i] << " t " << cpu.t[i] << " it " << cpu.iterations[i] << " gap "
                   << cpu.gap[i] << "\n";
     }
-    // Hits report a gap under the tolerance on the GPU too.
-    for (std::size_t i = 0; i < batch.pairCount(); ++i)
-        if (gpu.state[i] == kernel::kHit) {
-            ASSERT_LT(gpu.gap[i], batch.tolerance) << "pair " << i;
-        }
+    int hits = 0;
+    ASSERT_NO_FATAL_FAILURE(expectGpuHitsUnderTheTolerance(batch, gpu, hits));
     EXPECT_GT(solver.lastTimings().kernelMs, 0.0);
     EXPECT_GE(solver.lastTimings().totalMs, solver.lastTimings().kernelMs);
 }
@@ -63,9 +83,7 @@ TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
     s.gravity = Vec2::Zero();
     World world(s);
     const auto bullets = testing::fillBulletBox(world, 60, 5);
-    GpuSolverOptions options;
-    options.minPairs = 0;  // every batch on the GPU, however small
-    auto gpu = std::make_shared<GpuContinuousSolver>(options);
+    auto gpu = std::make_shared<GpuContinuousSolver>(everyBatchOnTheGpu());
     world.setContinuousSolver(gpu);
     auto energy = [&] { return testing::kineticEnergy(world, bullets); };
     const double start = energy();
@@ -87,9 +105,7 @@ TEST(GpuContinuousSolverOnGpu, AWorldOnTheGpuKeepsItsBulletsInTheBox) {
 // smaller) and answers the same bits; new motions with the same shapes are answered as the CPU answers them; a new
 // revision copies changed shapes.
 TEST(GpuContinuousSolverOnGpu, ShapesKeptOnTheDeviceGiveTheSameAnswers) {
-    GpuSolverOptions options;
-    options.minPairs = 0;
-    GpuContinuousSolver gpu(options);
+    GpuContinuousSolver gpu(everyBatchOnTheGpu());
     ContinuousBatch batch = testing::randomBatch(20000, 33);
     batch.shapesRevision = 7;
     ContinuousBatchResult first, second, cpu;
@@ -120,24 +136,13 @@ TEST(GpuContinuousSolverOnGpu, ShapesKeptOnTheDeviceGiveTheSameAnswers) {
 // Segments, capsules, chain segments and rounded polygons on the device (the kernel header's rounded paths as nvcc
 // compiles them): the same answers as the CPU's within the tolerance, and a hit's gap under it.
 TEST(GpuContinuousSolverOnGpu, AgreesWithTheCpuOnSegmentCapsuleChainAndRoundedPairs) {
-    GpuSolverOptions options;
-    options.minPairs = 0;
-    GpuContinuousSolver solver(options);
+    GpuContinuousSolver solver(everyBatchOnTheGpu());
     const ContinuousBatch batch = testing::kernelBatch(testing::roundedKindsPairs(20000, 41));
     ContinuousBatchResult gpu, cpu;
-    solver.solve(batch, gpu);
-    ASSERT_TRUE(solver.lastRanOnGpu()) << solver.error();
-    CpuContinuousSolver(0).solve(batch, cpu);
-    const testing::Agreement a = testing::compareResults(batch, gpu, cpu);
-    std::cout << "identical " << a.identical << ", within tolerance " << a.within << ", disagreeing " << a.disagree
-              << " of " << batch.pairCount() << "\n";
-    EXPECT_EQ(a.disagree, 0);
+    testing::Agreement a;
+    ASSERT_NO_FATAL_FAILURE(solveOnBoth(solver, batch, gpu, cpu, a));
     int hits = 0;
-    for (std::size_t i = 0; i < batch.pairCount(); ++i)
-        if (gpu.state[i] == kernel::kHit) {
-            ++hits;
-            ASSERT_LT(gpu.gap[i], batch.tolerance) << "pair " << i;
-        }
+    ASSERT_NO_FATAL_FAILURE(expectGpuHitsUnderTheTolerance(batch, gpu, hits));
     EXPECT_GT(hits, 5000);
 }
 

@@ -8,11 +8,11 @@
 #include "physim/core/ContinuousBatch.hpp"
 #include "physim/core/Math.hpp"
 #include "physim/core/TimeOfImpact.hpp"
+#include "support/RandomBatch.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <random>
 #include <vector>
 
 namespace physim::testing {
@@ -77,10 +77,7 @@ inline std::int32_t appendShape(ContinuousBatch& batch, const kernel::Shape& k) 
 }
 
 /// One moving pair of kernel shapes: a sweeps across b.
-struct KernelPair {
-    kernel::Shape a, b;
-    Sweep sa, sb;
-};
+using KernelPair = MovingPair<kernel::Shape>;
 
 /// Fast movers (circle, sharp box, capsule, rounded box; 2 to 20 cm) shot at thin obstacles near the origin (a
 /// segment, a capsule 1 cm thick, a rounded pentagon, a chain segment; 0.5 to 2 m long), every mover against every
@@ -89,9 +86,8 @@ struct KernelPair {
 /// 16 pairs (every mover against every obstacle) spins like a propeller, up to 17 rad. Without continuous
 /// detection most of these tunnel: a segment has no thickness at all. Pairs may start touching.
 inline std::vector<KernelPair> roundedKindsPairs(int count, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
+    PairDraws draw(seed);
+    auto in = [&](double lo, double hi) { return draw.in(lo, hi); };
     std::vector<KernelPair> pairs;
     for (int i = 0; i < count; ++i) {
         KernelPair p;
@@ -116,11 +112,7 @@ inline std::vector<KernelPair> roundedKindsPairs(int count, unsigned seed) {
             }
             default: p.b = kernelChainSegment({0.5 * length, 0.1}, {-0.5 * length, -0.1});
         }
-        const double heading = in(0.0, 2.0 * M_PI);
-        const Vec2 dir(std::cos(heading), std::sin(heading)), side(-dir.y(), dir.x());
-        const Vec2 start = -in(0.3, 3.0) * dir + in(-0.6, 0.6) * side;
-        const double a0 = in(-M_PI, M_PI), travel = in(1.0, 20.0), turn = in(-6.0, 6.0);
-        p.sa = Sweep{start, start + travel * dir, a0, a0 + turn};
+        p.sa = draw.aimedSweep(0.3, 3.0, 0.6, 20.0, 6.0);
         const double b0 = in(-M_PI, M_PI), drift = in(-0.1, 0.1);
         const double spin = (i / 16) % 2 == 0 ? in(-0.5, 0.5) : in(-17.0, 17.0);
         p.sb = Sweep{Vec2::Zero(), Vec2(drift, -drift), b0, b0 + spin};

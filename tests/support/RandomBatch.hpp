@@ -20,10 +20,48 @@
 
 namespace physim::testing {
 
-/// One moving pair: shape a sweeps across shape b.
-struct FastPair {
-    Geometry a, b;
+/// One moving pair: shape a sweeps across shape b (Geometry here; kernel shapes in KernelShapes.hpp).
+template <class Shape>
+struct MovingPair {
+    Shape a, b;
     Sweep sa, sb;
+};
+using FastPair = MovingPair<Geometry>;
+
+/// The random draws of the pair generators, all from one mt19937 stream of uniform [0, 1) draws.
+class PairDraws {
+public:
+    explicit PairDraws(unsigned seed) : rng_(seed) {}
+
+    double unit() { return u_(rng_); }
+    double in(double lo, double hi) { return lo + (hi - lo) * unit(); }
+    Vec2 direction() {
+        const double a = in(0.0, 2.0 * M_PI);
+        return Vec2(std::cos(a), std::sin(a));
+    }
+    // Log-uniform rates, so that slow and fast are both common: turns of 0.1 to 17 rad, either way; moves of 0.05
+    // to 8 m. A share `still` of the draws is 0: some bodies neither turn nor move.
+    double logUniform(double lo, double hi) { return lo * std::pow(hi / lo, unit()); }
+    double turn(double still) {
+        if (unit() < still) return 0.0;
+        const double sign = unit() < 0.5 ? -1.0 : 1.0;
+        return sign * logUniform(0.1, 17.0);
+    }
+    double move(double still) { return unit() < still ? 0.0 : logUniform(0.05, 8.0); }
+
+    /// A shot at the origin from a random heading: it starts `nearest` to `farthest` m away, aimed within `aim` m
+    /// of the origin, travels 1 to `longest` m over the motion and turns up to `turn` rad either way.
+    Sweep aimedSweep(double nearest, double farthest, double aim, double longest, double turn) {
+        const double heading = in(0.0, 2.0 * M_PI);
+        const Vec2 dir(std::cos(heading), std::sin(heading)), side(-dir.y(), dir.x());
+        const Vec2 start = -in(nearest, farthest) * dir + in(-aim, aim) * side;
+        const double a0 = in(-M_PI, M_PI), travel = in(1.0, longest), spin = in(-turn, turn);
+        return {start, start + travel * dir, a0, a0 + spin};
+    }
+
+private:
+    std::mt19937 rng_;
+    std::uniform_real_distribution<double> u_{0.0, 1.0};
 };
 
 /// A small fast shape (1 to 10 cm) crossing an obstacle at the origin: a thin plank (1 cm thick), a small circle
@@ -31,9 +69,8 @@ struct FastPair {
 /// 1200 m/s at 60 Hz), aimed within 0.3 m of the centre, turning up to 2 rad. About 2/3 of the pairs collide.
 /// (ccd_bench's pairs too, so its tables and these tests see the same kind of input.)
 inline std::vector<FastPair> randomPairs(int count, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
+    PairDraws draw(seed);
+    auto in = [&](double lo, double hi) { return draw.in(lo, hi); };
     std::vector<FastPair> pairs;
     for (int i = 0; i < count; ++i) {
         FastPair p;
@@ -49,12 +86,7 @@ inline std::vector<FastPair> randomPairs(int count, unsigned seed) {
             case 1: p.b = makeCircle(in(0.01, 0.1)); break;
             default: p.b = makePolygon({{-0.1, -0.05}, {0.12, -0.08}, {0.15, 0.06}, {-0.02, 0.12}});
         }
-        const double heading = in(0.0, 2.0 * M_PI);
-        const Vec2 dir(std::cos(heading), std::sin(heading));
-        const Vec2 side(-dir.y(), dir.x());
-        const Vec2 start = -in(0.5, 5.0) * dir + in(-0.3, 0.3) * side;
-        const double a0 = in(-M_PI, M_PI);
-        p.sa = Sweep{start, start + in(1.0, 20.0) * dir, a0, a0 + in(-2.0, 2.0)};
+        p.sa = draw.aimedSweep(0.5, 5.0, 0.3, 20.0, 2.0);
         const double b0 = in(-M_PI, M_PI);
         p.sb = Sweep{Vec2::Zero(), Vec2::Zero(), b0, b0};
         if (collide(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).pointCount > 0) {
@@ -66,27 +98,61 @@ inline std::vector<FastPair> randomPairs(int count, unsigned seed) {
     return pairs;
 }
 
+/// The gap at t* of pair i of a grazing set, by i % 12 (m): overlaps of 1 mm and 10 um, then 0.2 to 20 tolerances.
+inline double grazingGap(int i) {
+    const double tol = kToiTolerance;
+    const double gaps[12] = {-1e-3, -1e-5, 0.2 * tol, 0.45 * tol, 0.55 * tol, 0.9 * tol,
+                             1.1 * tol, 1.3 * tol, 1.6 * tol, 2.0 * tol, 3.0 * tol, 20.0 * tol};
+    return gaps[i % 12];
+}
+
+/// The motions of pair i of a grazing set, for shapes of bounding radii ra and rb (spinningPairs' rule, below):
+/// a turns and moves about the origin, b is placed at t* by distance(xa, xb) (a DistanceOutput between a at xa and
+/// b at xb). False when the draw overlaps at t*: draw again.
+template <class Distance>
+bool placeGrazing(PairDraws& draw, int i, double ra, double rb, Sweep& sa, Sweep& sb, Distance distance) {
+    const double spinA = draw.turn(0.2), spinB = draw.turn(0.5), speedA = draw.move(0.3), speedB = draw.move(0.5);
+    const Vec2 vA = speedA * draw.direction();
+    Vec2 vB = speedB * draw.direction();
+    const double tStar = draw.in(0.05, 0.95), angleA = draw.in(-M_PI, M_PI), angleB = draw.in(-M_PI, M_PI);
+    const Vec2 cA = Vec2::Zero();
+    const double reach = draw.in(0.3, 1.0) * (ra + rb + 0.1);
+    Vec2 cB = reach * draw.direction();
+    const DistanceOutput d = distance(Transform{cA, Rotation::fromAngle(angleA)},
+                                      Transform{cB, Rotation::fromAngle(angleB)});
+    if (!(d.distance > 0.0)) return false;  // overlapping
+    const bool graze = i % 4 != 0;
+    const double shift = (graze ? grazingGap(i) : draw.in(0.0, 0.5)) - d.distance;
+    cB += shift * d.normal;
+    if (graze) {  // zero the rate of change of the gap between the closest points at t*
+        auto velocity = [](const Vec2& v, double w, const Vec2& c, const Vec2& at) -> Vec2 {
+            return v + w * perp(at - c);  // a Vec2, not an expression over perp's temporary
+        };
+        const Vec2 pointB = d.pointB + shift * d.normal;
+        vB -= d.normal.dot(velocity(vB, spinB, cB, pointB) - velocity(vA, spinA, cA, d.pointA)) * d.normal;
+    }
+    sa = {cA - tStar * vA, cA + (1.0 - tStar) * vA, angleA - tStar * spinA, angleA + (1.0 - tStar) * spinA};
+    sb = {cB - tStar * vB, cB + (1.0 - tStar) * vB, angleB - tStar * spinB, angleB + (1.0 - tStar) * spinB};
+    return true;
+}
+
 /// Pairs of fast-spinning shapes, most of them built to graze. Shapes: circles (some off their body's origin),
 /// boxes, 2 m planks 1 cm thick, thin boxes off the origin, random convex polygons of 3 to 8 vertices. Over the
 /// motion each moves up to 8 m (480 m/s over a 1/60 s step) and turns up to 17 rad (1000 rad/s).
-/// At a random moment t* in (0.05, 0.95) b is placed `gaps[i % 12]` from a along their closest-point normal; in
+/// At a random moment t* in (0.05, 0.95) b is placed `grazingGap(i)` from a along their closest-point normal; in
 /// three pairs of four, b's motion along that normal is then set so that the gap's rate of change at t* is zero,
 /// which makes t* a minimum of the distance (a graze) or a maximum (a hit just after). Gaps around the tolerance
 /// kToiTolerance: overlaps of 1 mm and 10 um, then 0.2 to 20 tolerances. The fourth pair has a random gap up to
 /// 0.5 m and no such adjustment. Other parts of the shapes may still meet at other times (a spinning plank sweeps
 /// through what it grazed). Every pair starts at least the tolerance apart.
 inline std::vector<FastPair> spinningPairs(int count, unsigned seed) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    auto in = [&](double lo, double hi) { return lo + (hi - lo) * u(rng); };
-    auto direction = [&] {
-        const double a = in(0.0, 2.0 * M_PI);
-        return Vec2(std::cos(a), std::sin(a));
-    };
+    PairDraws draw(seed);
+    auto u = [&] { return draw.unit(); };
+    auto in = [&](double lo, double hi) { return draw.in(lo, hi); };
     // Draws are taken one per statement: the order in which a call's arguments are evaluated is unspecified.
     auto shape = [&]() -> Geometry {
-        const int kind = static_cast<int>(6.0 * u(rng));
-        const double r1 = u(rng), r2 = u(rng), r3 = u(rng), r4 = u(rng), r5 = u(rng);
+        const int kind = static_cast<int>(6.0 * u());
+        const double r1 = u(), r2 = u(), r3 = u(), r4 = u(), r5 = u();
         switch (kind) {
             case 0: return makeCircle(0.01 + 0.29 * r1);
             case 1: return makeCircle(0.01 + 0.19 * r1, {0.4 * r2 - 0.2, 0.4 * r3 - 0.2});
@@ -96,11 +162,11 @@ inline std::vector<FastPair> spinningPairs(int count, unsigned seed) {
                 return makeBox(0.05 + 0.25 * r1, 0.005 + 0.045 * r2, {0.2 * r3 - 0.1, 0.2 * r4 - 0.1}, 6.0 * r5 - 3.0);
             default: {  // vertices at increasing angles around a circle, pulled in by up to 30% (makePolygon refuses
                         // the rare non-convex draw)
-                const int n = 3 + static_cast<int>(6.0 * u(rng));
+                const int n = 3 + static_cast<int>(6.0 * u());
                 const double size = in(0.05, 0.4), phase = in(0.0, 2.0 * M_PI);
                 std::vector<Vec2> points;
                 for (int k = 0; k < n; ++k) {
-                    const double angle = phase + 2.0 * M_PI * (k + 0.3 * u(rng)) / n, r = size * in(0.7, 1.0);
+                    const double angle = phase + 2.0 * M_PI * (k + 0.3 * u()) / n, r = size * in(0.7, 1.0);
                     points.emplace_back(r * std::cos(angle), r * std::sin(angle));
                 }
                 try {
@@ -111,45 +177,13 @@ inline std::vector<FastPair> spinningPairs(int count, unsigned seed) {
             }
         }
     };
-    const double tol = kToiTolerance;
-    const double gaps[12] = {-1e-3, -1e-5, 0.2 * tol, 0.45 * tol, 0.55 * tol, 0.9 * tol,
-                             1.1 * tol, 1.3 * tol, 1.6 * tol, 2.0 * tol, 3.0 * tol, 20.0 * tol};
     std::vector<FastPair> pairs;
     while (static_cast<int>(pairs.size()) < count) {
         const int i = static_cast<int>(pairs.size());
         FastPair p{shape(), shape(), {}, {}};
-        // Log-uniform rates, so that slow and fast are both common: turns of 0.1 to 17 rad, either way; moves of
-        // 0.05 to 8 m. Some bodies neither turn nor move.
-        auto logUniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u(rng)); };
-        auto turn = [&](double still) {
-            if (u(rng) < still) return 0.0;
-            const double sign = u(rng) < 0.5 ? -1.0 : 1.0;
-            return sign * logUniform(0.1, 17.0);
-        };
-        auto move = [&](double still) { return u(rng) < still ? 0.0 : logUniform(0.05, 8.0); };
-        const double spinA = turn(0.2), spinB = turn(0.5), speedA = move(0.3), speedB = move(0.5);
-        const Vec2 vA = speedA * direction();
-        Vec2 vB = speedB * direction();
-        const double tStar = in(0.05, 0.95), angleA = in(-M_PI, M_PI), angleB = in(-M_PI, M_PI);
-        const Vec2 cA = Vec2::Zero();
-        const double reach = in(0.3, 1.0) * (boundingRadius(p.a) + boundingRadius(p.b) + 0.1);
-        Vec2 cB = reach * direction();
-        const Transform xa{cA, Rotation::fromAngle(angleA)};
-        const DistanceOutput d = shapeDistance(p.a, xa, p.b, {cB, Rotation::fromAngle(angleB)});
-        if (!(d.distance > 0.0)) continue;  // overlapping: draw again
-        const bool graze = i % 4 != 0;
-        const double shift = (graze ? gaps[i % 12] : in(0.0, 0.5)) - d.distance;
-        cB += shift * d.normal;
-        if (graze) {  // zero the rate of change of the gap between the closest points at t*
-            auto velocity = [](const Vec2& v, double w, const Vec2& c, const Vec2& at) -> Vec2 {
-                return v + w * perp(at - c);  // a Vec2, not an expression over perp's temporary
-            };
-            const Vec2 pointB = d.pointB + shift * d.normal;
-            vB -= d.normal.dot(velocity(vB, spinB, cB, pointB) - velocity(vA, spinA, cA, d.pointA)) * d.normal;
-        }
-        p.sa = {cA - tStar * vA, cA + (1.0 - tStar) * vA, angleA - tStar * spinA, angleA + (1.0 - tStar) * spinA};
-        p.sb = {cB - tStar * vB, cB + (1.0 - tStar) * vB, angleB - tStar * spinB, angleB + (1.0 - tStar) * spinB};
-        if (shapeDistance(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).distance < tol) continue;
+        auto distance = [&](const Transform& xa, const Transform& xb) { return shapeDistance(p.a, xa, p.b, xb); };
+        if (!placeGrazing(draw, i, boundingRadius(p.a), boundingRadius(p.b), p.sa, p.sb, distance)) continue;
+        if (shapeDistance(p.a, p.sa.at(0.0), p.b, p.sb.at(0.0)).distance < kToiTolerance) continue;
         pairs.push_back(p);
     }
     return pairs;
