@@ -13,7 +13,8 @@
 // (flattened there over 5 mm). Its mass, centre and inertia are set to the capsule's (2.4 computes a polygon's
 // mass without its radius).
 // The scene's chain is a b2ChainShape, whose solid side is on the right of its direction (physim's on the left),
-// so it is given the points in reverse, with ghost vertices continuing its end pieces straight on.
+// so it is given the points in reverse, with ghost vertices continuing its end pieces straight on. Its pieces carry
+// the same 1 cm skin as polygons, so the chain is lowered by it: bodies rest where they rest on physim's.
 
 #include "Engine.hpp"
 
@@ -101,7 +102,8 @@ private:
         const b2Vec2 before = v[0] + (v[0] - v[1]), after = v.back() + (v.back() - v[v.size() - 2]);
         b2ChainShape chain;
         chain.CreateChain(v.data(), static_cast<int32>(v.size()), before, after);
-        b2BodyDef bd;  // static at the origin
+        b2BodyDef bd;  // static, one skin down
+        bd.position.Set(0.0f, -b2_polygonRadius);
         b2FixtureDef fd;
         fd.shape = &chain;
         fd.friction = static_cast<float>(kFriction);
