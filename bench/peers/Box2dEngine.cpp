@@ -7,10 +7,20 @@
 // start 2 cm into each other and push the pyramids apart. The polygon is therefore made one skin smaller,
 // so the outline that collides is the scene's box, and its density is raised to keep the scene's mass
 // (Box2D 2.4 computes a polygon's mass without its skin).
+//
+// Box2D 2.4 has no capsule: a capsule (radius r, centres +-L) stands in as a polygon with a radius, a box of core
+// half-extents (L, 2.5 mm) rounded by r - 2.5 mm: as tall as the capsule and within 2.5 mm of it at its ends
+// (flattened there over 5 mm). Its mass, centre and inertia are set to the capsule's (2.4 computes a polygon's
+// mass without its radius).
+// The scene's chain is a b2ChainShape, whose solid side is on the right of its direction (physim's on the left),
+// so it is given the points in reverse, with ghost vertices continuing its end pieces straight on. Its pieces carry
+// the same 1 cm skin as polygons, so the chain is lowered by it: bodies rest where they rest on physim's.
 
 #include "Engine.hpp"
 
 #include <box2d/box2d.h>
+
+#include <vector>
 
 namespace peers {
 
@@ -18,12 +28,14 @@ namespace {
 
 constexpr int kVelocityIterations = 8;
 constexpr int kPositionIterations = 3;
+constexpr double kCapsuleCore = 0.0025;  // m, half the height of a capsule's stand-in's core box
 
 class Box2dRun final : public EngineRun {
 public:
     explicit Box2dRun(const Scene& scene) : world_(b2Vec2(0.0f, static_cast<float>(kGravity))) {
         world_.SetAllowSleeping(false);
         for (const ShapeSpec& s : scene.statics) add(s, b2_staticBody);
+        if (!scene.chain.empty()) addChain(scene.chain);
         bodies_.reserve(scene.dynamics.size());
         for (const ShapeSpec& s : scene.dynamics) bodies_.push_back(add(s, b2_dynamicBody));
     }
@@ -59,6 +71,10 @@ private:
         if (s.isCircle()) {
             circle.m_radius = static_cast<float>(s.radius);
             fd.shape = &circle;
+        } else if (s.isCapsule()) {
+            box.SetAsBox(static_cast<float>(s.halfLength), static_cast<float>(kCapsuleCore));
+            box.m_radius = static_cast<float>(s.radius - kCapsuleCore);
+            fd.shape = &box;
         } else {
             const double hx = s.halfWidth - b2_polygonRadius, hy = s.halfHeight - b2_polygonRadius;
             box.SetAsBox(static_cast<float>(hx), static_cast<float>(hy));
@@ -68,7 +84,30 @@ private:
         fd.density = static_cast<float>(density);
         fd.friction = static_cast<float>(kFriction);
         body->CreateFixture(&fd);
+        if (s.isCapsule() && type == b2_dynamicBody) {
+            const CapsuleMass m = capsuleMass(s.radius, s.halfLength);
+            b2MassData md;
+            md.mass = static_cast<float>(kDensity * m.area);
+            md.center.SetZero();
+            md.I = static_cast<float>(kDensity * m.secondMoment);
+            body->SetMassData(&md);
+        }
         return body;
+    }
+
+    void addChain(const std::vector<ChainPoint>& points) {
+        std::vector<b2Vec2> v;
+        for (auto p = points.rbegin(); p != points.rend(); ++p)
+            v.emplace_back(static_cast<float>(p->x), static_cast<float>(p->y));
+        const b2Vec2 before = v[0] + (v[0] - v[1]), after = v.back() + (v.back() - v[v.size() - 2]);
+        b2ChainShape chain;
+        chain.CreateChain(v.data(), static_cast<int32>(v.size()), before, after);
+        b2BodyDef bd;  // static, one skin down
+        bd.position.Set(0.0f, -b2_polygonRadius);
+        b2FixtureDef fd;
+        fd.shape = &chain;
+        fd.friction = static_cast<float>(kFriction);
+        world_.CreateBody(&bd)->CreateFixture(&fd);
     }
 
     b2World world_;

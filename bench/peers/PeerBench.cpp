@@ -49,6 +49,9 @@ struct Row {
     bool pyramidGrid = false;
     std::vector<double> msPerStep;  // one per repeat
     double topDrop = kNone, topDrift = kNone, maxSideways = kNone;  // m, from the last repeat
+    // Scenes on a chain, last repeat: the least of (a body's centre above the chain at its x, less its radius), m,
+    // negative by the deepest overlap; and how many centres ended below the chain (fell through).
+    double minClearance = kNone, belowGround = kNone;
     std::map<std::string, double> stageSeconds;  // summed over every timed step of every repeat
     int timedSteps = 0;
 
@@ -66,7 +69,8 @@ struct Row {
               << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] "
                  "[--substeps a,b,...] [--json FILE] [--profile]\n"
               << "  --scenes   large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids, pyramid_grid<R> "
-                 "(R rows of 20 base-10 pyramids), scaling (grids of 1k to 21k boxes, for the fit), all (default)\n"
+                 "(R rows of 20 base-10 pyramids), chain_terrain, scaling (grids of 1k to 21k boxes, for the fit), "
+                 "all (default)\n"
               << "  --engines  physim and the peers this build has (default: all of them)\n"
               << "  --repeats  runs of each scene and engine, n >= 1 (default 3)\n"
               << "  --steps    steps per run, n >= " << kUntimedSteps + 1 << " (default 500); steps "
@@ -159,6 +163,16 @@ void measure(const Scene& scene, const Options& o, bool lastRepeat, Row& row) {
     const int timed = o.steps - kUntimedSteps;
     row.msPerStep.push_back(elapsed.count() / timed);
     row.timedSteps += timed;
+    if (lastRepeat && !scene.chain.empty()) {
+        row.minClearance = std::numeric_limits<double>::infinity();
+        row.belowGround = 0.0;
+        for (std::size_t i = 0; i < scene.dynamics.size(); ++i) {
+            const Point p = run->position(i);
+            const double above = p.y - chainHeightAt(scene, p.x);  // NaN past the chain's ends counts as fallen
+            row.minClearance = std::min(row.minClearance, above - scene.dynamics[i].radius);
+            if (!(above >= 0.0)) row.belowGround += 1.0;
+        }
+    }
     if (!lastRepeat || scene.tops.empty()) return;
 
     row.topDrop = -std::numeric_limits<double>::infinity();  // a top that rose has a negative drop
@@ -202,6 +216,21 @@ void printTable(const std::vector<Row>& rows, const std::vector<Engine>& peers) 
                   << fixed(r.min() / peer, 2) << " | " << fixed(r.min() / oneThread, 2) << " | "
                   << fixed(r.topDrop, 4) << " | " << fixed(r.topDrift, 4) << " | " << fixed(r.maxSideways, 4)
                   << " |\n";
+    }
+}
+
+// The chain scenes' check that bodies rest on the ground: the vertical distance from a body's centre down to the
+// chain, less its radius, is at least the body's gap to the chain (0 resting on it, negative by an overlap).
+void printGroundCheck(const std::vector<Row>& rows) {
+    bool printed = false;
+    for (const Row& r : rows) {
+        if (std::isnan(r.belowGround)) continue;
+        if (!printed) std::cout << "\nBodies on the chain at the last step (lowest: its centre's height above the chain, "
+                                   "less its radius; m):\n";
+        printed = true;
+        std::cout << "  " << r.scene << " " << r.engine->name << " x" << r.engine->threads << ": lowest "
+                  << fixed(r.minClearance, 4) << ", " << fixed(r.belowGround, 0) << " of " << r.bodies
+                  << " below the chain\n";
     }
 }
 
@@ -294,7 +323,8 @@ void writeJson(std::ostream& out, const std::vector<Row>& rows) {
             << ", \"ms_per_step_min\": " << jsonNumber(r.min())
             << ", \"ms_per_step_median\": " << jsonNumber(r.median()) << ", \"top_drop\": " << jsonNumber(r.topDrop)
             << ", \"top_drift\": " << jsonNumber(r.topDrift) << ", \"max_sideways\": " << jsonNumber(r.maxSideways)
-            << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
+            << ", \"min_clearance\": " << jsonNumber(r.minClearance)
+            << ", \"below_ground\": " << jsonNumber(r.belowGround) << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
     }
     out << "]\n";
 }
@@ -359,6 +389,7 @@ int main(int argc, char** argv) {
             }
 
     printTable(rows, peers.engines);
+    printGroundCheck(rows);
     if (o.profile) printProfile(rows);
     printFit(rows, engines);
     printSubstepFit(rows);

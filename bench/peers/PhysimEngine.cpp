@@ -13,6 +13,7 @@ class PhysimRun final : public EngineRun {
 public:
     PhysimRun(const Scene& scene, int threads, int substeps) : world_(settings(threads, substeps)) {
         for (const ShapeSpec& s : scene.statics) add(s, physim::BodyType::Static);
+        if (!scene.chain.empty()) addChain(scene.chain);
         ids_.reserve(scene.dynamics.size());
         for (const ShapeSpec& s : scene.dynamics) ids_.push_back(add(s, physim::BodyType::Dynamic));
     }
@@ -50,12 +51,24 @@ private:
         d.position = {s.x, s.y};
         if (s.isCircle())
             d.shape = physim::makeCircle(s.radius);
+        else if (s.isCapsule())
+            d.shape = physim::makeCapsule({-s.halfLength, 0.0}, {s.halfLength, 0.0}, s.radius);
         else
             d.shape = physim::makeBox(s.halfWidth, s.halfHeight);
         d.density = kDensity;
         d.staticFriction = kFriction;
         d.dynamicFriction = kFriction;
         return world_.createBody(d);
+    }
+
+    void addChain(const std::vector<ChainPoint>& points) {
+        physim::BodyDef d;
+        d.type = physim::BodyType::Static;
+        d.withShape = false;
+        physim::ChainDef chain;
+        for (const ChainPoint& p : points) chain.points.emplace_back(p.x, p.y);
+        chain.staticFriction = chain.dynamicFriction = kFriction;
+        world_.createChain(world_.createBody(d), chain);
     }
 
     physim::World world_;

@@ -3,6 +3,8 @@
 #include "support/Pyramid.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace peers {
@@ -82,21 +84,76 @@ Scene pyramidGridScene(const std::string& name, int rows) {
     return s;
 }
 
+Scene chainTerrainScene() {
+    Scene s;
+    s.name = "chain_terrain";
+    // Ground: x in [-150, 150] in 1 200 pieces of 0.25 m (a dozen points per wavelength of the shortest sine), a
+    // sum of sines of 19, 6.3 and 2.9 m (slopes up to 38 degrees, valleys about every 19 m, so the bodies spread
+    // over the whole length), rising as a parabola past |x| = 135 to 11 m at the ends so nothing rolls off.
+    constexpr int kPieces = 1200;
+    constexpr double kLeft = -150.0, kPiece = 0.25;
+    for (int i = 0; i <= kPieces; ++i) {
+        const double x = kLeft + kPiece * i;
+        const double rim = std::max(0.0, std::abs(x) - 135.0);
+        const double y = 0.8 * std::sin(2.0 * M_PI * x / 19.0) + 0.3 * std::sin(2.0 * M_PI * x / 6.3 + 1.0) +
+                         0.1 * std::sin(2.0 * M_PI * x / 2.9 + 2.0) + 0.05 * rim * rim;
+        s.chain.push_back({x, y});
+    }
+    // Bodies: 4 rows of 150, 1.75 m apart, from 1.8 m up (the ground stays below 1.2 m there) and 1.3 m between
+    // rows; circles (radius 0.25, 0.3 or 0.35 m) and horizontal capsules (radius 0.2 m, centres 0.6 m apart) in a
+    // checkerboard: 300 of each.
+    constexpr int kRows = 4, kColumns = 150;
+    constexpr double kPitch = 1.75;
+    for (int row = 0; row < kRows; ++row)
+        for (int col = 0; col < kColumns; ++col) {
+            ShapeSpec b;
+            b.x = (col - 0.5 * (kColumns - 1)) * kPitch;
+            b.y = 1.8 + 1.3 * row;
+            if ((row + col) % 2 == 0) {
+                b.radius = 0.25 + 0.05 * (col % 3);
+            } else {
+                b.radius = 0.2;
+                b.halfLength = 0.3;
+            }
+            s.dynamics.push_back(b);
+        }
+    return s;
+}
+
+double chainHeightAt(const Scene& scene, double x) {
+    const std::vector<ChainPoint>& c = scene.chain;
+    if (c.size() < 2 || !(x >= c.front().x && x <= c.back().x)) return std::numeric_limits<double>::quiet_NaN();
+    const auto right = std::lower_bound(c.begin() + 1, c.end() - 1, x,
+                                        [](const ChainPoint& p, double value) { return p.x < value; });
+    const ChainPoint& a = *(right - 1);
+    const ChainPoint& b = *right;
+    return a.y + (b.y - a.y) * (x - a.x) / (b.x - a.x);
+}
+
+CapsuleMass capsuleMass(double radius, double halfLength) {
+    // A 2L x 2r rectangle and two half discs at x = +-L, each half disc's centroid 4 r / (3 pi) beyond its flat side.
+    const double r = radius, L = halfLength;
+    const double rectangle = 4.0 * L * r * (L * L + r * r) / 3.0;
+    const double halfDiscs = M_PI * r * r * r * r / 2.0 + M_PI * r * r * L * L + 8.0 * L * r * r * r / 3.0;
+    return {4.0 * L * r + M_PI * r * r, rectangle + halfDiscs};
+}
+
 Scene makeScene(const std::string& name) {
     if (name == "large_pyramid") return pyramidScene(name, 100);
     if (name == "circles1000") return circlesScene();
     if (name == "many_pyramids") return pyramidGridScene(name, 19);
+    if (name == "chain_terrain") return chainTerrainScene();
     const int base = numberAfter("pyramid", name);
     if (base >= 1 && base <= 400) return pyramidScene(name, base);
     const int rows = numberAfter("pyramid_grid", name);
     if (rows >= 1 && rows <= 100) return pyramidGridScene(name, rows);
     throw std::invalid_argument("unknown scene '" + name +
                                 "' (large_pyramid, pyramid<N> with N in 1..400, circles1000, many_pyramids, "
-                                "pyramid_grid<R> with R in 1..100, scaling, all)");
+                                "pyramid_grid<R> with R in 1..100, chain_terrain, scaling, all)");
 }
 
 std::vector<std::string> defaultScenes() {
-    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids"};
+    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids", "chain_terrain"};
 }
 
 std::vector<std::string> scalingScenes() {

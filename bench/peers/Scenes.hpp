@@ -14,21 +14,33 @@ constexpr double kTimeStep = 1.0 / 60.0;
 constexpr double kFriction = 0.6;      // physim's static and dynamic coefficients both, Box2D's one
 constexpr double kDensity = 1.0;
 
-/// An axis-aligned box (halfWidth, halfHeight > 0) or, with radius > 0, a circle, centred at (x, y).
+/// An axis-aligned box (halfWidth, halfHeight > 0); with radius > 0 a circle; with radius and halfLength > 0 a
+/// horizontal capsule (centres at x - halfLength and x + halfLength). Centred at (x, y).
 struct ShapeSpec {
     double x = 0.0;
     double y = 0.0;
     double halfWidth = 0.0;
     double halfHeight = 0.0;
     double radius = 0.0;
+    double halfLength = 0.0;
 
-    bool isCircle() const { return radius > 0.0; }
+    bool isCircle() const { return radius > 0.0 && halfLength == 0.0; }
+    bool isCapsule() const { return radius > 0.0 && halfLength > 0.0; }
+};
+
+/// A point of a static ground chain, m.
+struct ChainPoint {
+    double x = 0.0;
+    double y = 0.0;
 };
 
 struct Scene {
     std::string name;
     std::vector<ShapeSpec> statics;
     std::vector<ShapeSpec> dynamics;
+    /// A static open chain listed left to right with x increasing, solid below (physim's ChainDef order; Box2D
+    /// takes it reversed); empty for scenes without one. Its scenes report how far each body sits above it.
+    std::vector<ChainPoint> chain;
     /// Indices into `dynamics` of the top box of each pyramid; empty for scenes without a stack, which then
     /// report no drop, drift or sideways figures.
     std::vector<std::size_t> tops;
@@ -48,8 +60,23 @@ Scene circlesScene();
 /// many_pyramids is 19 rows: 20 900 boxes.
 Scene pyramidGridScene(const std::string& name, int rows);
 
-/// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids or
-/// pyramid_grid<R> (R in 1..100 rows). Throws std::invalid_argument naming an unknown one.
+/// chain_terrain: 600 circles and capsules, half of each, dropped in four rows onto a bumpy chain of 1 200 pieces
+/// (0.25 m each, a sum of three sines, steep at both ends), where they roll into its valleys.
+Scene chainTerrainScene();
+
+/// The height of the scene's chain at x (m), linear between its points; NaN outside it or without a chain.
+double chainHeightAt(const Scene& scene, double x);
+
+/// Mass properties per unit density of a ShapeSpec capsule: area (m^2) and second moment about its centre (m^4),
+/// for an engine that has no capsule and stands in a shape of other mass.
+struct CapsuleMass {
+    double area = 0.0;
+    double secondMoment = 0.0;
+};
+CapsuleMass capsuleMass(double radius, double halfLength);
+
+/// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids,
+/// pyramid_grid<R> (R in 1..100 rows) or chain_terrain. Throws std::invalid_argument naming an unknown one.
 Scene makeScene(const std::string& name);
 
 /// What `--scenes` accepts besides scene names: `all` (the default scenes and the scaling set), and

@@ -1,7 +1,7 @@
 # cmake -DPEER_BENCH=<peer_bench> -DWORK_DIR=<dir> -DPEER=<peer engine name or empty> -P PeerBenchSmoke.cmake
 # Runs peer_bench on a tiny setting and checks what it writes, not how fast anything is: the JSON parses, has
-# one row per engine with every field the table promises, the body count is the pyramid's N (N + 1) / 2, and
-# command-line errors exit with status 2.
+# one row per engine with every field the table promises, the body count is the pyramid's N (N + 1) / 2, every
+# engine keeps chain_terrain's bodies on its chain, and command-line errors exit with status 2.
 cmake_policy(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
 bench_smoke_fresh_dir()
@@ -71,6 +71,24 @@ endif()
 if(NOT bench_stdout MATCHES "pyramid20: -?[0-9.]+ ms per step \\+ -?[0-9.]+ ms per substep \\(2 runs, 4\\.\\.[0-9]+ substeps\\)")
   message(FATAL_ERROR "no fit of step time against substeps:\n${bench_stdout}")
 endif()
+
+# chain_terrain: no body through the chain, none sunk into it past 1 cm (a resting body reads 0 less its overlap,
+# a few millimetres at most at the slop), and the check's lines printed. 120 steps: the bodies have landed by 60.
+bench_smoke_run("${PEER_BENCH}" "${WORK_DIR}/chain.json" "\\| chain_terrain \\| physim \\| 1 \\| 600 \\|"
+  --scenes chain_terrain --repeats 1 --steps 120 --json "${WORK_DIR}/chain.json")
+if(NOT bench_stdout MATCHES "chain_terrain physim x1: lowest -?[0-9.]+, 0 of 600 below the chain")
+  message(FATAL_ERROR "no ground check line for physim:\n${bench_stdout}")
+endif()
+string(JSON rows LENGTH "${bench_json}")
+math(EXPR last "${rows} - 1")
+foreach(i RANGE ${last})
+  bench_smoke_number("${bench_json}" below ${i} below_ground)
+  bench_smoke_number("${bench_json}" lowest ${i} min_clearance)
+  string(JSON engine GET "${bench_json}" ${i} engine)
+  if(NOT below EQUAL 0 OR lowest LESS -0.01)
+    message(FATAL_ERROR "${engine}: ${below} bodies below the chain, the lowest ${lowest} m above it less its radius")
+  endif()
+endforeach()
 
 bench_smoke_usage_errors("${PEER_BENCH}" "--repeats 0" "--scenes no_such_scene" "--steps 100" "--frobnicate"
   "--substeps 0" "--substeps 4,x" "--substeps 1001")
