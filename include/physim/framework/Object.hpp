@@ -64,8 +64,10 @@ public:
     /// Adds a shape (a compound object): `shape`, in its own frame, placed at `offset` (m) turned by `angle` (rad)
     /// in the object's frame, of `material`, drawn by `partMesh` (in the shape's frame) or, without one, as itself
     /// (Mesh::ShapeMesh) in the main mesh's colour. The body's mass, centre of mass and inertia then come from
-    /// all the shapes (World::createShape), before and after the object is added to a simulation. Returns the
-    /// part. Throws std::invalid_argument for a null shape or a bad material, naming the value.
+    /// all the shapes (World::createShape), before and after the object is added to a simulation; a mass or
+    /// density set on rb after the object joined a simulation gives way to the shapes' own (the world's rule), so
+    /// put a compound object together before adding it. Returns the part. Throws std::invalid_argument for a
+    /// null shape or a bad material, naming the value.
     Part& addShape(std::unique_ptr<CollisionShape> shape, const Material& material, const Vec2& offset = Vec2::Zero(),
                    double angle = 0.0, std::optional<Mesh> partMesh = std::nullopt);
     Part& addShape(const CollisionShape& shape, const Material& material, const Vec2& offset = Vec2::Zero(),
