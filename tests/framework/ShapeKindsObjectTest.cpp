@@ -8,6 +8,7 @@
 #include <physim/core/PolygonShape.hpp>
 #include <physim/core/RectangleShape.hpp>
 #include <physim/core/SegmentShape.hpp>
+#include <physim/framework/DebugDraw.hpp>
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Simulation.hpp>
 
@@ -178,6 +179,25 @@ TEST(ChainShapeFace, ObjectIsStaticGroundADiscRestsOn) {
         // One radius from the curve, within 1 cm (the solver's slop, about 5 mm, and a bounce on landing).
         ASSERT_NEAR(nearest, 0.2, 1e-2) << "step " << i;
     }
+}
+
+// A box asleep on chain ground (a body whose shapes are all chain pieces): the debug drawing's resting contacts
+// and the window's framing go through every shape of every body.
+TEST(ChainShapeFace, RestingContactsAndViewBoundsSeeChainGround) {
+    Simulation sim;
+    sim.spawn<Object>(ChainShape({{-3.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}, {3.0, 0.0}}), kColor);
+    Object& box = sim.spawn<Object>(RectangleShape({0.5, 0.5}), kColor);
+    box.setPosition({0.2, 0.25});
+    for (int i = 0; i < 400 && box.rb.isAwake(); ++i) sim.fixedStep();
+    ASSERT_FALSE(box.rb.isAwake()) << "asleep on the chain";
+    for (int i = 0; i < 3; ++i) sim.fixedStep();  // the step no longer computes its contacts
+    const std::vector<Manifold> resting = restingContacts(sim.world());
+    ASSERT_FALSE(resting.empty());
+    for (const Manifold& m : resting) EXPECT_NEAR(std::abs(m.normal.y()), 1.0, kTol) << "flat ground";
+    const std::optional<Aabb> framed = sim.viewBounds();
+    ASSERT_TRUE(framed.has_value());
+    EXPECT_EQ(framed->lower.x(), -3.0) << "the chain's ends";
+    EXPECT_EQ(framed->upper.x(), 3.0);
 }
 
 // A hammer: a light handle and a heavy head, one body. Its mass, centre of mass and inertia follow from the
