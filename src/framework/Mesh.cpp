@@ -68,6 +68,12 @@ Mesh Mesh::GeometryMesh(const Geometry& geometry, sf::Color color) {
 }
 
 Mesh Mesh::LineMesh(const std::vector<Vec2>& points, bool loop, double width, sf::Color color) {
+    return bandMesh(points, loop, width, color, true);
+}
+
+// The band of LineMesh, centred on the polyline or (centred false) wholly on its right: a chain's solid side, so
+// a body resting on the chain touches the band's edge.
+Mesh Mesh::bandMesh(const std::vector<Vec2>& points, bool loop, double width, sf::Color color, bool centred) {
     if (points.size() < 2)
         throw std::invalid_argument("physim: line mesh needs at least 2 points, got " + std::to_string(points.size()));
     requirePositive("line mesh width", width);
@@ -97,11 +103,12 @@ Mesh Mesh::LineMesh(const std::vector<Vec2>& points, bool loop, double width, sf
     const auto vertex = [&](const Vec2& p) {
         m.band_.append(sf::Vertex(sf::Vector2f(static_cast<float>(p.x()), static_cast<float>(p.y())), color));
     };
+    const double left = centred ? 1.0 : 0.0, right = centred ? 1.0 : 2.0;  // the band's edges, in offsets
     const std::size_t pieces = loop ? n : n - 1;
     for (std::size_t i = 0; i < pieces; ++i) {
         const std::size_t j = (i + 1) % n;
-        const Vec2 a = points[i] + offset[i], b = points[i] - offset[i];
-        const Vec2 c = points[j] + offset[j], d = points[j] - offset[j];
+        const Vec2 a = points[i] + left * offset[i], b = points[i] - right * offset[i];
+        const Vec2 c = points[j] + left * offset[j], d = points[j] - right * offset[j];
         for (const Vec2& p : {a, b, c, c, b, d}) vertex(p);
     }
     return m;
@@ -117,7 +124,7 @@ Mesh Mesh::ShapeMesh(const CollisionShape& shape, sf::Color color) {
         case ShapeType::RECTANGLE: return RectangleMesh(shape.getSize(), color);
         case ShapeType::CHAIN: {
             const auto& chain = static_cast<const ChainShape&>(shape);
-            return LineMesh(chain.points(), chain.loop(), kLineWidth, color);
+            return bandMesh(chain.points(), chain.loop(), kLineWidth, color, false);
         }
         default: break;
     }

@@ -140,18 +140,35 @@ TEST(ChainShapeFace, PiecesBoundsAndMesh) {
     EXPECT_TRUE(ball.satCollision(placed).collision);
     ball.setTransform({11.5, 2.0}, 0.0);
     EXPECT_FALSE(placed.satCollision(ball).collision);
-    // Its mesh: a band along every piece, kLineWidth wide.
+    // Its mesh: a band along every piece, kLineWidth wide, on the solid side (below this ground): its vertices on
+    // the polyline or a band's width below it (further at mitred corners, never nearer).
     const Mesh mesh = Mesh::ShapeMesh(open, kColor);
     ASSERT_EQ(mesh.band().getVertexCount(), 6u * 4u);
+    const Mesh centred = Mesh::LineMesh(points, false, Mesh::kLineWidth, kColor);
+    ASSERT_EQ(centred.band().getVertexCount(), 6u * 4u);
+    const auto nearest = [&](const Vec2& p) {
+        double best = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k + 1 < points.size(); ++k)
+            best = std::min(best, distanceToSegment(p, points[k], points[k + 1]));
+        return best;
+    };
+    int onLine = 0;
     for (std::size_t i = 0; i < mesh.band().getVertexCount(); ++i) {
         const Vec2 p = toVec(mesh.band()[i].position);
-        double nearest = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k + 1 < points.size(); ++k)
-            nearest = std::min(nearest, distanceToSegment(p, points[k], points[k + 1]));
-        // Mitred corners lie further than the half width from the polyline, never nearer.
-        EXPECT_GE(nearest, 0.5 * Mesh::kLineWidth - kFloatTol);
-        EXPECT_LE(nearest, Mesh::kLineWidth);
+        const double d = nearest(p);
+        if (d < kFloatTol) ++onLine;
+        else {
+            EXPECT_GE(d, Mesh::kLineWidth - kFloatTol);
+            EXPECT_LE(d, 2.0 * Mesh::kLineWidth);
+            const double curveY = 0.8 * std::max(std::abs(p.x()) - 1.0, 0.0) + 0.2 * std::min(std::abs(p.x()), 1.0);
+            EXPECT_LT(p.y(), curveY) << "below the ground line";
+        }
+        // LineMesh centres it: half the width either side.
+        const double c = nearest(toVec(centred.band()[i].position));
+        EXPECT_GE(c, 0.5 * Mesh::kLineWidth - kFloatTol);
+        EXPECT_LE(c, Mesh::kLineWidth);
     }
+    EXPECT_EQ(onLine, 12) << "half of each piece's six vertices on the line";
     EXPECT_THROW(ChainShape({{0.0, 0.0}}), std::invalid_argument);
     EXPECT_THROW(ChainShape({{0.0, 0.0}, {0.0, 0.0}}), std::invalid_argument);
 }

@@ -46,7 +46,8 @@ public:
     /// wide (> 0) centred on it, mitred where it turns: segments and chains. shape() is then empty (no points).
     static Mesh LineMesh(const std::vector<Vec2>& points, bool loop, double width, sf::Color color);
     /// What a collision shape looks like: a CircleMesh (with its radius line) for a CircleShape, a RectangleMesh
-    /// for a RectangleShape, a LineMesh kLineWidth wide through a ChainShape's points, GeometryMesh otherwise.
+    /// for a RectangleShape, for a ChainShape a band kLineWidth wide on its solid side (the right of the direction
+    /// its points run: what rests on it touches the band's edge), GeometryMesh otherwise.
     static Mesh ShapeMesh(const CollisionShape& shape, sf::Color color);
 
     /// Width of a segment's or chain's line drawn by GeometryMesh and ShapeMesh, m (4 px at 100 px/m).
@@ -63,6 +64,8 @@ public:
               double angle) const;
 
 private:
+    static Mesh bandMesh(const std::vector<Vec2>& points, bool loop, double width, sf::Color color, bool centred);
+
     Shape shape_;
     sf::VertexArray band_{sf::Triangles};  // a LineMesh's band, drawn after the shape
     bool showRotation_ = false;
