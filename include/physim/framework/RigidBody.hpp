@@ -47,7 +47,9 @@ public:
     /// mass > 0: dynamic with that mass (inertia follows the shape). mass == 0: static (immovable), as in the
     /// paper. Throws std::invalid_argument for negative or NaN mass.
     void setMass(double mass);
-    /// kg/m^2, > 0: mass and inertia from the shape's area and second moment.
+    /// kg/m^2, > 0: mass and inertia from the shape's area and second moment. With several shapes (addShape):
+    /// before the entity is added, the first shape's density (the others keep their own); afterwards the mean
+    /// over all the shapes' area, their densities keeping their ratios (World::setMass).
     void setDensity(double density);
 
     Vec2 velocity() const;          ///< m/s
