@@ -61,7 +61,8 @@ Mesh Mesh::PolygonMesh(const std::vector<Vec2>& points, sf::Color color) {
 
 Mesh Mesh::GeometryMesh(const Geometry& geometry, sf::Color color) {
     validate(geometry);
-    if (const auto* s = std::get_if<Segment>(&geometry)) return LineMesh({s->point1, s->point2}, false, kLineWidth, color);
+    if (const auto* s = std::get_if<Segment>(&geometry))
+        return LineMesh({s->point1, s->point2}, false, kLineWidth, color);
     if (const auto* c = std::get_if<ChainSegment>(&geometry))
         return LineMesh({c->segment.point1, c->segment.point2}, false, kLineWidth, color);
     return PolygonMesh(outline(geometry, Transform{}), color);

@@ -32,7 +32,8 @@ Geometry placed(const Geometry& g, const Transform& xf) {
             else if constexpr (std::is_same_v<T, Capsule>)
                 return makeCapsule(xf.apply(s.center1), xf.apply(s.center2), s.radius);
             else
-                return ChainSegment{xf.apply(s.ghost1), makeSegment(xf.apply(s.segment.point1), xf.apply(s.segment.point2)),
+                return ChainSegment{xf.apply(s.ghost1),
+                                    makeSegment(xf.apply(s.segment.point1), xf.apply(s.segment.point2)),
                                     xf.apply(s.ghost2)};
         },
         g);

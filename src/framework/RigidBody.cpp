@@ -26,7 +26,8 @@ MassData RigidBody::pendingMassData() const {
     std::vector<std::pair<MassProperties, double>> parts;  // per unit density, density kg/m^2
     if (def_.withShape) parts.emplace_back(computeMassProperties(def_.shape), def_.density);
     for (const auto& m : more_)
-        if (const auto* d = std::get_if<ShapeDef>(&m)) parts.emplace_back(computeMassProperties(d->geometry), d->density);
+        if (const auto* d = std::get_if<ShapeDef>(&m))
+            parts.emplace_back(computeMassProperties(d->geometry), d->density);
     MassData data;
     Vec2 moment = Vec2::Zero();
     for (const auto& [unit, density] : parts) {

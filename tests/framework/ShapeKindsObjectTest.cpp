@@ -61,7 +61,8 @@ TEST(SegmentShapeFace, TypeSizePointsAndStaticObject) {
 // A segment's mesh is a band kLineWidth wide along it (a filled outline of two points would draw nothing).
 TEST(SegmentShapeFace, MeshIsABandAlongTheLine) {
     const Vec2 a(-1.0, 0.0), b(2.0, 1.0);
-    for (const Mesh& mesh : {Mesh::ShapeMesh(SegmentShape(a, b), kColor), Mesh::GeometryMesh(makeSegment(a, b), kColor)}) {
+    for (const Mesh& mesh :
+         {Mesh::ShapeMesh(SegmentShape(a, b), kColor), Mesh::GeometryMesh(makeSegment(a, b), kColor)}) {
         ASSERT_EQ(mesh.band().getVertexCount(), 6u) << "two triangles";
         for (std::size_t i = 0; i < 6; ++i) {
             const Vec2 p = toVec(mesh.band()[i].position);
