@@ -9,6 +9,7 @@ const std::vector<Scene>& scenes() {
         {"projectile", makeProjectile},  {"incline", makeIncline},            {"collisions", makeCollisions},
         {"newtons_cradle", makeNewtonsCradle}, {"pyramid", makePyramid},
         {"drag", makeDrag},              {"orbits", makeOrbits},              {"galaxy", makeGalaxy},
+        {"ramp", makeRamp},              {"tipping", makeTipping},
     };
     return all;
 }

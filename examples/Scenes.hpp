@@ -24,6 +24,8 @@ std::unique_ptr<Simulation> makePyramid();
 std::unique_ptr<Simulation> makeDrag();
 std::unique_ptr<Simulation> makeOrbits();
 std::unique_ptr<Simulation> makeGalaxy();
+std::unique_ptr<Simulation> makeRamp();
+std::unique_ptr<Simulation> makeTipping();
 
 struct Scene {
     std::string name;  ///< the example's program name

@@ -35,10 +35,11 @@ std::optional<BodyId> bodyAt(const World& world, const Vec2& point, double pixel
     const Circle probe{Vec2::Zero(), kPickPixels / pixelsPerMetre};
     const Transform at{point, Rotation{}};
     const std::vector<BodyId> ids = world.bodies();
-    for (auto it = ids.rbegin(); it != ids.rend(); ++it)
-        if (world.type(*it) == BodyType::Dynamic &&
-            collide(probe, at, world.shape(*it), world.transform(*it)).pointCount > 0)
-            return *it;
+    for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
+        if (world.type(*it) != BodyType::Dynamic) continue;
+        for (ShapeId s : world.shapes(*it))  // any of a compound body's shapes
+            if (collide(probe, at, world.geometry(s), world.transform(*it)).pointCount > 0) return *it;
+    }
     return std::nullopt;
 }
 

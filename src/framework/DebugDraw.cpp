@@ -77,14 +77,22 @@ void drawContacts(sf::RenderTarget& target, const sf::Transform& toPixels, const
     }
 }
 
-// The body's collision shape in pixels, filled with `fill` (a veil over a sleeping body's mesh): every kind is
-// convex, so its outline (computed by the core) fills as one convex polygon.
+// A collision shape in pixels, filled with `fill` (a veil over a sleeping body's mesh): every kind with area is
+// convex, so its outline (computed by the core) fills as one convex polygon; a segment or chain piece, whose
+// outline is its two points, is a line.
 void drawShape(sf::RenderTarget& target, const sf::Transform& toPixels, const Geometry& g, const Transform& xf,
-               sf::Color fill) {
+               sf::Color fill, Lines& lines) {
     const std::vector<Vec2> points = outline(g, xf);
+    const auto px = [&](const Vec2& p) {
+        return toPixels.transformPoint(static_cast<float>(p.x()), static_cast<float>(p.y()));
+    };
+    if (std::holds_alternative<Segment>(g) || std::holds_alternative<ChainSegment>(g)) {
+        lines.add(px(points.front()), px(points.back()), fill);
+        return;
+    }
     sf::ConvexShape shape(points.size());
     for (std::size_t i = 0; i < points.size(); ++i)
-        shape.setPoint(i, toPixels.transformPoint(static_cast<float>(points[i].x()), static_cast<float>(points[i].y())));
+        shape.setPoint(i, px(points[i]));
     shape.setFillColor(fill);
     target.draw(shape);
 }
@@ -107,8 +115,13 @@ std::vector<Manifold> restingContacts(const World& world) {
     const auto asleep = [&](BodyId id) { return world.type(id) == BodyType::Dynamic && !world.isAwake(id); };
     if (std::none_of(ids.begin(), ids.end(), asleep)) return found;
     std::vector<Aabb> boxes;
+    std::vector<std::vector<ShapeId>> shapes;  // every body's, a chain ground's many pieces included
     boxes.reserve(ids.size());
-    for (BodyId id : ids) boxes.push_back(computeAabb(world.shape(id), world.transform(id)));
+    shapes.reserve(ids.size());
+    for (BodyId id : ids) {
+        boxes.push_back(world.bounds(id));
+        shapes.push_back(world.shapes(id));
+    }
     // Pairs the last step still computed (a body that fell asleep at its end) are the step's, not drawn twice.
     std::vector<std::pair<std::uint32_t, std::uint32_t>> stepPairs;
     for (const Manifold& m : world.contacts()) stepPairs.emplace_back(m.bodyA.index, m.bodyB.index);
@@ -124,12 +137,16 @@ std::vector<Manifold> restingContacts(const World& world) {
             const std::size_t a = std::min(i, j), b = std::max(i, j);
             if (std::binary_search(stepPairs.begin(), stepPairs.end(), std::make_pair(ids[a].index, ids[b].index)))
                 continue;
-            Manifold m = collide(world.shape(ids[a]), world.transform(ids[a]), world.shape(ids[b]),
-                                 world.transform(ids[b]));
-            if (m.pointCount == 0) continue;
-            m.bodyA = ids[a];
-            m.bodyB = ids[b];
-            found.push_back(m);
+            for (ShapeId sa : shapes[a])
+                for (ShapeId sb : shapes[b]) {
+                    if (!world.bounds(sa).overlaps(world.bounds(sb))) continue;
+                    Manifold m = collide(world.geometry(sa), world.transform(ids[a]), world.geometry(sb),
+                                         world.transform(ids[b]));
+                    if (m.pointCount == 0) continue;
+                    m.bodyA = ids[a];
+                    m.bodyB = ids[b];
+                    found.push_back(m);
+                }
         }
     }
     return found;
@@ -146,10 +163,11 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
     if (options.sleep)
         for (BodyId id : bodies)
             if (world.type(id) == BodyType::Dynamic && !world.isAwake(id))
-                drawShape(target, toPixels, world.shape(id), world.transform(id), kSleepVeil);
+                for (ShapeId s : world.shapes(id))
+                    drawShape(target, toPixels, world.geometry(s), world.transform(id), kSleepVeil, lines);
     if (options.boxes)
         for (BodyId id : bodies) {
-            const Aabb box = computeAabb(world.shape(id), world.transform(id));
+            const Aabb box = world.bounds(id);  // of all its shapes
             const sf::Vector2f lo = px(box.lower), hi = px(box.upper);  // lo is bottom-left on screen
             lines.add(lo, {hi.x, lo.y}, kBox);
             lines.add({hi.x, lo.y}, hi, kBox);

@@ -6,6 +6,7 @@
 #include "physim/core/Validate.hpp"
 #include "physim/core/World.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace physim {
@@ -14,8 +15,55 @@ RigidBody::RigidBody(Entity* parent) : Behavior(parent) {}
 
 // Before the body joins a world: the world's own rule (MassData.hpp) on the settings it will be created with.
 MassData RigidBody::pendingMassData() const {
-    if (massOverride_ > 0.0) return massDataForMass(computeMassProperties(def_.shape), massOverride_);
-    return massDataForDensity(def_.shape, def_.density);
+    const bool alone = std::none_of(more_.begin(), more_.end(),
+                                    [](const auto& m) { return std::holds_alternative<ShapeDef>(m); });
+    if (alone && def_.withShape) {
+        if (massOverride_ > 0.0) return massDataForMass(computeMassProperties(def_.shape), massOverride_);
+        return massDataForDensity(def_.shape, def_.density);
+    }
+    // Several shapes: each density times area, about the common centre (parallel axis theorem), as the world
+    // combines them (World::createShape). Chains have no area.
+    std::vector<std::pair<MassProperties, double>> parts;  // per unit density, density kg/m^2
+    if (def_.withShape) parts.emplace_back(computeMassProperties(def_.shape), def_.density);
+    for (const auto& m : more_)
+        if (const auto* d = std::get_if<ShapeDef>(&m))
+            parts.emplace_back(computeMassProperties(d->geometry), d->density);
+    MassData data;
+    Vec2 moment = Vec2::Zero();
+    for (const auto& [unit, density] : parts) {
+        data.mass += density * unit.area;
+        moment += density * unit.area * unit.centroid;
+    }
+    if (!(data.mass > 0.0)) return data;
+    data.center = moment / data.mass;
+    for (const auto& [unit, density] : parts)
+        data.inertia += density * (unit.secondMoment + unit.area * (unit.centroid - data.center).squaredNorm());
+    if (massOverride_ > 0.0) {  // the same distribution, scaled to the mass asked for
+        data.inertia *= massOverride_ / data.mass;
+        data.mass = massOverride_;
+    }
+    double area = 0.0;
+    for (const auto& part : parts) area += part.first.area;
+    data.density = data.mass / area;
+    return data;
+}
+
+std::vector<Geometry> RigidBody::geometries() const {
+    std::vector<Geometry> all;
+    if (world_) {
+        for (const ShapeId s : world_->shapes(id_)) all.push_back(world_->geometry(s));
+        return all;
+    }
+    const auto addChain = [&](const ChainDef& c) {
+        for (const ChainSegment& piece : makeChain(c.points, c.loop)) all.push_back(piece);
+    };
+    if (def_.withShape) all.push_back(def_.shape);
+    if (chain_) addChain(*chain_);
+    for (const auto& m : more_) {
+        if (const auto* d = std::get_if<ShapeDef>(&m)) all.push_back(d->geometry);
+        else addChain(std::get<ChainDef>(m));
+    }
+    return all;
 }
 
 double RigidBody::mass() const {
@@ -46,6 +94,50 @@ void RigidBody::setGeometry(const Geometry& shape) {
     if (world_) throw std::logic_error("physim: a body's shape cannot change after it was added to a simulation");
     validate(shape);
     def_.shape = shape;
+    def_.withShape = true;
+    chain_.reset();
+}
+
+void RigidBody::setChain(const std::vector<Vec2>& points, bool loop) {
+    if (world_) throw std::logic_error("physim: a body's shape cannot change after it was added to a simulation");
+    makeChain(points, loop);  // checks the points now, naming a bad one
+    ChainDef c;
+    c.points = points;
+    c.loop = loop;
+    chain_ = c;
+    def_.withShape = false;
+    setMass(0.0);
+}
+
+void RigidBody::addShape(const ShapeDef& def) {
+    if (world_) world_->createShape(id_, def);
+    else {
+        validate(def.geometry);
+        requireNonNegative("shape density", def.density);
+    }
+    more_.emplace_back(def);
+}
+
+void RigidBody::addChain(const ChainDef& def) {
+    if (world_) world_->createChain(id_, def);
+    else makeChain(def.points, def.loop);
+    more_.emplace_back(def);
+}
+
+std::vector<ShapeId> RigidBody::shapeIds() const { return world_ ? world_->shapes(id_) : std::vector<ShapeId>{}; }
+
+void RigidBody::createMoreShapes() {
+    if (chain_) {
+        ChainDef c = *chain_;  // the body's material, as a first shape has
+        c.restitution = def_.restitution;
+        c.staticFriction = def_.staticFriction;
+        c.dynamicFriction = def_.dynamicFriction;
+        world_->createChain(id_, c);
+    }
+    for (const auto& m : more_) {
+        if (const auto* d = std::get_if<ShapeDef>(&m)) world_->createShape(id_, *d);
+        else world_->createChain(id_, std::get<ChainDef>(m));
+    }
 }
 
 void RigidBody::setMass(double mass) {
@@ -62,7 +154,9 @@ void RigidBody::setMass(double mass) {
 void RigidBody::setDensity(double density) {
     requirePositive("rigid body density", density);
     if (world_) {
-        const double mass = massDataForDensity(world_->shape(id_), density).mass;
+        double area = 0.0;  // every shape at this density
+        for (const ShapeId s : world_->shapes(id_)) area += computeMassProperties(world_->geometry(s)).area;
+        const double mass = density * area;
         world_->setType(id_, BodyType::Dynamic);
         world_->setMass(id_, mass);
         return;
@@ -157,25 +251,33 @@ double RigidBody::precision() const { return world_ ? world_->collisionPrecision
 
 bool RigidBody::checkDiscreteCollision(const Vec2& position, const RigidBody& other) const {
     requireFinite("checkDiscreteCollision position", position);
-    const Geometry& mine = world_ ? world_->shape(id_) : def_.shape;
-    const Geometry& theirs = other.world_ ? other.world_->shape(other.id_) : other.def_.shape;
     const Transform here{position, Rotation::fromAngle(angle())};
     const Transform there{other.position(), Rotation::fromAngle(other.angle())};
-    return collide(mine, here, theirs, there).pointCount > 0;
+    const std::vector<Geometry> theirs = other.geometries();
+    for (const Geometry& mine : geometries())
+        for (const Geometry& g : theirs)
+            if (collide(mine, here, g, there).pointCount > 0) return true;
+    return false;
 }
 
 std::optional<Vec2> RigidBody::checkContinuousCollision(const Vec2& position, const RigidBody& other) const {
     requireFinite("checkContinuousCollision position", position);
-    const Geometry& mine = world_ ? world_->shape(id_) : def_.shape;
-    const Geometry& theirs = other.world_ ? other.world_->shape(other.id_) : other.def_.shape;
     const Sweep path{this->position(), position, angle(), angle()};
     const Sweep still{other.position(), other.position(), other.angle(), other.angle()};
     const bool sampled = collisionDetectionMode() == CollisionDetectionMode::CONTINUOUS &&
                          method_ == ContinuousMethod::SAMPLED;
-    const ToiResult r = sampled ? sampledTimeOfImpact(mine, path, theirs, still, precision())
-                                : timeOfImpact(mine, path, theirs, still);
-    if (r.state != ToiState::Hit && r.state != ToiState::Touching) return std::nullopt;  // Failed: none proven
-    return path.at(r.t).p;
+    // The earliest touch of any two of the bodies' shapes.
+    std::optional<double> first;
+    const std::vector<Geometry> theirs = other.geometries();
+    for (const Geometry& mine : geometries())
+        for (const Geometry& g : theirs) {
+            const ToiResult r = sampled ? sampledTimeOfImpact(mine, path, g, still, precision())
+                                        : timeOfImpact(mine, path, g, still);
+            if (r.state != ToiState::Hit && r.state != ToiState::Touching) continue;  // Failed: none proven
+            if (!first || r.t < *first) first = r.t;
+        }
+    if (!first) return std::nullopt;
+    return path.at(*first).p;
 }
 
 bool RigidBody::isAwake() const { return world_ ? world_->isAwake(id_) : true; }
@@ -192,6 +294,14 @@ void RigidBody::attach(World& world) {
     if (world_) throw std::logic_error("physim: rigid body is already attached to a world");
     id_ = world.createBody(def_);
     world_ = &world;
+    try {
+        createMoreShapes();
+    } catch (...) {
+        world.destroyBody(id_);
+        world_ = nullptr;
+        id_ = BodyId{};
+        throw;
+    }
     if (def_.type == BodyType::Dynamic && massOverride_ > 0.0) world.setMass(id_, massOverride_);
 }
 

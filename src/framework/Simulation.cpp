@@ -48,10 +48,11 @@ Entity* Simulation::findEntity(int id) const {
 
 std::optional<Aabb> Simulation::viewBounds() const {
     std::optional<Aabb> bounds;
-    for (BodyId id : world_.bodies()) {
-        const Aabb box = computeAabb(world_.shape(id), world_.transform(id));
-        bounds = bounds ? Aabb::merged(*bounds, box) : box;
-    }
+    for (BodyId id : world_.bodies())
+        for (ShapeId s : world_.shapes(id)) {  // none for a shapeless body
+            const Aabb box = computeAabb(world_.geometry(s), world_.transform(id));
+            bounds = bounds ? Aabb::merged(*bounds, box) : box;
+        }
     return bounds;
 }
 

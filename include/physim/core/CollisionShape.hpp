@@ -9,12 +9,13 @@
 #include "physim/core/Math.hpp"
 
 #include <memory>
+#include <vector>
 
 namespace physim {
 
-/// The paper's ShapeType (CIRCLE, RECTANGLE), grown with the polygon. GEOMETRY is a GeometryShape, which holds
-/// any Geometry kind (geometry() says which): a new kind needs no value here.
-enum class ShapeType { CIRCLE, RECTANGLE, POLYGON, GEOMETRY };
+/// The paper's ShapeType (CIRCLE, RECTANGLE), grown with the other kinds (a rounded polygon is a POLYGON with a
+/// radius). GEOMETRY is a GeometryShape, which holds any Geometry kind (geometry() says which).
+enum class ShapeType { CIRCLE, RECTANGLE, POLYGON, GEOMETRY, SEGMENT, CAPSULE, CHAIN };
 
 class CollisionShape {
 public:
@@ -28,16 +29,20 @@ public:
 
     /// The paper's AABB test (section 5.2.1) on the world-space bounding boxes; works for any rotation.
     bool aabbCollision(const CollisionShape& other) const;
-    /// The full narrow phase (the paper's SAT, section 5.2.2): normal from this shape towards `other`.
+    /// The full narrow phase (the paper's SAT, section 5.2.2): normal from this shape towards `other`. For a
+    /// shape of several pieces (a chain) the deepest overlap of any two pieces.
     Colliding satCollision(const CollisionShape& other) const;
-    /// World-space bounding box, tight for any rotation. (The paper returned the SFML sprite; drawing belongs
-    /// to Mesh here.)
+    /// World-space bounding box, tight for any rotation, of all the pieces. (The paper returned the SFML sprite;
+    /// drawing belongs to Mesh here.)
     Aabb getBounds() const;
     /// Area (m^2), centroid (m, shape frame) and second moment of area about the centroid (m^4): mass and
-    /// moment of inertia per unit density (kg/m^2).
+    /// moment of inertia per unit density (kg/m^2). Zero area for a segment or a chain.
     MassProperties getMassProperties() const { return computeMassProperties(geometry_); }
 
+    /// The shape's geometry, in its own frame; a chain's first piece (pieces() has them all).
     const Geometry& geometry() const { return geometry_; }
+    /// Every piece of the shape, in its own frame: the geometry alone for all kinds but a chain.
+    std::vector<Geometry> pieces() const;
     const Transform& transform() const { return transform_; }
     Vec2 getPosition() const { return transform_.p; }
     double getRotation() const { return angle_; }  ///< rad
@@ -46,9 +51,12 @@ public:
 
 protected:
     explicit CollisionShape(Geometry geometry);
+    /// A shape of several pieces (a chain), at least one; each validated.
+    explicit CollisionShape(const std::vector<Geometry>& pieces);
 
 private:
     Geometry geometry_;
+    std::vector<Geometry> morePieces_;  // after the first: only a chain has them
     Transform transform_;
     double angle_ = 0.0;
 };

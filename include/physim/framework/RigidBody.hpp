@@ -6,9 +6,12 @@
 #include "physim/core/Body.hpp"
 #include "physim/core/MassData.hpp"
 #include "physim/core/Math.hpp"
+#include "physim/core/Shape.hpp"
 #include "physim/framework/Behavior.hpp"
 
 #include <optional>
+#include <variant>
+#include <vector>
 
 namespace physim {
 
@@ -44,7 +47,9 @@ public:
     /// mass > 0: dynamic with that mass (inertia follows the shape). mass == 0: static (immovable), as in the
     /// paper. Throws std::invalid_argument for negative or NaN mass.
     void setMass(double mass);
-    /// kg/m^2, > 0: mass and inertia from the shape's area and second moment.
+    /// kg/m^2, > 0: mass and inertia from the shape's area and second moment. With several shapes (addShape):
+    /// before the entity is added, the first shape's density (the others keep their own); afterwards the mean
+    /// over all the shapes' area, their densities keeping their ratios (World::setMass).
     void setDensity(double density);
 
     Vec2 velocity() const;          ///< m/s
@@ -99,8 +104,20 @@ public:
     BodyId bodyId() const { return id_; }
     bool attached() const { return world_ != nullptr; }
 
-    /// The collision geometry the body's mass and inertia come from (Object sets it from its shape).
+    /// The collision geometry of the body's first shape, with the body's material (Object sets it from its shape).
     void setGeometry(const Geometry& shape);
+    /// The body's first shape is a chain (ground; the world builds it with World::createChain) with the body's
+    /// material: no area, so the body is made static (setMass(0)); it may be made kinematic.
+    void setChain(const std::vector<Vec2>& points, bool loop);
+    /// One more shape, with its own material, in the body's frame (m, relative to the body origin): created with
+    /// the body when the entity is added to a simulation, at once if it already was (World::createShape). The
+    /// mass, centre of mass and inertia then come from all the shapes, before and after the body joins a world.
+    void addShape(const ShapeDef& def);
+    /// A chain's pieces as more shapes (World::createChain), kept and created as addShape's are.
+    void addChain(const ChainDef& def);
+    /// The body's shapes in its world, in the order added (the first shape or chain first); empty before the
+    /// entity is added.
+    std::vector<ShapeId> shapeIds() const;
     /// Used by the entity that owns this body (Object): create the body in `world`.
     void attach(World& world);
     void detach();
@@ -112,11 +129,16 @@ public:
 
 private:
     MassData pendingMassData() const;  // before attach: what the world will compute
+    std::vector<Geometry> geometries() const;  // every shape's, body frame: the world's once attached
+    void createMoreShapes();  // addShape's and addChain's, in the world
 
     World* world_ = nullptr;  // non-owning; the simulation owns the world and outlives attachment
     BodyId id_;
     BodyDef def_;
     double massOverride_ = -1.0;  // kg set before attach; < 0: from density
+    std::optional<ChainDef> chain_;  // the first shape when it is a chain (def_.withShape false)
+    /// Every shape after the first, in order, kept so that a body added again has them again.
+    std::vector<std::variant<ShapeDef, ChainDef>> more_;
     ContinuousMethod method_ = ContinuousMethod::EXACT;  // kept while DISCRETE, so switching back restores it
 };
 

@@ -1,7 +1,7 @@
 // Debug drawing rendered off screen (needs a display for the OpenGL context: run under Xvfb by
 // tests/support/with-display.sh), checked pixel by pixel where each item must appear: a contact point's dot,
 // a resting contact's ring, a bounding box's edge, a velocity arrow, a joint's line, a centre's cross, and the
-// veil over a sleeping body.
+// veil over a sleeping body (every shape of it, a segment as a line), over chain ground too.
 
 #include <physim/core/World.hpp>
 #include <physim/framework/DebugDraw.hpp>
@@ -126,6 +126,41 @@ TEST(DebugDrawWindow, BoxesVelocitiesJointsCentresAndSleep) {
     const sf::Color veil = canvas.at({2.2, -0.8});
     EXPECT_LT(veil.r, 255) << "the sleeping body is veiled";
     EXPECT_GT(veil.r, 200) << "lightly";
+}
+
+// Chain ground (a body with no first shape) and a sleeping compound body: a box and a segment sticking out of it.
+// Every shape is veiled, the segment as a line (its outline is two points, which a filled polygon draws as
+// nothing); the ground's bounding box is that of its chain.
+TEST(DebugDrawWindow, ChainGroundAndCompoundSleeperSegmentAsLine) {
+    World world;
+    BodyDef groundDef;
+    groundDef.type = BodyType::Static;
+    groundDef.withShape = false;
+    const BodyId chainGround = world.createBody(groundDef);
+    ChainDef chain;
+    chain.points = {{-3.0, -2.0}, {0.0, -2.0}, {3.0, -2.0}};
+    world.createChain(chainGround, chain);
+    BodyDef def;
+    def.shape = makeBox(0.5, 0.5);
+    def.position = {0.0, -1.5};
+    const BodyId sleeper = world.createBody(def);
+    ShapeDef stick;
+    stick.geometry = makeSegment({0.5, 0.0}, {1.5, 0.0});  // body frame: from the box's right face outwards
+    world.createShape(sleeper, stick);
+    world.setAwake(sleeper, false);
+
+    Canvas canvas;
+    DebugDrawOptions options;
+    options.boxes = options.contacts = options.centres = options.sleep = true;
+    canvas.draw(world, options, "debug_chain_compound");
+    const auto veiled = [](sf::Color c) { return c.r < 255 && c.r > 200; };  // lightly, as above
+    EXPECT_TRUE(veiled(canvas.at({0.2, -1.7}))) << "the box, veiled";
+    // The segment's 2 px line, on the pixel row of y = -1.5 or the one beside it.
+    EXPECT_TRUE(veiled(canvas.at({1.2, -1.5})) || veiled(canvas.at({1.2, -1.51}))) << "the segment, a veiled line";
+    EXPECT_EQ(canvas.at({1.2, -1.45}), sf::Color::White) << "a line, not a filled area";
+    const sf::Color edge = canvas.at({-2.5, -2.0});  // the chain's box is flat: its edges lie on the chain
+    EXPECT_GT(edge.r, 150);
+    EXPECT_LT(edge.g, 60) << "the box colour (magenta) along the chain";
 }
 
 }  // namespace
