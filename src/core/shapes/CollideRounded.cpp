@@ -28,7 +28,7 @@ FaceQuery facesOf(const RoundedCore& p, const RoundedCore& q) {
 }
 
 Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
-    const double length = std::hypot(v.x(), v.y());
+    const double length = v.norm();  // coordinates are bounded (Validate.hpp): no overflow; an underflow falls back
     return length > 0.0 ? Vec2(v / length) : fallback;
 }
 
@@ -70,7 +70,7 @@ void closestToEdges(const RoundedCore& p, const RoundedCore& q, bool pIsA, Close
             } else {
                 vertex = u <= 0.0 ? i : (i + 1) % p.count;
                 const Vec2 diff = w - p.vertices[vertex];
-                d = std::hypot(diff.x(), diff.y());
+                d = diff.norm();
             }
             if (d < best.distance || (d == best.distance && onFace && best.kind == Closest::kVertices)) {
                 best.distance = d;
@@ -92,7 +92,7 @@ Closest closest(const RoundedCore& a, const RoundedCore& b) {
     Closest best;
     if (a.count == 1 && b.count == 1) {
         const Vec2 d = b.vertices[0] - a.vertices[0];
-        best.distance = std::hypot(d.x(), d.y());
+        best.distance = d.norm();
         return best;
     }
     closestToEdges(a, b, true, best);
@@ -198,6 +198,7 @@ LocalManifold clip(const RoundedCore& ref, int i1, const RoundedCore& inc, bool 
 RoundedCore coreOf(const Circle& c) {
     RoundedCore k;
     k.vertices[0] = c.center;
+    k.normals[0] = Vec2::Zero();  // a point has no edge
     k.count = 1;
     k.radius = c.radius;
     return k;
@@ -217,7 +218,7 @@ RoundedCore coreOf(const Vec2& p1, const Vec2& p2, double radius) {
     const Vec2 e = p2 - p1;
     k.vertices[0] = p1;
     k.vertices[1] = p2;
-    k.normals[0] = Vec2(e.y(), -e.x()) / std::hypot(e.x(), e.y());
+    k.normals[0] = Vec2(e.y(), -e.x()) / e.norm();
     k.normals[1] = -k.normals[0];
     k.count = 2;
     k.radius = radius;
@@ -229,7 +230,9 @@ RoundedCore coreOf(const Segment& s) { return coreOf(s.point1, s.point2, 0.0); }
 RoundedCore coreOf(const Capsule& c) { return coreOf(c.center1, c.center2, c.radius); }
 
 RoundedCore relativeCore(const RoundedCore& b, const Transform& xa, const Transform& xb) {
-    RoundedCore local = b;
+    RoundedCore local;
+    local.count = b.count;
+    local.radius = b.radius;
     const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
     const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
     for (int i = 0; i < b.count; ++i) {

@@ -13,11 +13,12 @@
 
 namespace physim {
 
+/// Entries past `count` are unset: nothing reads them (a core is built for each collision, so it is not cleared).
 struct RoundedCore {
-    std::array<Vec2, Polygon::maxVertices> vertices{};
+    std::array<Vec2, Polygon::maxVertices> vertices;
     /// count >= 2: normals[i] is the outward unit normal of edge i -> (i + 1) % count; a 2-vertex core's normals are
     /// each other's negatives.
-    std::array<Vec2, Polygon::maxVertices> normals{};
+    std::array<Vec2, Polygon::maxVertices> normals;
     int count = 0;
     double radius = 0.0;  ///< m, >= 0
 };
