@@ -126,6 +126,23 @@ TEST(Drag, DefaultWidthIsTheMeanWidthPerimeterOverPi) {
     EXPECT_NEAR(fallSpeedAfter(f, 30.0), std::sqrt(m * kG / (0.5 * 1.2 * 4.0 / M_PI)), 1e-6);
 }
 
+TEST(Drag, ACompoundBodyShowsTheFlowItsConvexHull) {
+    // Two unit squares side by side on one body (Shape.hpp): air sees their convex hull, a 2 x 1 rectangle, whose mean
+    // width is its perimeter over pi, 6 / pi. Adding the second square after the drag was set recomputes it.
+    Falling f;
+    BodyDef d;
+    d.shape = makeBox(0.5, 0.5, {-0.5, 0.0}, 0.0);
+    d.fixedRotation = true;
+    d.drag.dragCoefficient = 1.0;
+    f.ball = f.world.createBody(d);
+    ShapeDef second;
+    second.geometry = makeBox(0.5, 0.5, {0.5, 0.0}, 0.0);
+    f.world.createShape(f.ball, second);
+    const double m = f.world.mass(f.ball);
+    EXPECT_NEAR(m, 2.0, 1e-12);
+    EXPECT_NEAR(fallSpeedAfter(f, 30.0), std::sqrt(m * kG / (0.5 * 1.2 * 6.0 / M_PI)), 1e-6);
+}
+
 TEST(Drag, SetGetRemoveAndBadInput) {
     Falling f;
     drop(f, DragDef{});
