@@ -62,12 +62,12 @@ public:
     /// The geometry of the body's first shape (its BodyDef's); throws std::invalid_argument for a body with none.
     const Geometry& shape(BodyId id) const;
     Transform transform(BodyId id) const;
-    /// The body origin, m (the point its shape's coordinates are relative to).
+    /// The body origin, m (the point its shapes' coordinates are relative to).
     Vec2 position(BodyId id) const;
     double angle(BodyId id) const;
     /// World centre of mass, m: the point the body rotates about.
     Vec2 centerOfMass(BodyId id) const;
-    /// Centre of mass in the body frame, m (the shape's centroid).
+    /// Centre of mass in the body frame, m (its shapes' centroid, each weighted by its density).
     Vec2 localCenterOfMass(BodyId id) const;
     /// Velocity of the centre of mass, m/s.
     Vec2 velocity(BodyId id) const;
@@ -79,7 +79,7 @@ public:
     double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
     double inverseMass(BodyId id) const;  ///< 1/kg; 0 when immovable
     /// kg m^2 about the centre of mass (MassData.hpp); 0 for static and kinematic bodies. A body with fixed
-    /// rotation keeps its shape's inertia; its inverse inertia is 0.
+    /// rotation keeps its shapes' inertia; its inverse inertia is 0.
     double inertia(BodyId id) const;
     double inverseInertia(BodyId id) const;
     /// The material of the body's first shape (each shape has its own: restitution(ShapeId) ...).
@@ -104,11 +104,12 @@ public:
     void setAllowSleep(BodyId id, bool allowSleep);
     bool allowSleep(BodyId id) const;
     /// Changes a body's type. Becoming static stops it; static and kinematic bodies are immovable by contacts;
-    /// becoming dynamic gives it the mass of its shape at its density (throws std::invalid_argument naming the
+    /// becoming dynamic gives it the mass of its shapes at their densities (throws std::invalid_argument naming the
     /// density when that is not a positive finite mass, e.g. a body made with density 0). A value outside the enum
     /// is refused.
     void setType(BodyId id, BodyType type);
-    /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (same shape, uniform density).
+    /// Sets the mass (kg, > 0) of a dynamic body; inertia scales with it (the shapes keep their density ratios;
+    /// createShape and destroyShape give the body its shapes' own mass again).
     void setMass(BodyId id, double mass);
     /// Locks (true) or frees the body's rotation: locked, its inverse inertia is 0, so contacts and torques
     /// do not turn it, and its angular velocity is zeroed.
