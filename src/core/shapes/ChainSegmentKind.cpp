@@ -15,6 +15,9 @@
 
 #include "physim/core/Validate.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include <limits>
 
 namespace physim {
@@ -60,6 +63,25 @@ double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b
     return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) / along.norm();
 }
 
+namespace {
+
+// Whether the core b (in the piece's frame) lies farther from the segment p1-p2 than any kept point may: its bounding
+// circle about its vertices' centre is apart by more than the margin (points are kept up to max(margin,
+// kSpeculativeMargin), Manifolds.hpp). Most pieces near a body are such; the routines below would find nothing.
+bool apart(const Vec2& p1, const Vec2& p2, const RoundedCore& b, double margin) {
+    Vec2 centre = Vec2::Zero();
+    for (int i = 0; i < b.count; ++i) centre += b.vertices[i];
+    centre /= b.count;
+    double reach = 0.0;
+    for (int i = 0; i < b.count; ++i) reach = std::max(reach, (b.vertices[i] - centre).squaredNorm());
+    const Vec2 e = p2 - p1;
+    const double t = std::clamp(e.dot(centre - p1) / e.squaredNorm(), 0.0, 1.0);
+    const double distance = (centre - (p1 + t * e)).norm();
+    return distance - std::sqrt(reach) - b.radius > std::max(margin, kSpeculativeMargin);
+}
+
+}  // namespace
+
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
                                  const Transform& xb, double margin) {
     const Vec2& p1 = a.segment.point1;
@@ -69,6 +91,7 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     const Vec2 face = piece.normals[kFace];
 
     if (behind(a, local)) return {};
+    if (apart(p1, p2, local, margin)) return {};
 
     const LocalManifold m = collideCores(piece, local, margin);
     if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);
