@@ -149,9 +149,8 @@ void ContinuousStage::run(WorldImpl& w) {
         const std::uint32_t slot = w.awake[c.awakeIndex];
         const BodyData& b = w.bodies[slot];
         const kernel::Motion mine = toKernel(c.sweep);
-        for (std::int32_t ms = b.shapeHead; ms != kNullIndex; ms = w.shapes[static_cast<std::size_t>(ms)].next) {
-            const std::uint32_t mineShape = static_cast<std::uint32_t>(ms);
-            const Geometry& myGeometry = w.shapes[mineShape].geometry;
+        w.forEachShape(b, [&](std::uint32_t mineShape, const ShapeData& shape) {
+            const Geometry& myGeometry = shape.geometry;
             found_.clear();
             w.broadPhase.query(sweptAabb(myGeometry, c.sweep), [&](std::uint32_t other) {
                 if (w.shapes[other].body != slot) found_.push_back(other);
@@ -197,7 +196,7 @@ void ContinuousStage::run(WorldImpl& w) {
                     pairShapes_.emplace_back(mineShape, otherShape);
                 }
             }
-        }
+        });
     }
     if (batch_.pairCount() > 0) {
         if (solver_) solver_->solve(batch_, batchResult_);

@@ -495,10 +495,10 @@ void Solver::moveDeferredProxies(WorldImpl& w) {
     for (std::size_t i = 0; i < enlarged_.size(); ++i) {
         const BodyData& b = w.bodies[sims_[i].body];
         if (!(enlarged_[i] & 4) || !w.proxyOutgrown(b)) continue;
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
-            deferredKeys_.push_back(w.shapes[static_cast<std::size_t>(s)].proxy);
-            deferredBoxes_.push_back(w.proxyBox(b, w.shapes[static_cast<std::size_t>(s)].aabb, kAabbMargin));
-        }
+        w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
+            deferredKeys_.push_back(shape.proxy);
+            deferredBoxes_.push_back(w.proxyBox(b, shape.aabb, kAabbMargin));
+        });
     }
     w.broadPhase.moveProxies(deferredKeys_, deferredBoxes_);  // a crowd of fast bodies rebuilds the tree once
 }

@@ -81,13 +81,6 @@ void assignMass(BodyData& b, double mass) {
 
 void clearMass(BodyData& b) { b.mass = b.inertia = b.invMass = b.invInertia = 0.0; }
 
-double extentAbout(const Geometry& g, const Vec2& center) {
-    return withKind(g, [&](auto kind, const auto& s) { return kind.extentAbout(s, center); });
-}
-
-double coreRadius(const Geometry& g) {
-    return withKind(g, [](auto kind, const auto& s) { return kind.coreRadius(s); });
-}
 
 void validate(const WorldSettings& s) {
     requireFinite("gravity", s.gravity);
@@ -205,14 +198,9 @@ BodyId World::createBody(const BodyDef& def) {
         b.shapeHead = b.shapeTail = static_cast<std::int32_t>(s);
         b.shapeCount = 1;
         ++w.shapeLiveCount;
-        b.extent = extentAbout(def.shape, massed.unitMass.centroid);
-        b.coreRadius = coreRadius(def.shape);
     }
-    b.unitMass = massed.unitMass;
-    b.localCenter = b.unitMass.centroid;
     b.xf = {def.position, Rotation::fromAngle(def.angle)};
     b.angle = def.angle;
-    b.center = b.xf.apply(b.localCenter);
     b.useGravity = def.useGravity;
     b.gravityScale = def.gravityScale;
     b.fixedRotation = def.fixedRotation;
@@ -220,11 +208,11 @@ BodyId World::createBody(const BodyDef& def) {
     b.detection = def.collisionDetection;
     b.precision = def.precision;
     b.density = def.density;
+    w.updateMass(index);  // mass, centre, extent and core radius from its shape: the mass was checked above
     if (def.type != BodyType::Static) {
         b.v = def.velocity;
         b.w = def.fixedRotation ? 0.0 : def.angularVelocity;
     }
-    if (def.type == BodyType::Dynamic) assignMass(b, massed.mass);
     w.updateBoxes(b);
     b.collides = def.collides;
     if (def.collides) w.createProxies(index);
@@ -263,11 +251,11 @@ void World::destroyBody(BodyId id) {
     w.removeFromIsland(index);
     w.removeAwakeBody(index);
     w.destroyProxies(index);
-    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
-        w.shapes[static_cast<std::size_t>(s)].alive = false;
-        w.freeShapes.push_back(static_cast<std::uint32_t>(s));
+    w.forEachShape(b, [&](std::uint32_t slot, ShapeData& shape) {
+        shape.alive = false;
+        w.freeShapes.push_back(slot);
         --w.shapeLiveCount;
-    }
+    });
     b.shapeHead = b.shapeTail = kNullIndex;
     b.shapeCount = 0;
     w.effects.bodyDestroyed(index);
@@ -371,8 +359,9 @@ void World::setMaterial(BodyId id, double restitution, double staticFriction, do
     requireNonNegative("body static friction", staticFriction);
     requireNonNegative("body dynamic friction", dynamicFriction);
     const BodyData& b = wake(id, "setMaterial");
-    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = impl_->shapes[static_cast<std::size_t>(s)].next)
-        impl_->setShapeMaterial(static_cast<std::uint32_t>(s), restitution, staticFriction, dynamicFriction);
+    impl_->forEachShape(b, [&](std::uint32_t slot, const ShapeData&) {
+        impl_->setShapeMaterial(slot, restitution, staticFriction, dynamicFriction);
+    });
 }
 
 void World::setType(BodyId id, BodyType type) {
@@ -414,10 +403,9 @@ void World::setType(BodyId id, BodyType type) {
         w.destroyProxies(index);
         w.createProxies(index);
     } else {
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
-            const std::int32_t proxy = w.shapes[static_cast<std::size_t>(s)].proxy;
-            w.broadPhase.moveProxy(proxy, w.broadPhase.fatBox(proxy));  // find its pairs again
-        }
+        w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
+            w.broadPhase.moveProxy(shape.proxy, w.broadPhase.fatBox(shape.proxy));  // find its pairs again
+        });
     }
     w.addAwakeBody(index);
     if (type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);

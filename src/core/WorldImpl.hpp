@@ -113,21 +113,31 @@ struct WorldImpl {
     /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity (the next
     /// step's motion and turn), grown by margin.
     Aabb proxyBox(const BodyData& b, const Aabb& box, double margin) const;
+    /// f(slot, shape) for each of the body's shapes, in the order they were added; f must not relink the list.
+    template <class F>
+    void forEachShape(const BodyData& b, F&& f) {
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next)
+            f(static_cast<std::uint32_t>(s), shapes[static_cast<std::size_t>(s)]);
+    }
+    template <class F>
+    void forEachShape(const BodyData& b, F&& f) const {
+        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next)
+            f(static_cast<std::uint32_t>(s), shapes[static_cast<std::size_t>(s)]);
+    }
     /// A body that collides (has proxies) whose motion left one of its shapes' proxy boxes.
     bool proxyOutgrown(const BodyData& b) const {
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-            const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
-            if (shape.proxy != kNullIndex && !broadPhase.fatBox(shape.proxy).contains(proxyBox(b, shape.aabb, 0.0)))
-                return true;
-        }
-        return false;
+        bool outgrown = false;
+        forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
+            outgrown = outgrown || (shape.proxy != kNullIndex &&
+                                    !broadPhase.fatBox(shape.proxy).contains(proxyBox(b, shape.aabb, 0.0)));
+        });
+        return outgrown;
     }
     /// Every shape's proxy gets the box the body's motion needs.
     void moveProxies(const BodyData& b) {
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-            const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+        forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb, kAabbMargin));
-        }
+        });
     }
     /// The tight boxes of the body's shapes, and of the body, at its pose.
     void updateBoxes(BodyData& b);

@@ -46,20 +46,18 @@ MassProperties combine(const WorldImpl& w, const BodyData& b) {
     auto total = [&](bool weighted) {
         MassProperties m;
         Vec2 moment = Vec2::Zero();
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
-            const ShapeData& shape = w.shapes[static_cast<std::size_t>(s)];
+        w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             const double weight = weighted ? shape.density / reference : 1.0;
             m.area += weight * shape.unitMass.area;
             moment += weight * shape.unitMass.area * shape.unitMass.centroid;
-        }
+        });
         if (!(m.area > 0.0)) return m;
         m.centroid = moment / m.area;
-        for (std::int32_t s = b.shapeHead; s != kNullIndex; s = w.shapes[static_cast<std::size_t>(s)].next) {
-            const ShapeData& shape = w.shapes[static_cast<std::size_t>(s)];
+        w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             const double weight = weighted ? shape.density / reference : 1.0;
             const Vec2 offset = shape.unitMass.centroid - m.centroid;
             m.secondMoment += weight * (shape.unitMass.secondMoment + shape.unitMass.area * offset.squaredNorm());
-        }
+        });
         return m;
     };
     const MassProperties weighted = total(true);
@@ -68,6 +66,14 @@ MassProperties combine(const WorldImpl& w, const BodyData& b) {
 
 }  // namespace
 
+double extentAbout(const Geometry& g, const Vec2& center) {
+    return withKind(g, [&](auto kind, const auto& s) { return kind.extentAbout(s, center); });
+}
+
+double coreRadius(const Geometry& g) {
+    return withKind(g, [](auto kind, const auto& s) { return kind.coreRadius(s); });
+}
+
 // --- WorldImpl helpers ---------------------------------------------------------------------------------
 
 void WorldImpl::updateBoxes(BodyData& b) {
@@ -75,40 +81,38 @@ void WorldImpl::updateBoxes(BodyData& b) {
         b.aabb = {b.xf.p, b.xf.p};
         return;
     }
-    ShapeData& first = shapes[static_cast<std::size_t>(b.shapeHead)];
-    first.aabb = computeAabb(first.geometry, b.xf);
-    b.aabb = first.aabb;
-    for (std::int32_t s = first.next; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+    bool first = true;
+    forEachShape(b, [&](std::uint32_t, ShapeData& shape) {
         shape.aabb = computeAabb(shape.geometry, b.xf);
-        b.aabb.lower = b.aabb.lower.cwiseMin(shape.aabb.lower);
-        b.aabb.upper = b.aabb.upper.cwiseMax(shape.aabb.upper);
-    }
+        if (first) {
+            b.aabb = shape.aabb;
+            first = false;
+        } else {
+            b.aabb.lower = b.aabb.lower.cwiseMin(shape.aabb.lower);
+            b.aabb.upper = b.aabb.upper.cwiseMax(shape.aabb.upper);
+        }
+    });
 }
 
 void WorldImpl::createProxies(std::uint32_t body) {
     const BodyData& b = bodies[body];
-    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+    forEachShape(b, [&](std::uint32_t slot, ShapeData& shape) {
         if (shape.proxy == kNullIndex)
-            shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb, kAabbMargin), static_cast<std::uint32_t>(s),
-                                                 b.type == BodyType::Static);
-    }
+            shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb, kAabbMargin), slot, b.type == BodyType::Static);
+    });
 }
 
 void WorldImpl::destroyProxies(std::uint32_t body) {
-    for (std::int32_t s = bodies[body].shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+    forEachShape(bodies[body], [&](std::uint32_t, ShapeData& shape) {
         if (shape.proxy != kNullIndex) broadPhase.destroyProxy(shape.proxy);
         shape.proxy = kNullIndex;
-    }
+    });
 }
 
 void WorldImpl::wakeShapesOverlapping(std::uint32_t body) {
-    for (std::int32_t s = bodies[body].shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        const std::int32_t proxy = shapes[static_cast<std::size_t>(s)].proxy;
-        if (proxy != kNullIndex) wakeOverlapping(broadPhase.fatBox(proxy));
-    }
+    forEachShape(bodies[body], [&](std::uint32_t, const ShapeData& shape) {
+        if (shape.proxy != kNullIndex) wakeOverlapping(broadPhase.fatBox(shape.proxy));
+    });
 }
 
 void WorldImpl::updateMass(std::uint32_t body) {
@@ -129,13 +133,12 @@ void WorldImpl::updateMass(std::uint32_t body) {
     if (b.movable()) b.v += cross(b.w, b.center - oldCenter);
     b.extent = 0.0;
     b.coreRadius = std::numeric_limits<double>::infinity();
-    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        const ShapeData& shape = shapes[static_cast<std::size_t>(s)];
+    forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
         b.extent = std::max(b.extent, extentAbout(shape.geometry, b.localCenter));
         // The thinnest part with area decides how far the body may move in a step before the Continuous stage
         // looks at it; zero-area parts (segments) are ground, not what tunnels.
         if (shape.unitMass.area > 0.0) b.coreRadius = std::min(b.coreRadius, coreRadius(shape.geometry));
-    }
+    });
     if (std::isinf(b.coreRadius)) b.coreRadius = 0.0;
     // The contacts' cached manifolds are kept about the old centre of mass.
     for (std::int32_t key = b.contactHead; key != kNullIndex;) {
@@ -152,10 +155,10 @@ double WorldImpl::meanWidth(std::uint32_t body) const {
     // Cauchy: the mean width of a convex set is its perimeter over pi; air sees the convex hull of the parts.
     std::vector<Vec2> points;
     const Transform local{Vec2::Zero(), Rotation::fromAngle(0.0)};
-    for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next) {
-        const std::vector<Vec2> around = outline(shapes[static_cast<std::size_t>(s)].geometry, local);
+    forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
+        const std::vector<Vec2> around = outline(shape.geometry, local);
         points.insert(points.end(), around.begin(), around.end());
-    }
+    });
     const std::vector<Vec2> hull = convexHullCorners(std::move(points));
     double perimeter = 0.0;
     for (std::size_t i = 0; i < hull.size(); ++i) perimeter += (hull[(i + 1) % hull.size()] - hull[i]).norm();
@@ -317,8 +320,9 @@ std::size_t World::shapeCount() const { return impl_->shapeLiveCount; }
 
 std::vector<ShapeId> World::shapes(BodyId id) const {
     std::vector<ShapeId> ids;
-    for (std::int32_t s = at(id).shapeHead; s != kNullIndex; s = impl_->shapes[static_cast<std::size_t>(s)].next)
-        ids.push_back(ShapeId{static_cast<std::uint32_t>(s), impl_->shapes[static_cast<std::size_t>(s)].generation});
+    impl_->forEachShape(at(id), [&](std::uint32_t slot, const ShapeData& shape) {
+        ids.push_back(ShapeId{slot, shape.generation});
+    });
     return ids;
 }
 

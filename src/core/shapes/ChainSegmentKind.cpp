@@ -31,47 +31,24 @@ constexpr double kFlatSine = 1e-9;
 // The piece's face: the 2-vertex core's face 1 (edge point2 -> point1), whose normal is the left normal.
 constexpr int kFace = 1;
 
-}  // namespace
-
-void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
-    requireTwoPoints("chain segment", "point1", c.segment.point1, "point2", c.segment.point2);
-    requireFinite("chain segment ghost1", c.ghost1);
-    requireFinite("chain segment ghost2", c.ghost2);
-}
-
-bool behind(const ChainSegment& a, const RoundedCore& local) {
+// The mean of a core's vertices: its centre for the one-sided test and the bounding circle.
+Vec2 centreOf(const RoundedCore& core) {
     Vec2 centre = Vec2::Zero();
-    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
-    centre /= local.count;
-    const Vec2 along = a.segment.point2 - a.segment.point1;
-    return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) < 0.0;
+    for (int i = 0; i < core.count; ++i) centre += core.vertices[i];
+    return centre / core.count;
 }
 
-double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
-    const RoundedCore core = std::visit(
-        [](const auto& s) -> RoundedCore {
-            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
-            else return coreOf(s);
-        },
-        b);
-    const RoundedCore local = relativeCore(core, xa, xb);
-    Vec2 centre = Vec2::Zero();
-    for (int i = 0; i < local.count; ++i) centre += local.vertices[i];
-    centre /= local.count;
+// Signed distance (m) of p from the piece's line, positive on its open side (the left of point1 -> point2).
+double offsetFromLine(const ChainSegment& a, const Vec2& p) {
     const Vec2 along = a.segment.point2 - a.segment.point1;
-    return Vec2(-along.y(), along.x()).dot(centre - a.segment.point1) / along.norm();
+    return perp(along).dot(p - a.segment.point1) / along.norm();
 }
-
-namespace {
 
 // Whether the core b (in the piece's frame) lies farther from the segment p1-p2 than any kept point may: its bounding
 // circle about its vertices' centre is apart by more than the margin (points are kept up to max(margin,
 // kSpeculativeMargin), Manifolds.hpp). Most pieces near a body are such; the routines below would find nothing.
 bool apart(const Vec2& p1, const Vec2& p2, const RoundedCore& b, double margin) {
-    Vec2 centre = Vec2::Zero();
-    for (int i = 0; i < b.count; ++i) centre += b.vertices[i];
-    centre /= b.count;
+    const Vec2 centre = centreOf(b);
     double reach = 0.0;
     for (int i = 0; i < b.count; ++i) reach = std::max(reach, (b.vertices[i] - centre).squaredNorm());
     const Vec2 e = p2 - p1;
@@ -81,6 +58,25 @@ bool apart(const Vec2& p1, const Vec2& p2, const RoundedCore& b, double margin) 
 }
 
 }  // namespace
+
+void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
+    requireTwoPoints("chain segment", "point1", c.segment.point1, "point2", c.segment.point2);
+    requireFinite("chain segment ghost1", c.ghost1);
+    requireFinite("chain segment ghost2", c.ghost2);
+}
+
+bool behind(const ChainSegment& a, const RoundedCore& local) { return offsetFromLine(a, centreOf(local)) < 0.0; }
+
+double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
+    const RoundedCore core = std::visit(
+        [](const auto& s) -> RoundedCore {
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
+            else return coreOf(s);
+        },
+        b);
+    return offsetFromLine(a, centreOf(relativeCore(core, xa, xb)));
+}
 
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
                                  const Transform& xb, double margin) {

@@ -18,14 +18,8 @@ constexpr double kFacingCosine = -0.9998;
 
 NarrowResult collidePolygons(const Polygon& a, const Transform& xa, const Polygon& b, const Transform& xb,
                              double margin) {
-    // Work in a's frame: b's vertices relative to a stay small numbers even far from the world origin.
     Polygon local = b;
-    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
-    const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
-    for (int i = 0; i < b.count; ++i) {
-        local.vertices[i] = relative.apply(b.vertices[i]);
-        local.normals[i] = q.apply(b.normals[i]);
-    }
+    placeInFrameOf(local, b, xa, xb);
 
     NarrowResult r;
     const FaceQuery onA = maxSeparation(a, local);

@@ -233,12 +233,7 @@ RoundedCore relativeCore(const RoundedCore& b, const Transform& xa, const Transf
     RoundedCore local;
     local.count = b.count;
     local.radius = b.radius;
-    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
-    const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
-    for (int i = 0; i < b.count; ++i) {
-        local.vertices[i] = relative.apply(b.vertices[i]);
-        local.normals[i] = q.apply(b.normals[i]);
-    }
+    placeInFrameOf(local, b, xa, xb);
     return local;
 }
 

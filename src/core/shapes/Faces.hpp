@@ -1,12 +1,27 @@
 #pragma once
-// The separating-axis face query and the clipped points' feature ids: one rule for the polygon narrow phase
-// (CollidePolygons.cpp) and the rounded cores' (CollideRounded.cpp). Internal.
+// What the polygon narrow phase (CollidePolygons.cpp) and the rounded cores' (CollideRounded.cpp) share, one rule
+// each: the second shape placed in the first one's frame, the separating-axis face query, and the clipped points'
+// feature ids. Internal.
+
+#include "physim/core/Math.hpp"
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
 
 namespace physim {
+
+/// Places b's vertices and normals (its first `count`) in a's frame: xa^-1 xb applied to them. Working there keeps b's
+/// vertices small numbers even far from the world origin. S holds `count`, `vertices` and `normals`.
+template <class S>
+void placeInFrameOf(S& local, const S& b, const Transform& xa, const Transform& xb) {
+    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
+    const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
+    for (int i = 0; i < b.count; ++i) {
+        local.vertices[i] = relative.apply(b.vertices[i]);
+        local.normals[i] = q.apply(b.normals[i]);
+    }
+}
 
 struct FaceQuery {
     int face = 0;
