@@ -44,21 +44,11 @@ MassProperties combine(const WorldImpl& w, const BodyData& b) {
     }
     const double reference = b.density > 0.0 ? b.density : 1.0;
     auto total = [&](bool weighted) {
-        MassProperties m;
-        Vec2 moment = Vec2::Zero();
+        std::vector<WeightedPart> parts;
         w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-            const double weight = weighted ? shape.density / reference : 1.0;
-            m.area += weight * shape.unitMass.area;
-            moment += weight * shape.unitMass.area * shape.unitMass.centroid;
+            parts.push_back({shape.unitMass, weighted ? shape.density / reference : 1.0});
         });
-        if (!(m.area > 0.0)) return m;
-        m.centroid = moment / m.area;
-        w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-            const double weight = weighted ? shape.density / reference : 1.0;
-            const Vec2 offset = shape.unitMass.centroid - m.centroid;
-            m.secondMoment += weight * (shape.unitMass.secondMoment + shape.unitMass.area * offset.squaredNorm());
-        });
-        return m;
+        return combineParts(parts);
     };
     const MassProperties weighted = total(true);
     return weighted.area > 0.0 ? weighted : total(false);

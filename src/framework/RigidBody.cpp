@@ -21,29 +21,25 @@ MassData RigidBody::pendingMassData() const {
         if (massOverride_ > 0.0) return massDataForMass(computeMassProperties(def_.shape), massOverride_);
         return massDataForDensity(def_.shape, def_.density);
     }
-    // Several shapes: each density times area, about the common centre (parallel axis theorem), as the world
-    // combines them (World::createShape). Chains have no area.
-    std::vector<std::pair<MassProperties, double>> parts;  // per unit density, density kg/m^2
-    if (def_.withShape) parts.emplace_back(computeMassProperties(def_.shape), def_.density);
+    // Several shapes, each weighted by its density, combined as the world combines them (combineParts). Chains have
+    // no area.
+    std::vector<WeightedPart> parts;
+    if (def_.withShape) parts.push_back({computeMassProperties(def_.shape), def_.density});
     for (const auto& m : more_)
         if (const auto* d = std::get_if<ShapeDef>(&m))
-            parts.emplace_back(computeMassProperties(d->geometry), d->density);
+            parts.push_back({computeMassProperties(d->geometry), d->density});
+    const MassProperties all = combineParts(parts);
     MassData data;
-    Vec2 moment = Vec2::Zero();
-    for (const auto& [unit, density] : parts) {
-        data.mass += density * unit.area;
-        moment += density * unit.area * unit.centroid;
-    }
+    data.mass = all.area;
     if (!(data.mass > 0.0)) return data;
-    data.center = moment / data.mass;
-    for (const auto& [unit, density] : parts)
-        data.inertia += density * (unit.secondMoment + unit.area * (unit.centroid - data.center).squaredNorm());
+    data.center = all.centroid;
+    data.inertia = all.secondMoment;
     if (massOverride_ > 0.0) {  // the same distribution, scaled to the mass asked for
         data.inertia *= massOverride_ / data.mass;
         data.mass = massOverride_;
     }
     double area = 0.0;
-    for (const auto& part : parts) area += part.first.area;
+    for (const WeightedPart& part : parts) area += part.unit.area;
     data.density = data.mass / area;
     return data;
 }
