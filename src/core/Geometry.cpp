@@ -18,6 +18,10 @@ std::vector<Vec2> outline(const Geometry& g, const Transform& xf) {
     return withKind(g, [&](auto kind, const auto& s) { return kind.outline(s, xf); });
 }
 
+Geometry transformed(const Geometry& g, const Transform& xf) {
+    return withKind(g, [&](auto kind, const auto& s) { return Geometry(kind.placed(s, xf)); });
+}
+
 void validate(const Geometry& g) {
     withKind(g, [](auto kind, const auto& s) { kind.validate(s); });
 }

@@ -8,35 +8,12 @@
 #include <SFML/Graphics/RenderWindow.hpp>
 
 #include <stdexcept>
-#include <type_traits>
 
 namespace physim {
 namespace {
 std::unique_ptr<CollisionShape> requireShape(std::unique_ptr<CollisionShape> shape) {
     if (!shape) throw std::invalid_argument("physim: Object needs a collision shape, got null");
     return shape;
-}
-
-// `g` (in a part's frame) in the object's frame, the part placed by `xf`: rebuilt by the kinds' factories, so it
-// is checked as any new shape is.
-Geometry placed(const Geometry& g, const Transform& xf) {
-    return std::visit(
-        [&](const auto& s) -> Geometry {
-            using T = std::decay_t<decltype(s)>;
-            if constexpr (std::is_same_v<T, Circle>) return Circle{xf.apply(s.center), s.radius};
-            else if constexpr (std::is_same_v<T, Polygon>) {
-                std::vector<Vec2> points;
-                for (int i = 0; i < s.count; ++i) points.push_back(xf.apply(s.vertices[static_cast<std::size_t>(i)]));
-                return s.radius > 0.0 ? makeRoundedPolygon(points, s.radius) : makePolygon(points);
-            } else if constexpr (std::is_same_v<T, Segment>) return makeSegment(xf.apply(s.point1), xf.apply(s.point2));
-            else if constexpr (std::is_same_v<T, Capsule>)
-                return makeCapsule(xf.apply(s.center1), xf.apply(s.center2), s.radius);
-            else
-                return ChainSegment{xf.apply(s.ghost1),
-                                    makeSegment(xf.apply(s.segment.point1), xf.apply(s.segment.point2)),
-                                    xf.apply(s.ghost2)};
-        },
-        g);
 }
 
 void validate(const Material& m) {
@@ -82,7 +59,7 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         rb.addChain(def);
     } else {
         ShapeDef def;
-        def.geometry = moved ? placed(s->geometry(), local) : s->geometry();
+        def.geometry = moved ? transformed(s->geometry(), local) : s->geometry();
         def.density = material.density;
         def.restitution = material.restitution;
         def.staticFriction = material.staticFriction;

@@ -40,5 +40,26 @@ TEST(Outline, ACircleIsARingOfPointsOnItsPlacedBoundary) {
     EXPECT_GT(twiceSignedArea(points), 0.0);
 }
 
+// transformed() moves every point of a shape: its outline at the origin is the original's outline placed by the
+// same transform, and it stays a valid shape of its kind (outward unit normals for a polygon, the same mass).
+TEST(Outline, ATransformedShapeIsTheShapePlaced) {
+    const Transform xf{{1.5, -0.7}, Rotation::fromAngle(0.9)};
+    const Transform origin{};
+    const std::vector<Geometry> kinds = {makeCircle(0.3, {0.2, 0.1}), makeRoundedBox(0.4, 0.2, 0.05),
+                                         makeSegment({-1.0, 0.0}, {1.0, 0.5}),
+                                         makeCapsule({-0.5, 0.0}, {0.5, 0.2}, 0.1),
+                                         makeChain({{0.0, 0.0}, {1.0, 0.0}, {2.0, 0.5}})[1]};
+    for (const Geometry& g : kinds) {
+        const Geometry moved = transformed(g, xf);
+        EXPECT_EQ(moved.index(), g.index());
+        EXPECT_NO_THROW(validate(moved));
+        const std::vector<Vec2> expected = outline(g, xf), got = outline(moved, origin);
+        ASSERT_EQ(got.size(), expected.size());
+        for (std::size_t i = 0; i < got.size(); ++i) EXPECT_NEAR((got[i] - expected[i]).norm(), 0.0, kTol);
+        EXPECT_NEAR(computeMassProperties(moved).area, computeMassProperties(g).area, kTol);
+        EXPECT_NEAR(computeMassProperties(moved).secondMoment, computeMassProperties(g).secondMoment, kTol);
+    }
+}
+
 }  // namespace
 }  // namespace physim

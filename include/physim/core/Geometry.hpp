@@ -126,6 +126,9 @@ Aabb computeAabb(const Geometry& g, const Transform& xf);
 /// corners, a segment's two points.
 std::vector<Vec2> outline(const Geometry& g, const Transform& xf);
 
+/// The same shape with every point moved by `xf` (m, rad): a part placed in a body of several shapes.
+Geometry transformed(const Geometry& g, const Transform& xf);
+
 }  // namespace physim
 
 namespace physim {

@@ -35,6 +35,9 @@ struct ShapeKind<Capsule> {
     }
     static void validate(const Capsule& c);
     static std::vector<Vec2> outline(const Capsule& c, const Transform& xf);
+    static Capsule placed(const Capsule& c, const Transform& xf) {
+        return {xf.apply(c.center1), xf.apply(c.center2), c.radius};
+    }
 
     static void toKernel(const Capsule& c, kernel::Shape& k) {
         TwoPoints::toKernel(kernelKind, c.center1, c.center2, c.radius, k);

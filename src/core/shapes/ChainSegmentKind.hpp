@@ -38,6 +38,9 @@ struct ShapeKind<ChainSegment> {
     static std::vector<Vec2> outline(const ChainSegment& c, const Transform& xf) {
         return ShapeKind<Segment>::outline(c.segment, xf);
     }
+    static ChainSegment placed(const ChainSegment& c, const Transform& xf) {
+        return {xf.apply(c.ghost1), ShapeKind<Segment>::placed(c.segment, xf), xf.apply(c.ghost2)};
+    }
 
     // The kernel sees a two-sided segment (never tunnels); the batch does not carry the ghosts.
     static void toKernel(const ChainSegment& c, kernel::Shape& k) {

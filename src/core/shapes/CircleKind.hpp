@@ -39,6 +39,7 @@ struct ShapeKind<Circle> {
     static double meanWidth(const Circle& c) { return 2.0 * c.radius; }
     static void validate(const Circle& c);
     static std::vector<Vec2> outline(const Circle& c, const Transform& xf);
+    static Circle placed(const Circle& c, const Transform& xf) { return {xf.apply(c.center), c.radius}; }
 
     // The kernel's circle: its centre is its one vertex.
     static void toKernel(const Circle& c, kernel::Shape& k) {

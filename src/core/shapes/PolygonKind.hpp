@@ -54,6 +54,14 @@ struct ShapeKind<Polygon> {
     static double meanWidth(const Polygon& p);
     static void validate(const Polygon& p);
     static std::vector<Vec2> outline(const Polygon& p, const Transform& xf);
+    static Polygon placed(const Polygon& p, const Transform& xf) {
+        Polygon q = p;
+        for (int i = 0; i < p.count; ++i) {
+            q.vertices[i] = xf.apply(p.vertices[i]);
+            q.normals[i] = xf.q.apply(p.normals[i]);
+        }
+        return q;
+    }
 
     static void toKernel(const Polygon& p, kernel::Shape& k) {
         k.kind = kernelKind;

@@ -62,6 +62,7 @@ struct ShapeKind<Segment> {
     static double meanWidth(const Segment& s) { return 2.0 * TwoPoints::length(s.point1, s.point2) / M_PI; }
     static void validate(const Segment& s);
     static std::vector<Vec2> outline(const Segment& s, const Transform& xf);
+    static Segment placed(const Segment& s, const Transform& xf) { return {xf.apply(s.point1), xf.apply(s.point2)}; }
 
     static void toKernel(const Segment& s, kernel::Shape& k) {
         TwoPoints::toKernel(kernelKind, s.point1, s.point2, 0.0, k);

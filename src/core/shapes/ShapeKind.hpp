@@ -20,6 +20,7 @@
 //   meanWidth(s)                 mean width over all directions (drag), m
 //   validate(s)                  throws std::invalid_argument naming the problem
 //   outline(s, xf)               world points around the boundary, counter-clockwise, for drawing
+//   placed(s, xf)                the same kind with every point moved by xf (a part placed in a compound body)
 //   toKernel(s, k)               fills the kernel's Shape but its bounding radius (kind, count, radius, vertices,
 //                                normals)
 //   fromBatch(shapes, i)         the shape from a ContinuousBatch's entry i, for validate(ContinuousBatch)'s messages,
