@@ -8,6 +8,7 @@
 #include "WorldImpl.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -29,6 +30,25 @@ JointConstraint jointRow(const WorldImpl& w, std::uint32_t joint, double h, cons
     row.joint = joint;
     prepareJoint(row, w.joints[joint], w.bodies, h, rodSoftness);
     return row;
+}
+
+// A colour's rows may lie in any order (they share no dynamic body), and a block whose rows all have one point
+// skips the second point's work (ContactSolver.cpp): within each window of kPointWindow rows, the one-point rows go
+// first, each part still in body order. Windows keep the rows of nearby bodies together, as two threads need
+// (markShareHeads); a window has at most one block of rows of both kinds.
+void ConstraintGraph::putOnePointRowsFirst(const WorldImpl& w, std::uint32_t first, std::uint32_t end) {
+    std::array<RowRef, kPointWindow> twos;
+    for (std::uint32_t window = first; window < end; window += kPointWindow) {
+        const std::uint32_t last = std::min<std::uint32_t>(window + kPointWindow, end);
+        std::uint32_t ones = window;
+        std::size_t twoCount = 0;
+        for (std::uint32_t r = window; r < last; ++r) {
+            const RowRef ref = rowContacts[r];
+            if (w.contacts[ref.contact].manifold.pointCount == 2) twos[twoCount++] = ref;
+            else rowContacts[ones++] = ref;
+        }
+        std::copy(twos.begin(), twos.begin() + static_cast<std::ptrdiff_t>(twoCount), rowContacts.begin() + ones);
+    }
 }
 
 std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const Softness& rodSoftness) {
@@ -133,6 +153,8 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         rowContacts.resize(rowCount);
         segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
         for (const std::uint32_t k : sortedRows) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
+        for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s)
+            if (s % kSegments < kColours) putOnePointRowsFirst(w, segmentStart[s], segmentStart[s + 1]);
         for (std::size_t k = 0; k < w.awakeContacts.size(); ++k)
             if (constraintColour[k] == kColours) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).

@@ -77,6 +77,8 @@ struct ConstraintGraph {
 
 private:
     void markShareHeads(std::size_t bodies);
+    static constexpr std::uint32_t kPointWindow = 64;  // rows; a multiple of kLanes, so windows start blocks
+    void putOnePointRowsFirst(const WorldImpl& w, std::uint32_t first, std::uint32_t end);
     void joinBodies(std::int32_t a, std::int32_t b);  // awake indices: one island (kNullIndex: no-op)
     void groupIslands(std::size_t bodies, bool byIsland);  // bodyGroup, groupBodies; one group unless byIsland
 };

@@ -54,10 +54,11 @@ namespace {
 [[gnu::always_inline]] inline void markBlock(ContactBlock& b, const ContactBlockCold& cold) {
     const Wide zero = splat(0.0);
     Wide count;
-    bool keepsPushes = false;
+    bool keepsPushes = false, twoPoints = false;
     unsigned writes = 0;
     for (int k = 0; k < kLanes; ++k) {
         count[k] = cold.lanes[k].pointCount;
+        twoPoints = twoPoints || cold.lanes[k].pointCount == 2;
         keepsPushes = keepsPushes || cold.lanes[k].keepsPush;
         writes |= (b.negInvMassA[k] != 0.0 ? 1u << k : 0u) | (b.invMassB[k] != 0.0 ? 1u << (k + kLanes) : 0u);
     }
@@ -76,6 +77,7 @@ namespace {
     b.tangentImpulse = rubs ? b.tangentImpulse : zero;
     b.friction = any(rubs);
     b.keepsPushes = keepsPushes;
+    b.twoPoints = twoPoints;
     b.writes = static_cast<std::uint8_t>(writes);
 }
 
@@ -459,8 +461,10 @@ template <bool V, bool Turns>
 template <bool V, bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
     WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
-    for (const ContactBlock::Point& cp : c.points)
+    for (int i = 0; i < (c.twoPoints ? 2 : 1); ++i) {
+        const ContactBlock::Point& cp = c.points[i];
         applyAlong<V, Turns>(c, A, B, cp.normalImpulse, c.nx, c.ny, cp.negRnA, cp.rnB);
+    }
     applyAlong<V, Turns>(c, A, B, c.tangentImpulse, -c.ny, c.nx, c.negRtA, c.rtB);
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
@@ -631,7 +635,7 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
 // immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
 // pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
-template <bool V, bool Turns, bool Bias>
+template <bool V, bool Turns, bool Bias, bool Two>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
                                               const ContactPass& pass) {
     if constexpr (!Bias)
@@ -640,8 +644,9 @@ template <bool V, bool Turns, bool Bias>
     const Wide zero{}, one = splat(1.0);
     const Wide nx = c.nx, ny = c.ny;
     const Wide normalShift = mulAdd<V>(nx, B.dpx - A.dpx, ny * (B.dpy - A.dpy));
-    Wide separation[2], bias[2], massScale[2], leak[2], before[2];
-    for (int i = 0; i < 2; ++i) {
+    constexpr int kPoints = Two ? 2 : 1;
+    Wide separation[2] = {}, bias[2] = {}, massScale[2] = {}, leak[2] = {}, before[2] = {};
+    for (int i = 0; i < kPoints; ++i) {
         const ContactBlock::Point& cp = c.points[i];
         // Separation now: the start's, moved by the bodies' displacement and turn since the step began
         // (n . R a = cos(turn) n . a + sin(turn) a x n for an anchor a turned by R).
@@ -672,8 +677,8 @@ template <bool V, bool Turns, bool Bias>
     // Each point's normal speed before any of this pass's impulses on the row: what a bounce answers, since it takes
     // all of them back.
     const Wide met[2] = {before[0], before[1]};
-    WideMask started[2];
-    Wide deltas[2];  // each point's impulse change in this pass
+    WideMask started[2] = {};
+    Wide deltas[2] = {};  // each point's impulse change in this pass
     Wide totalNormal = zero;
     // Point i, compile-time (a runtime index would keep these arrays on the stack); `follows`: the other point went
     // first in this pass, so its speed is measured again.
@@ -697,7 +702,9 @@ template <bool V, bool Turns, bool Bias>
     };
     constexpr std::integral_constant<int, 0> first{};
     constexpr std::integral_constant<int, 1> second{};
-    if (secondFirst) {
+    if constexpr (!Two) {
+        solvePoint(first, false);
+    } else if (secondFirst) {
         solvePoint(second, false);
         solvePoint(first, true);
     } else {
@@ -770,8 +777,13 @@ template <bool V, bool Bias>
 [[gnu::always_inline]] inline void solveLoopWith(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                                  SolverBody* states, const ContactPass& pass) {
     for (ContactBlock* c = begin; c != end; ++c, ++cold) {
-        if (c->turns) solveBlock<V, true, Bias>(*c, *cold, states, pass);
-        else solveBlock<V, false, Bias>(*c, *cold, states, pass);
+        if (c->twoPoints) {
+            if (c->turns) solveBlock<V, true, Bias, true>(*c, *cold, states, pass);
+            else solveBlock<V, false, Bias, true>(*c, *cold, states, pass);
+        } else {
+            if (c->turns) solveBlock<V, true, Bias, false>(*c, *cold, states, pass);
+            else solveBlock<V, false, Bias, false>(*c, *cold, states, pass);
+        }
     }
 }
 

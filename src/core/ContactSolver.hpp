@@ -93,6 +93,7 @@ struct alignas(64) ContactBlock {
     std::uint8_t writes = 0;  // the sides the rows can move: bit k lane k's A, bit kLanes + k its B
     bool turns = false;       // some lane's body can turn (else the angular terms are skipped for all)
     bool friction = false;    // some lane has friction
+    bool twoPoints = false;   // some lane has a second point (else the passes skip the second point's work)
     bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
 };
