@@ -120,7 +120,9 @@ template <class Field>
     in.restitution = lanesOf([&](int k) { return contact[k]->material.restitution; });
     in.staticFriction = lanesOf([&](int k) { return contact[k]->material.staticFriction; });
     in.dynamicFriction = lanesOf([&](int k) { return contact[k]->material.dynamicFriction; });
-    for (int i = 0; i < 2; ++i) {  // an unused point's values are stale: prepareLanes and markBlock keep them out
+    bool two = false;
+    for (int k = 0; k < kLanes; ++k) two = two || manifold(k).pointCount == 2;
+    for (int i = 0; i < (two ? 2 : 1); ++i) {  // an unused point's values are stale: markBlock keeps them out
         in.pointX[i] = lanesOf([&](int k) { return manifold(k).points[i].point.x(); });
         in.pointY[i] = lanesOf([&](int k) { return manifold(k).points[i].point.y(); });
         in.separation[i] = lanesOf([&](int k) { return manifold(k).points[i].separation; });
@@ -137,6 +139,7 @@ template <class Field>
         turning += A[k]->turns || B[k]->turns ? 1 : 0;
     }
     block.turns = turning > 0;
+    block.twoPoints = two;
     return turning;
 }
 
@@ -151,6 +154,8 @@ template <class Field>
 
 // The rows' effective masses, Jacobians and separations, four lanes at once (each operation the scalar one on each
 // lane, Wide.hpp, so a lane's bits never depend on the others). markBlock then zeroes an unused point's fields.
+// Two: some lane has a second point; else the second point's fields are left to markBlock, which zeroes them.
+template <bool Two>
 [[gnu::always_inline]] inline void prepareLanes(const BlockInputs& in, ContactBlock& block, ContactBlockCold& cold) {
     const Wide zero = splat(0.0);
     const Wide nx = in.nx, ny = in.ny;
@@ -161,8 +166,14 @@ template <class Field>
     block.invMassB = in.invMassB;
     block.invIB = in.invIB;
     Wide sumAx = zero, sumAy = zero, sumBx = zero, sumBy = zero, tangentImpulse = zero;
-    Wide rnA[2], rnB[2], kNormal[2];  // per point: moments about the centres, inverse effective mass
+    Wide rnA[2] = {}, rnB[2] = {}, kNormal[2] = {};  // per point: moments about the centres, inverse effective mass
     for (int i = 0; i < 2; ++i) {
+        if (!Two && i == 1) {
+            cold.anchorAx[i] = cold.anchorAy[i] = cold.anchorBx[i] = cold.anchorBy[i] = zero;
+            cold.relativeVelocity[i] = cold.push[i] = zero;
+            for (int lane = 0; lane < kLanes; ++lane) cold.lanes[lane].engaged[i] = false;
+            continue;
+        }
         const WideMask used = in.pointCount > static_cast<double>(i);
         const Wide ax = used ? in.pointX[i] - in.centerAx : zero, ay = used ? in.pointY[i] - in.centerAy : zero;
         const Wide bx = used ? in.pointX[i] - in.centerBx : zero, by = used ? in.pointY[i] - in.centerBy : zero;
@@ -268,7 +279,8 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         }
         BlockInputs in;  // every field written by gatherLanes
         prepared.turning += static_cast<std::size_t>(gatherLanes(in, block, cold[j], contact, A, B));
-        prepareLanes(in, block, cold[j]);
+        if (block.twoPoints) prepareLanes<true>(in, block, cold[j]);
+        else prepareLanes<false>(in, block, cold[j]);
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
     return prepared;
@@ -752,13 +764,13 @@ template <bool V, bool Turns, bool Bias, bool Two>
             // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
             // lane's bits do not depend on whether a neighbour's friction made the block run this path.
             const Wide tangent = clamp(mulAdd<V>(-c.tangentMass, vt, c.tangentImpulse), zero - bound, bound);
-            const WideMask hasMass = c.tangentMass > 0.0;
-            const Wide mass = hasMass ? c.tangentMass : one;
-            const WideMask slides = hasMass & (abs(vt + (tangent - c.tangentImpulse) / mass) > pass.slipSpeed);
-            const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
-            c.sliding = rubs ? (slides ? one : zero) : c.sliding;
             applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.negRtA, c.rtB);
             c.tangentImpulse = tangent;
+            // The faces' speed against each other once the bound is applied, measured (no division in the loop).
+            const Wide after = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            const WideMask slides = (c.tangentMass > 0.0) & (abs(after) > pass.slipSpeed);
+            const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
+            c.sliding = rubs ? (slides ? one : zero) : c.sliding;
         }
     }
     scatter(c.indexA, c.writes, A, states);

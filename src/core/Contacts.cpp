@@ -494,21 +494,27 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
     freeContacts.push_back(index);
 }
 
+// The rows' layout depends on the awake contacts that have points, in the awake list's order (ConstraintGraph):
+// a contact without points joining at the end, or leaving with another without points moved into its place,
+// leaves that sequence as it was. A contact entering with no points gets a row, later, only by gaining one, which
+// the narrow phase reports (RefreshPass::pointsChanged). Chains and crowds add and drop such contacts nearly
+// every step as bodies move past neighbouring shapes.
 void WorldImpl::addAwakeContact(std::uint32_t index) {
     contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
     awakeContacts.push_back(index);
-    solver.layoutChanged();
+    if (contacts[index].manifold.pointCount > 0) solver.layoutChanged();
     awakeContactsChanged = true;
 }
 
 void WorldImpl::removeAwakeContact(std::uint32_t index) {
     const std::int32_t at = contacts[index].awakeIndex;
     const std::uint32_t last = awakeContacts.back();
+    if (contacts[index].manifold.pointCount > 0 || (last != index && contacts[last].manifold.pointCount > 0))
+        solver.layoutChanged();
     awakeContacts[static_cast<std::size_t>(at)] = last;
     contacts[last].awakeIndex = at;
     awakeContacts.pop_back();
     contacts[index].awakeIndex = kNullIndex;
-    solver.layoutChanged();
     awakeContactsChanged = true;
 }
 
