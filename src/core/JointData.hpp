@@ -58,6 +58,8 @@ struct JointData {
     std::int32_t next[2] = {kNullIndex, kNullIndex};
     std::uint32_t generation = 0;
     bool alive = false;
+    bool collideConnected = false;  // JointDefBase's
+    double breakForce = 0.0, breakTorque = 0.0;  // N, N m; infinite: never breaks
 
     JointType type() const { return static_cast<JointType>(params.index()); }
     bool twoBodies() const { return !toWorld; }

@@ -14,9 +14,11 @@
 // solve adds to them in place, and they are the next step's warm start, so nothing is stored after the last pass.
 // A kind that is not a row (a spring: a force, effects/Springs.cpp) provides, instead of the row's functions,
 //   addTo, removeFrom(effects, joint)  hand the joint to the effect that applies its force, and take it back
-// A kind may also provide (World::jointLength and jointAngle refuse the others):
+// A kind may also provide (World::jointLength, jointAngle, jointMotorTorque and jointMotorForce refuse the others):
 //   jointLength()             its length, m
 //   jointAngle(A, B)          its angle between the bodies, rad
+//   motorTorque(invH)         what its rotary motor applied over the last step, N m (on B; the reaction on A)
+//   motorForce(invH)          what its linear motor applied over the last step, N (on B along the axis)
 // The functions below visit the kind once per call (a switch) for the step and the World's generic queries. Beside
 // them, creation visits the definition (WorldJoints.cpp), and a kind's own setters and effect reach its data by
 // its type.
@@ -57,6 +59,15 @@ template <class Kind>
 struct HasAngle<Kind, std::void_t<decltype(std::declval<const Kind&>().jointAngle(std::declval<const BodyData&>(),
                                                                                    std::declval<const BodyData&>()))>>
     : std::true_type {};
+
+template <class Kind, class = void>
+struct HasMotorTorque : std::false_type {};
+template <class Kind>
+struct HasMotorTorque<Kind, std::void_t<decltype(std::declval<const Kind&>().motorTorque(0.0))>> : std::true_type {};
+template <class Kind, class = void>
+struct HasMotorForce : std::false_type {};
+template <class Kind>
+struct HasMotorForce<Kind, std::void_t<decltype(std::declval<const Kind&>().motorForce(0.0))>> : std::true_type {};
 
 // "a distance or spring joint": the kinds that have what `call` reads, for refusing the one at hand.
 template <template <class, class> class Has, class... Kinds>
@@ -143,6 +154,27 @@ inline double jointAngle(const JointData& joint, const std::vector<BodyData>& bo
             using Kind = std::decay_t<decltype(kind)>;
             if constexpr (detail::HasAngle<Kind>::value) return kind.jointAngle(bodies[joint.a], bodies[joint.b]);
             else detail::refuseKind<detail::HasAngle>("jointAngle", Kind::kName, JointKinds{});
+        },
+        joint.params);
+}
+
+/// World::jointMotorTorque and jointMotorForce: what the joint's motor applied over the last step of substep 1 / invH
+/// (N m, N); std::invalid_argument for a kind without such a motor.
+inline double jointMotorTorque(const JointData& joint, double invH) {
+    return std::visit(
+        [&](const auto& kind) -> double {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (detail::HasMotorTorque<Kind>::value) return kind.motorTorque(invH);
+            else detail::refuseKind<detail::HasMotorTorque>("jointMotorTorque", Kind::kName, JointKinds{});
+        },
+        joint.params);
+}
+inline double jointMotorForce(const JointData& joint, double invH) {
+    return std::visit(
+        [&](const auto& kind) -> double {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (detail::HasMotorForce<Kind>::value) return kind.motorForce(invH);
+            else detail::refuseKind<detail::HasMotorForce>("jointMotorForce", Kind::kName, JointKinds{});
         },
         joint.params);
 }

@@ -83,7 +83,17 @@ JointId World::createJoint(const JointDefinition& definition) {
                 if (A->type != BodyType::Dynamic && B.type != BodyType::Dynamic)
                     throw std::invalid_argument(name + "at least one dynamic body");
             }
+            const JointDefBase& base = *d.def;
+            if (!(base.breakForce > 0.0))
+                throw std::invalid_argument(name + "breakForce > 0 (infinity: never breaks), got " +
+                                            std::to_string(base.breakForce));
+            if (!(base.breakTorque > 0.0))
+                throw std::invalid_argument(name + "breakTorque > 0 (infinity: never breaks), got " +
+                                            std::to_string(base.breakTorque));
             JointData joint;
+            joint.collideConnected = base.collideConnected;
+            joint.breakForce = base.breakForce;
+            joint.breakTorque = base.breakTorque;
             joint.a = ends.toWorld ? ends.b.index : ends.a.index;
             joint.b = ends.b.index;
             joint.toWorld = ends.toWorld;
@@ -158,5 +168,14 @@ JointReaction reactionOf(const WorldImpl& w, const JointData& j) {
 
 Vec2 World::jointReactionForce(JointId id) const { return reactionOf(*impl_, joint(id)).force; }
 double World::jointReactionTorque(JointId id) const { return reactionOf(*impl_, joint(id)).torque; }
+
+namespace {
+double substepRate(const WorldImpl& w) { return w.dt > 0.0 ? 1.0 / (w.dt / w.settings.substeps) : 0.0; }
+}  // namespace
+
+double World::jointMotorTorque(JointId id) const {
+    return physim::jointMotorTorque(joint(id), substepRate(*impl_));
+}
+double World::jointMotorForce(JointId id) const { return physim::jointMotorForce(joint(id), substepRate(*impl_)); }
 
 }  // namespace physim

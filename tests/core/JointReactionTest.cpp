@@ -141,7 +141,10 @@ TEST(JointReaction, RevoluteMotorHoldsACantilever) {
     pin.enableMotor = true;
     pin.motorSpeed = 0.0;
     pin.maxMotorTorque = 1000.0;  // far above the beam's moment
-    c.expectHeldBy(c.world.createRevoluteJoint(pin), "pin");
+    const JointId j = c.world.createRevoluteJoint(pin);
+    c.expectHeldBy(j, "pin");
+    // The pin's torque is all the motor's (no limit is on).
+    EXPECT_EQ(c.world.jointMotorTorque(j), c.world.jointReactionTorque(j));
 }
 
 // A mouse joint holding a body still against gravity: its (capped, soft) pull is the body's weight.

@@ -146,6 +146,9 @@ TEST(RevoluteJoint, MotorReachesItsSpeedWithinItsTorque) {
     const int steps = 60;
     for (int i = 0; i < steps; ++i) world.step(kDt);
     EXPECT_NEAR(world.angularVelocity(wheel), alpha * steps * kDt, 1e-9) << "torque-limited spin-up: exact";
+    // Saturated, the motor applies its whole cap (1e-12 N m: the cap times h over h, rounded).
+    EXPECT_NEAR(world.jointMotorTorque(motor), j.maxMotorTorque, 1e-12);
+    EXPECT_THROW(world.jointMotorForce(motor), std::invalid_argument) << "a revolute motor applies a torque";
     world.setJointMotor(motor, true, 4.0, 100.0);
     world.step(kDt);
     EXPECT_NEAR(world.angularVelocity(wheel), 4.0, 1e-9) << "a strong motor holds its speed";

@@ -30,7 +30,19 @@ struct JointId {
 /// A joint's kind (World::jointType); each has its definition below and its World::createXJoint.
 enum class JointType { Distance, Mouse, Spring, Revolute, Weld };
 
-struct DistanceJointDef {
+/// What every joint definition has besides its kind's own values.
+struct JointDefBase {
+    /// Whether the joint's two bodies still collide with each other. Off by default: a wheel on its axle, or a link
+    /// overlapping its neighbour at the pin, meets the other body only through the joint.
+    bool collideConnected = false;
+    /// N, > 0: the joint breaks when the force it applies exceeds this (it is destroyed at the end of the step and
+    /// reported in World::jointEvents). Infinity (the default): never.
+    double breakForce = std::numeric_limits<double>::infinity();
+    /// N m, > 0: likewise for the torque it applies besides its force's moment.
+    double breakTorque = std::numeric_limits<double>::infinity();
+};
+
+struct DistanceJointDef : JointDefBase {
     BodyId bodyA;
     BodyId bodyB;
     Vec2 localAnchorA = Vec2::Zero();  ///< m, in A's frame (relative to its body origin)
@@ -44,7 +56,7 @@ struct DistanceJointDef {
     double dampingRatio = 1.0;  ///< >= 0, of the soft link; 1 is critical
 };
 
-struct MouseJointDef {
+struct MouseJointDef : JointDefBase {
     BodyId body;                       ///< a dynamic body
     Vec2 target = Vec2::Zero();        ///< world point the anchor is pulled towards, m
     Vec2 localAnchor = Vec2::Zero();   ///< grabbed point in the body's frame (origin-relative), m
@@ -57,7 +69,7 @@ struct MouseJointDef {
 /// unit vector from anchorA to anchorB (N; its reaction, -F, acts on A). Evaluated every substep as a force
 /// (explicit): stable while the spring's frequency sqrt(k / m) stays well below the substep rate; for stiffer
 /// links use a soft distance joint (DistanceJointDef::hertz).
-struct SpringJointDef {
+struct SpringJointDef : JointDefBase {
     BodyId bodyA;                      ///< null: the spring's first end is the world point localAnchorA
     BodyId bodyB;                      ///< a body
     Vec2 localAnchorA = Vec2::Zero();  ///< m, in A's frame (origin-relative), or a world point when bodyA is null
@@ -69,7 +81,7 @@ struct SpringJointDef {
 
 /// A pin at a world point: each body keeps the point where it is at creation, and the bodies turn freely about
 /// it. The joint angle is angle(B) - angle(A) minus its value at creation, rad.
-struct RevoluteJointDef {
+struct RevoluteJointDef : JointDefBase {
     BodyId bodyA, bodyB;
     Vec2 anchor = Vec2::Zero();        ///< the pin, world point, m
     bool enableLimit = false;
@@ -81,7 +93,7 @@ struct RevoluteJointDef {
 };
 
 /// Glues two bodies at a world point: their relative pose stays what it is at creation.
-struct WeldJointDef {
+struct WeldJointDef : JointDefBase {
     BodyId bodyA, bodyB;
     Vec2 anchor = Vec2::Zero();        ///< world point, m
 };

@@ -232,6 +232,12 @@ public:
     /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
     /// A): a revolute joint's motor and limits, a weld's hold on the angle; 0 for the other kinds.
     double jointReactionTorque(JointId id) const;
+    /// What the joint's motor applied to body B in the last step (its reaction acts on A), N m: revolute joints
+    /// (0 while the motor is off); other kinds are refused with std::invalid_argument.
+    double jointMotorTorque(JointId id) const;
+    /// What the joint's linear motor applied to body B along its axis in the last step, N; kinds without one are
+    /// refused with std::invalid_argument.
+    double jointMotorForce(JointId id) const;
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

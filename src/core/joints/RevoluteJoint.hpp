@@ -34,6 +34,8 @@ struct RevoluteJoint {
     void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;
     void solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias);
     JointReaction reaction(const JointEndsNow& now, double invH) const;
+    /// World::jointMotorTorque: the motor's torque on B over the last step, N m (0 while it is off).
+    double motorTorque(double invH) const { return motorImpulse * invH; }
     /// World::jointAngle: angle(B) - angle(A) minus its value at creation, rad.
     double jointAngle(const BodyData& A, const BodyData& B) const { return B.angle - A.angle - referenceAngle; }
 };
