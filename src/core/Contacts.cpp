@@ -528,10 +528,14 @@ void WorldImpl::updatePairs() {
         const BodyData& B = bodies[bodyB];
         return bodyA == bodyB || !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
     };
+    // Bodies joined by a joint without collideConnected meet only through it: their pair is taken and dropped.
+    const bool joints = jointCount > 0;
     broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
     for (const auto& [a, b] : newPairs) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
-        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB])) createContact(a, b);
+        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) &&
+            !(joints && jointKeepsApart(bodyA, bodyB)))
+            createContact(a, b);
     }
 }
 

@@ -534,6 +534,7 @@ void World::step(double dt) {
     w.events.begin.clear();
     w.events.end.clear();
     w.events.impacts.clear();
+    w.jointEvents.broken.clear();
     w.touchingValid = false;
 
     // Bodies made or changed since the last step got proxies before dt was known: grow them for this step's motion.
@@ -556,6 +557,7 @@ void World::step(double dt) {
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.solver.fastBodies()) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.solver.moveDeferredProxies(w); });
+    if (w.breakableJoints > 0) w.breakJoints();
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.solver.rowCount() : 0;
     ++w.stepCount;

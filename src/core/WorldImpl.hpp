@@ -71,6 +71,8 @@ struct WorldImpl {
     std::vector<std::uint32_t> freeJoints;
     std::size_t jointCount = 0;
     std::size_t rowJointCount = 0;  // joints solved as rows (all but springs)
+    std::size_t breakableJoints = 0;  // joints with a finite breakForce or breakTorque: the step checks them
+    JointEvents jointEvents;
     std::vector<IslandData> islands;
     std::vector<std::uint32_t> freeIslands;
 
@@ -110,6 +112,12 @@ struct WorldImpl {
     void wakeOverlapping(const Aabb& box);  // sleeping bodies whose proxies overlap the box wake
     /// Takes a joint slot for `data`, links it to its bodies (and their islands) and wakes them.
     std::uint32_t addJoint(const JointData& data);
+    /// Unlinks and frees joint `index`, waking its bodies; a joint that kept them apart lets their shapes pair again.
+    void removeJoint(std::uint32_t index);
+    /// Whether a joint between the two bodies keeps them from colliding (one without collideConnected).
+    bool jointKeepsApart(std::uint32_t a, std::uint32_t b) const;
+    /// Destroys the joints whose last step's reaction crossed their break thresholds, recording each.
+    void breakJoints();
     /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity (the next
     /// step's motion and turn), grown by margin.
     Aabb proxyBox(const BodyData& b, const Aabb& box, double margin) const;

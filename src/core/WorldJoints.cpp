@@ -7,6 +7,8 @@
 #include "Slots.hpp"
 #include "WorldImpl.hpp"
 
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -14,6 +16,11 @@
 
 namespace physim {
 namespace {
+
+bool breakable(const JointData& j) {
+    return j.breakForce < std::numeric_limits<double>::infinity() ||
+           j.breakTorque < std::numeric_limits<double>::infinity();
+}
 
 void linkJoint(WorldImpl& w, std::uint32_t index) {
     JointData& j = w.joints[index];
@@ -56,6 +63,14 @@ std::uint32_t WorldImpl::addJoint(const JointData& data) {
     ++jointCount;
     if (j.isRow()) ++rowJointCount;
     else addForceJoint(j, index, effects);
+    if (breakable(j)) ++breakableJoints;
+    // The bodies now meet only through the joint: their contacts go (the broad phase offers the pair no more).
+    if (j.twoBodies() && !j.collideConnected)
+        for (std::int32_t key = bodies[j.a].contactHead; key != kNullIndex;) {
+            const std::uint32_t c = static_cast<std::uint32_t>(key >> 1);
+            key = contacts[c].next[key & 1];
+            if (contacts[c].a() == j.b || contacts[c].b() == j.b) destroyContact(c, false);
+        }
     solver.layoutChanged();
     wakeBody(j.b);
     if (j.twoBodies()) {
@@ -118,23 +133,64 @@ const JointData& World::joint(JointId id) const {
 }
 
 void World::destroyJoint(JointId id) {
-    const JointData& j = joint(id);
-    WorldImpl& w = *impl_;
-    w.requireNotStepping("destroyJoint");
-    w.wakeBody(j.b);
-    if (j.twoBodies()) {
-        w.wakeBody(j.a);
-        if (w.bodies[j.a].type == BodyType::Dynamic && w.bodies[j.b].type == BodyType::Dynamic)
-            w.unlinkBodies(j.a, j.b);
-    }
-    unlinkJoint(w, id.index);
-    if (j.isRow()) --w.rowJointCount;
-    else removeForceJoint(j, id.index, w.effects);
-    w.solver.layoutChanged();
-    w.joints[id.index].alive = false;
-    w.freeJoints.push_back(id.index);
-    --w.jointCount;
+    joint(id);
+    impl_->requireNotStepping("destroyJoint");
+    impl_->removeJoint(id.index);
 }
+
+void WorldImpl::removeJoint(std::uint32_t index) {
+    const JointData& j = joints[index];
+    wakeBody(j.b);
+    if (j.twoBodies()) {
+        wakeBody(j.a);
+        if (bodies[j.a].type == BodyType::Dynamic && bodies[j.b].type == BodyType::Dynamic) unlinkBodies(j.a, j.b);
+    }
+    unlinkJoint(*this, index);
+    if (j.isRow()) --rowJointCount;
+    else removeForceJoint(j, index, effects);
+    if (breakable(j)) --breakableJoints;
+    solver.layoutChanged();
+    joints[index].alive = false;
+    freeJoints.push_back(index);
+    --jointCount;
+    // Shapes the joint kept apart may pair again: the broad phase asks about their proxies at the next step.
+    if (j.twoBodies() && !j.collideConnected && !jointKeepsApart(j.a, j.b))
+        for (const std::uint32_t end : {j.a, j.b})
+            forEachShape(bodies[end], [&](std::uint32_t, const ShapeData& shape) {
+                if (shape.proxy != kNullIndex) broadPhase.requery(shape.proxy);
+            });
+}
+
+bool WorldImpl::jointKeepsApart(std::uint32_t a, std::uint32_t b) const {
+    for (std::int32_t key = bodies[a].jointHead; key != kNullIndex;) {
+        const JointData& j = joints[static_cast<std::size_t>(key >> 1)];
+        const std::uint32_t other = (key & 1) == 0 ? j.b : j.a;
+        if (j.twoBodies() && other == b && !j.collideConnected) return true;
+        key = j.next[key & 1];
+    }
+    return false;
+}
+
+void WorldImpl::breakJoints() {
+    const double invH = dt > 0.0 ? 1.0 / (dt / settings.substeps) : 0.0;
+    for (std::uint32_t i = 0; i < joints.size(); ++i) {
+        const JointData& j = joints[i];
+        if (!j.alive || !breakable(j) || !j.isRow()) continue;
+        if (!bodies[j.b].awake() && !(j.twoBodies() && bodies[j.a].awake())) continue;  // asleep: nothing new
+        const JointReaction r = jointReaction(j, bodies, invH);
+        if (!(r.force.norm() > j.breakForce) && !(std::abs(r.torque) > j.breakTorque)) continue;
+        JointBreakEvent event;
+        event.joint = JointId{i, j.generation};
+        event.bodyA = BodyId{j.a, bodies[j.a].generation};
+        event.bodyB = BodyId{j.b, bodies[j.b].generation};
+        event.force = r.force;
+        event.torque = r.torque;
+        jointEvents.broken.push_back(event);
+        removeJoint(i);
+    }
+}
+
+const JointEvents& World::jointEvents() const { return impl_->jointEvents; }
 
 std::size_t World::jointCount() const { return impl_->jointCount; }
 JointType World::jointType(JointId id) const { return joint(id).type(); }

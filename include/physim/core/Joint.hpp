@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace physim {
 
@@ -40,6 +41,20 @@ struct JointDefBase {
     double breakForce = std::numeric_limits<double>::infinity();
     /// N m, > 0: likewise for the torque it applies besides its force's moment.
     double breakTorque = std::numeric_limits<double>::infinity();
+};
+
+/// A joint that broke in the last step: what it applied crossed its JointDefBase::breakForce or breakTorque, so it
+/// was destroyed at the end of the step (its id is stale now).
+struct JointBreakEvent {
+    JointId joint;
+    BodyId bodyA, bodyB;
+    Vec2 force = Vec2::Zero();  ///< N, what it applied to B in that step (JointReaction's force)
+    double torque = 0.0;        ///< N m, besides the force's moment
+};
+
+/// What happened to the joints in the last step, in the joints' slot order.
+struct JointEvents {
+    std::vector<JointBreakEvent> broken;
 };
 
 struct DistanceJointDef : JointDefBase {

@@ -238,6 +238,8 @@ public:
     /// What the joint's linear motor applied to body B along its axis in the last step, N; kinds without one are
     /// refused with std::invalid_argument.
     double jointMotorForce(JointId id) const;
+    /// The joints that broke in the last step (JointDefBase::breakForce, breakTorque), beside contactEvents().
+    const JointEvents& jointEvents() const;
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),
