@@ -301,6 +301,34 @@ void RigidBody::attach(World& world) {
     if (def_.type == BodyType::Dynamic && massOverride_ > 0.0) world.setMass(id_, massOverride_);
 }
 
+namespace {
+
+// The joint `def` between two attached bodies of one world, by World::createXJoint for its kind.
+template <class Def, class Create>
+JointId joinBodies(World* world, const World* otherWorld, BodyId a, BodyId b, Def def, Create create) {
+    if (!world || !otherWorld)
+        throw std::logic_error("physim: RigidBody::join needs both entities added to the simulation first");
+    if (world != otherWorld) throw std::logic_error("physim: RigidBody::join joins bodies of one simulation only");
+    def.bodyA = a;
+    def.bodyB = b;
+    return (world->*create)(def);
+}
+
+}  // namespace
+
+JointId RigidBody::join(RigidBody& other, DistanceJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createDistanceJoint);
+}
+JointId RigidBody::join(RigidBody& other, RevoluteJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createRevoluteJoint);
+}
+JointId RigidBody::join(RigidBody& other, WeldJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createWeldJoint);
+}
+JointId RigidBody::join(RigidBody& other, SpringJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createSpringJoint);
+}
+
 void RigidBody::detach() {
     if (!world_) return;
     def_.position = world_->position(id_);

@@ -72,6 +72,12 @@ public:
                    double angle = 0.0, std::optional<Mesh> partMesh = std::nullopt);
     Part& addShape(const CollisionShape& shape, const Material& material, const Vec2& offset = Vec2::Zero(),
                    double angle = 0.0, std::optional<Mesh> partMesh = std::nullopt);
+    /// Joins this object's body to `other`'s by a joint (RigidBody::join: this one is body A): e.g.
+    /// `wheel.join(axle, RevoluteJointDef{...})`. Both objects must have been added to the simulation.
+    template <class Def>
+    JointId join(Object& other, const Def& def) {
+        return rb.join(other.rb, def);
+    }
     /// The shapes after the first, in the order added.
     const std::vector<std::unique_ptr<Part>>& parts() const { return parts_; }
 

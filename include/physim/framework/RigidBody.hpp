@@ -4,6 +4,7 @@
 // write goes to the world. SI units: kg, m, s, rad.
 
 #include "physim/core/Body.hpp"
+#include "physim/core/Joint.hpp"
 #include "physim/core/MassData.hpp"
 #include "physim/core/Math.hpp"
 #include "physim/core/Shape.hpp"
@@ -121,6 +122,15 @@ public:
     /// Used by the entity that owns this body (Object): create the body in `world`.
     void attach(World& world);
     void detach();
+    /// Joins this body (the joint's body A) to `other` (body B) by a joint of the definition's kind: its bodyA and
+    /// bodyB are filled in here, the rest is the definition's (World::createXJoint's rules and errors). Both
+    /// entities must have been added to the same simulation (std::logic_error otherwise). The joint lives in the
+    /// world (World::jointReactionForce, setJointMotor, destroyJoint ...); destroying either body destroys it.
+    JointId join(RigidBody& other, DistanceJointDef def);
+    JointId join(RigidBody& other, RevoluteJointDef def);
+    JointId join(RigidBody& other, WeldJointDef def);
+    JointId join(RigidBody& other, SpringJointDef def);
+
     /// The body origin, m (the point the shape's coordinates are relative to) and its angle, rad.
     Vec2 position() const;
     double angle() const;
