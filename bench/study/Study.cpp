@@ -6,7 +6,7 @@
 // Cost: seconds per simulated second of stepping, by the wall clock and by the process's CPU clock (the fastest
 // of repeated runs each); the CPU figure is the one to compare on a shared machine.
 // A family is one knob swept with the others at the baseline (60 Hz, WorldSettings' defaults, discrete):
-// rate (Hz), substeps, iterations (velocity), relax (iterations), hertz (contact, or joint on the pendulum,
+// rate (Hz), substeps, iterations (velocity), relax (iterations), hertz (contact, or joint on the jointed scenes,
 // stiffness), damping (ratio of that spring), stiff (substeps x hertz together), ccd (discrete | sampled<precision> | exact on every dynamic body).
 
 #include "StudyScenes.hpp"
@@ -64,6 +64,9 @@ std::vector<std::string> quickCases() {
     return out;
 }
 
+// The scenes held by joints, not contacts: their hertz and damping families set the joints' spring.
+bool jointed(const std::string& scene) { return scene == "pendulum" || scene == "heavy_chain" || scene == "atwood"; }
+
 int wholeNumber(const std::string& text) {
     std::size_t used = 0;
     const int v = std::stoi(text, &used);
@@ -83,13 +86,13 @@ Knobs knobsFor(const std::string& scene, const std::string& family, const std::s
     else if (family == "substeps") k.world.substeps = wholeNumber(setting);
     else if (family == "iterations") k.world.velocityIterations = wholeNumber(setting);
     else if (family == "relax") k.world.relaxIterations = wholeNumber(setting);
-    else if (family == "hertz") (scene == "pendulum" ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting);
+    else if (family == "hertz") (jointed(scene) ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting);
     else if (family == "damping")
-        (scene == "pendulum" ? k.world.jointDampingRatio : k.world.contactDampingRatio) = std::stod(setting);
+        (jointed(scene) ? k.world.jointDampingRatio : k.world.contactDampingRatio) = std::stod(setting);
     else if (family == "stiff") {  // substeps and stiffness together: the stiffness cap (substep rate / 4) moves up
         const auto x = setting.find('x');
         k.world.substeps = wholeNumber(setting.substr(0, x));
-        (scene == "pendulum" ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting.substr(x + 1));
+        (jointed(scene) ? k.world.jointHertz : k.world.contactHertz) = std::stod(setting.substr(x + 1));
     }
     else if (family == "ccd") {
         k.ccd = setting;
