@@ -4,7 +4,9 @@
 
 #include "BodyData.hpp"
 #include "joints/DistanceJoint.hpp"
+#include "joints/MotorJoint.hpp"
 #include "joints/MouseJoint.hpp"
+#include "joints/PulleyJoint.hpp"
 #include "joints/RevoluteJoint.hpp"
 #include "joints/SpringJoint.hpp"
 #include "joints/WeldJoint.hpp"
@@ -37,7 +39,8 @@ struct JointKindList {
         return ((static_cast<std::size_t>(Kinds::kType) == i++) && ...);
     }
 };
-using JointKinds = JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint>;
+using JointKinds =
+    JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint, PulleyJoint, MotorJoint>;
 static_assert(JointKinds::inTypeOrder(), "a joint kind's place in JointKinds is its JointType");
 
 struct JointDefinition {

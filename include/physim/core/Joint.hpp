@@ -5,7 +5,9 @@
 //   mouse     a soft spring with a force cap pulling a body's anchor towards a target point (dragging);
 //   revolute  a pin: two bodies share a point and turn freely about it, within optional angle limits, driven by
 //             an optional motor;
-//   weld      two bodies share a point and their relative angle: glued.
+//   weld      two bodies share a point and their relative angle: glued;
+//   pulley    two bodies hang from two fixed points by one rope: lengthA + ratio * lengthB stays at most its length;
+//   motor     drives one body's pose relative to another's, within a force and a torque.
 // And one force, evaluated every substep (docs/effects.md):
 //   spring    Hooke's law with damping between an anchor on each body, or from a body's anchor to a world point.
 
@@ -29,7 +31,7 @@ struct JointId {
 };
 
 /// A joint's kind (World::jointType); each has its definition below and its World::createXJoint.
-enum class JointType { Distance, Mouse, Spring, Revolute, Weld };
+enum class JointType { Distance, Mouse, Spring, Revolute, Weld, Pulley, Motor };
 
 /// What every joint definition has besides its kind's own values.
 struct JointDefBase {
@@ -105,12 +107,49 @@ struct RevoluteJointDef : JointDefBase {
     bool enableMotor = false;
     double motorSpeed = 0.0;           ///< rad/s of B relative to A
     double maxMotorTorque = 0.0;       ///< N m, >= 0
+    /// A rotary spring pulling the joint angle towards springTargetAngle (World::setJointSpring): its frequency for
+    /// the joint's effective inertia 1 / (1/I_A + 1/I_B) (a disc pinned to the ground: its own I), solved
+    /// implicitly, so any stiffness is stable (capped at a quarter of the substep rate as jointHertz).
+    bool enableSpring = false;
+    double springHertz = 0.0;          ///< Hz, >= 0; 0: the spring does nothing
+    double springDampingRatio = 0.0;   ///< >= 0; 1 is critical (no overshoot)
+    double springTargetAngle = 0.0;    ///< rad, relative to the angle at creation
 };
 
 /// Glues two bodies at a world point: their relative pose stays what it is at creation.
 struct WeldJointDef : JointDefBase {
     BodyId bodyA, bodyB;
     Vec2 anchor = Vec2::Zero();        ///< world point, m
+};
+
+/// Two bodies hanging from two fixed world points by one rope over two pulleys: lengthA = |anchor A - groundAnchorA|,
+/// lengthB likewise, and lengthA + ratio * lengthB never exceeds `length` (a rope: it pulls, never pushes, and goes
+/// slack). A ratio r makes a block and tackle: B's side moves 1/r as far as A's. jointLength is `length`;
+/// World::jointPulleyLengths gives the sides now. jointReactionForce is the rope's pull on B (A's side pulls A with
+/// 1/ratio of it, along its own side); the ground anchors take the rest.
+struct PulleyJointDef : JointDefBase {
+    BodyId bodyA, bodyB;
+    Vec2 groundAnchorA = Vec2::Zero();  ///< world point A's side hangs from, m
+    Vec2 groundAnchorB = Vec2::Zero();  ///< world point B's side hangs from, m
+    Vec2 localAnchorA = Vec2::Zero();   ///< m, in A's frame (origin-relative)
+    Vec2 localAnchorB = Vec2::Zero();   ///< m, in B's frame
+    double ratio = 1.0;                 ///< > 0
+    /// m, the rope's length lengthA + ratio * lengthB; <= 0 (the default) takes its value at creation. Each side
+    /// must be longer than 0 at creation.
+    double length = 0.0;
+};
+
+/// Drives B's pose relative to A's towards a target: B's origin towards A's point at linearOffset (in A's frame)
+/// and angle(B) - angle(A) towards angularOffset, as a velocity that removes correctionFactor of the error each
+/// substep, within maxForce and maxTorque (a top-down character pushed by the player, a platform following a path).
+/// World::setMotorJointOffsets moves the target; jointMotorForce and jointMotorTorque read what it applied.
+struct MotorJointDef : JointDefBase {
+    BodyId bodyA, bodyB;
+    Vec2 linearOffset = Vec2::Zero();  ///< m, B's origin in A's frame
+    double angularOffset = 0.0;        ///< rad, angle(B) - angle(A)
+    double maxForce = 1.0;             ///< N, >= 0
+    double maxTorque = 1.0;            ///< N m, >= 0
+    double correctionFactor = 0.3;     ///< in [0, 1]: the fraction of the pose error removed per substep
 };
 
 }  // namespace physim

@@ -205,7 +205,8 @@ public:
     JointId createRevoluteJoint(const RevoluteJointDef& def);
     /// A weld (WeldJointDef). Throws std::invalid_argument as createRevoluteJoint.
     JointId createWeldJoint(const WeldJointDef& def);
-    /// Revolute and weld joints: angle(B) - angle(A) minus its value at creation, rad.
+    /// Revolute and weld joints: angle(B) - angle(A) minus its value at creation, rad; motor joints: minus the
+    /// angular offset (0 on target).
     double jointAngle(JointId id) const;
     /// Revolute joints: the motor (rad/s of B relative to A, N m >= 0). Wakes the bodies.
     void setJointMotor(JointId id, bool enable, double speed, double maxTorque);
@@ -217,8 +218,8 @@ public:
     bool contains(JointId id) const;
     std::size_t jointCount() const;
     JointType jointType(JointId id) const;
-    /// The joint's rod length (distance joints) or rest length (springs), m; other joints are refused with
-    /// std::invalid_argument.
+    /// The joint's rod length (distance joints), rest length (springs) or rope length (pulleys: lengthA + ratio *
+    /// lengthB when taut), m; other joints are refused with std::invalid_argument.
     double jointLength(JointId id) const;
     /// The joint's anchors in world coordinates, m (a mouse joint's, or a spring to a point's, first anchor is
     /// its target).
@@ -230,16 +231,28 @@ public:
     /// rest reports its bob's weight; zero before the first step. A spring reports its force now.
     Vec2 jointReactionForce(JointId id) const;
     /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
-    /// A): a revolute joint's motor and limits, a weld's hold on the angle; 0 for the other kinds.
+    /// A): a revolute joint's spring, motor and limits, a weld's or motor joint's hold on the angle; 0 for the other
+    /// kinds. A pulley's force is its rope's pull on B; A's side pulls A along its own side, 1/ratio as hard.
     double jointReactionTorque(JointId id) const;
     /// What the joint's motor applied to body B in the last step (its reaction acts on A), N m: revolute joints
-    /// (0 while the motor is off); other kinds are refused with std::invalid_argument.
+    /// (0 while the motor is off), motor joints; other kinds are refused with std::invalid_argument.
     double jointMotorTorque(JointId id) const;
-    /// What the joint's linear motor applied to body B along its axis in the last step, N; kinds without one are
-    /// refused with std::invalid_argument.
+    /// What the joint's linear motor applied to body B along its axis in the last step, N (a motor joint: the size
+    /// of its force); kinds without one are refused with std::invalid_argument.
     double jointMotorForce(JointId id) const;
     /// The joints that broke in the last step (JointDefBase::breakForce, breakTorque), beside contactEvents().
     const JointEvents& jointEvents() const;
+    /// A rope over two pulleys (PulleyJointDef). Throws std::invalid_argument naming a bad value (as
+    /// createRevoluteJoint, and non-finite anchors, ratio <= 0, a side of zero length, a length too short).
+    JointId createPulleyJoint(const PulleyJointDef& def);
+    /// Pulley joints: each side's length now, |anchor - ground anchor| (m), A's then B's.
+    std::pair<double, double> jointPulleyLengths(JointId id) const;
+    /// Drives one body's pose relative to another (MotorJointDef). Throws std::invalid_argument naming a bad value.
+    JointId createMotorJoint(const MotorJointDef& def);
+    /// Motor joints: the target pose of B relative to A (m in A's frame, rad). Wakes the bodies.
+    void setMotorJointOffsets(JointId id, const Vec2& linearOffset, double angularOffset);
+    /// Revolute joints: the rotary spring (Hz >= 0, damping ratio >= 0; RevoluteJointDef). Wakes the bodies.
+    void setJointSpring(JointId id, bool enable, double hertz, double dampingRatio);
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

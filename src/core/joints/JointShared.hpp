@@ -27,6 +27,7 @@ struct JointConstraint {
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: fixed
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();    // lever arms from the centres of mass at the start, m
     Vec2 deltaCenter = Vec2::Zero();  // centre of B minus centre of A at the start (a world end: minus its point)
+    Vec2 groundB = Vec2::Zero();      // pulley: its ground anchor B minus B's centre at the start, m
     double deltaAngle = 0.0;  // revolute, weld: joint angle at the start, rad
     double invMassA = 0.0, invMassB = 0.0, invIA = 0.0, invIB = 0.0;
     double axialMass = 0.0;   // revolute, weld: 1 / (invIA + invIB), kg m^2; 0 when neither turns

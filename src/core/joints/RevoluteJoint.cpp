@@ -21,6 +21,11 @@ void requireLimits(double lower, double upper) {
                                     std::to_string(lower) + " > " + std::to_string(upper));
 }
 
+void requireSpring(double hertz, double dampingRatio) {
+    requireNonNegative("revolute joint springHertz", hertz);
+    requireNonNegative("revolute joint springDampingRatio", dampingRatio);
+}
+
 void requireMotor(double speed, double maxTorque) {
     requireFinite("revolute joint motorSpeed", speed);
     requireNonNegative("revolute joint maxMotorTorque", maxTorque);
@@ -71,6 +76,18 @@ void World::setJointLimits(JointId id, bool enable, double lower, double upper) 
     revoluteToChange(*impl_, joint(id), id, "setJointLimits").setLimits(enable, lower, upper);
 }
 
+void World::setJointSpring(JointId id, bool enable, double hertz, double dampingRatio) {
+    requireSpring(hertz, dampingRatio);
+    revoluteToChange(*impl_, joint(id), id, "setJointSpring").setSpring(enable, hertz, dampingRatio);
+}
+
+void RevoluteJoint::setSpring(bool enable, double hertz, double dampingRatio) {
+    enableSpring = enable;
+    springHertz = hertz;
+    springDampingRatio = dampingRatio;
+    if (!enable) springImpulse = 0.0;
+}
+
 void RevoluteJoint::setMotor(bool enable, double speed, double maxTorque) {
     enableMotor = enable;
     motorSpeed = speed;
@@ -90,10 +107,14 @@ RevoluteJoint RevoluteJoint::make(const Def& def, const BodyData& A, const BodyD
     requireFinite("revolute joint anchor", def.anchor);
     requireLimits(def.lowerAngle, def.upperAngle);
     requireMotor(def.motorSpeed, def.maxMotorTorque);
+    requireSpring(def.springHertz, def.springDampingRatio);
+    requireFinite("revolute joint springTargetAngle", def.springTargetAngle);
     RevoluteJoint j;
     j.referenceAngle = pinAt(def.anchor, A, B, localA, localB);
     j.setLimits(def.enableLimit, def.lowerAngle, def.upperAngle);
     j.setMotor(def.enableMotor, def.motorSpeed, def.maxMotorTorque);
+    j.setSpring(def.enableSpring, def.springHertz, def.springDampingRatio);
+    j.springTargetAngle = def.springTargetAngle;
     return j;
 }
 
@@ -106,10 +127,19 @@ void RevoluteJoint::prepare(JointConstraint& row, const BodyData& A, const BodyD
 void RevoluteJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const {
     applyImpulse(row, A, B, A.dq.apply(row.anchorA), B.dq.apply(row.anchorB), linearImpulse);
     // Summed from +0.0, so a motor capped at zero torque (its impulse clamped to -0.0) adds +0.0 to the spins.
-    turn(row, A, B, 0.0 + motorImpulse + lowerImpulse - upperImpulse);
+    turn(row, A, B, 0.0 + springImpulse + motorImpulse + lowerImpulse - upperImpulse);
 }
 
 void RevoluteJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias) {
+    if (enableSpring && springHertz > 0.0 && row.axialMass > 0.0) {
+        // Its own spring in both passes (as a soft distance joint): the relax pass must not take its pull back.
+        const Softness spring = makeSoftness(springHertz, springDampingRatio, 1.0 / row.invH);
+        const double C = row.deltaAngle + B.dAngle - A.dAngle - springTargetAngle;
+        const double lambda = -row.axialMass * spring.massScale * (B.w - A.w + spring.biasRate * C) -
+                              spring.impulseScale * springImpulse;
+        springImpulse += lambda;
+        turn(row, A, B, lambda);
+    }
     if (enableMotor && row.axialMass > 0.0) {
         const double Cdot = B.w - A.w - motorSpeed;
         const double old = motorImpulse;
@@ -125,7 +155,7 @@ void RevoluteJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide&
 }
 
 JointReaction RevoluteJoint::reaction(const JointEndsNow&, double invH) const {
-    return {linearImpulse * invH, (motorImpulse + lowerImpulse - upperImpulse) * invH};
+    return {linearImpulse * invH, (motorImpulse + lowerImpulse - upperImpulse + springImpulse) * invH};
 }
 
 }  // namespace physim

@@ -1,7 +1,7 @@
 #pragma once
 // The revolute joint (RevoluteJointDef), a pin: the shared point as the rod (stiff with the bias, exact in the relax
-// pass); the motor, an angular velocity row capped at maxMotorTorque; each limit a one-sided angle row, speculative
-// while apart. Internal.
+// pass); the spring, a soft angle row of its own frequency in both passes; the motor, an angular velocity row capped
+// at maxMotorTorque; each limit a one-sided angle row, speculative while apart. Internal.
 
 #include "JointShared.hpp"
 
@@ -16,12 +16,13 @@ struct RevoluteJoint {
     static constexpr bool kRow = true;
 
     double referenceAngle = 0.0;                    // angle(B) - angle(A) at creation, rad
-    bool enableLimit = false, enableMotor = false;
+    bool enableLimit = false, enableMotor = false, enableSpring = false;
     double lowerAngle = 0.0, upperAngle = 0.0;      // limits relative to the reference, rad
     double motorSpeed = 0.0, maxMotorTorque = 0.0;  // rad/s, N m
-    // Accumulated per substep: the point's (N s), the motor's and the limits' (N m s).
+    double springHertz = 0.0, springDampingRatio = 0.0, springTargetAngle = 0.0;  // Hz, 1, rad
+    // Accumulated per substep: the point's (N s), the motor's, the limits' and the spring's (N m s).
     Vec2 linearImpulse = Vec2::Zero();
-    double motorImpulse = 0.0, lowerImpulse = 0.0, upperImpulse = 0.0;
+    double motorImpulse = 0.0, lowerImpulse = 0.0, upperImpulse = 0.0, springImpulse = 0.0;
 
     static JointEnds ends(const Def& def) { return {def.bodyA, def.bodyB, false}; }
     static RevoluteJoint make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB);
@@ -29,6 +30,7 @@ struct RevoluteJoint {
     /// by the caller); turning one off forgets its impulses.
     void setMotor(bool enable, double speed, double maxTorque);
     void setLimits(bool enable, double lower, double upper);
+    void setSpring(bool enable, double hertz, double dampingRatio);
     void prepare(JointConstraint& row, const BodyData& A, const BodyData& B, double h,
                  const Softness& rodSoftness) const;
     void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;
