@@ -5,9 +5,12 @@
 #include "BodyData.hpp"
 #include "joints/DistanceJoint.hpp"
 #include "joints/MouseJoint.hpp"
+#include "joints/PrismaticJoint.hpp"
 #include "joints/RevoluteJoint.hpp"
 #include "joints/SpringJoint.hpp"
 #include "joints/WeldJoint.hpp"
+#include "joints/WheelJoint.hpp"
+#include "joints/GearJoint.hpp"
 
 #include "physim/core/Joint.hpp"
 #include "physim/core/Math.hpp"
@@ -37,7 +40,8 @@ struct JointKindList {
         return ((static_cast<std::size_t>(Kinds::kType) == i++) && ...);
     }
 };
-using JointKinds = JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint>;
+using JointKinds = JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint,
+                                 PrismaticJoint, WheelJoint, GearJoint>;
 static_assert(JointKinds::inTypeOrder(), "a joint kind's place in JointKinds is its JointType");
 
 struct JointDefinition {

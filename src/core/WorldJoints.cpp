@@ -121,6 +121,9 @@ void World::destroyJoint(JointId id) {
     const JointData& j = joint(id);
     WorldImpl& w = *impl_;
     w.requireNotStepping("destroyJoint");
+    // A gear on this joint reads a coordinate that is going: it goes first (GearJointDef).
+    if (j.type() == JointType::Revolute || j.type() == JointType::Prismatic)
+        for (const JointId gear : gearsOn(w, id.index)) destroyJoint(gear);
     w.wakeBody(j.b);
     if (j.twoBodies()) {
         w.wakeBody(j.a);
@@ -141,6 +144,10 @@ JointType World::jointType(JointId id) const { return joint(id).type(); }
 
 double World::jointLength(JointId id) const { return physim::jointLength(joint(id)); }
 double World::jointAngle(JointId id) const { return physim::jointAngle(joint(id), impl_->bodies); }
+double World::jointTranslation(JointId id) const {
+    return physim::jointTranslation(joint(id), impl_->bodies, false);
+}
+double World::jointSpeed(JointId id) const { return physim::jointTranslation(joint(id), impl_->bodies, true); }
 
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);

@@ -238,6 +238,31 @@ public:
     /// What the joint's linear motor applied to body B along its axis in the last step, N; kinds without one are
     /// refused with std::invalid_argument.
     double jointMotorForce(JointId id) const;
+    /// A slider (PrismaticJointDef). Throws std::invalid_argument naming a bad value (unknown or repeated body, two
+    /// immovable bodies, non-finite anchor, a zero or non-finite axis, lowerTranslation > upperTranslation, negative
+    /// maxMotorForce, hertz or dampingRatio).
+    JointId createPrismaticJoint(const PrismaticJointDef& def);
+    /// Prismatic joints: the limits, m, lower <= upper; the motor (m/s, N >= 0); the spring (Hz >= 0, damping ratio
+    /// >= 0, target m). Each wakes the bodies.
+    void setPrismaticLimits(JointId id, bool enable, double lower, double upper);
+    void setPrismaticMotor(JointId id, bool enable, double speed, double maxForce);
+    void setPrismaticSpring(JointId id, bool enable, double hertz, double dampingRatio, double targetTranslation);
+    /// A wheel on a suspension (WheelJointDef). Throws std::invalid_argument as createPrismaticJoint (a negative
+    /// maxMotorTorque too).
+    JointId createWheelJoint(const WheelJointDef& def);
+    /// Wheel joints: the suspension spring (Hz >= 0, damping ratio >= 0), the limits (m), the motor (rad/s,
+    /// N m >= 0). Each wakes the bodies.
+    void setWheelSpring(JointId id, bool enable, double hertz, double dampingRatio);
+    void setWheelLimits(JointId id, bool enable, double lower, double upper);
+    void setWheelMotor(JointId id, bool enable, double speed, double maxTorque);
+    /// Prismatic and wheel joints: the translation of B's anchor along the axis from A's, minus its value at
+    /// creation (m), and its rate (m/s); other kinds are refused with std::invalid_argument.
+    double jointTranslation(JointId id) const;
+    double jointSpeed(JointId id) const;
+    /// Couples two revolute or prismatic joints (GearJointDef). Throws std::invalid_argument naming a bad value
+    /// (a joint that is not live or of another kind, a ratio that is zero or not finite, joints that move more than
+    /// two bodies between them).
+    JointId createGearJoint(const GearJointDef& def);
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

@@ -27,7 +27,8 @@ struct JointConstraint {
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: fixed
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();    // lever arms from the centres of mass at the start, m
     Vec2 deltaCenter = Vec2::Zero();  // centre of B minus centre of A at the start (a world end: minus its point)
-    double deltaAngle = 0.0;  // revolute, weld: joint angle at the start, rad
+    double deltaAngle = 0.0;  // revolute, weld, prismatic: joint angle at the start, rad; gear: its error, rad or m
+    Vec2 axis = Vec2::Zero();  // prismatic, wheel: the slider's unit axis in the world at the start (turns with A)
     double invMassA = 0.0, invMassB = 0.0, invIA = 0.0, invIB = 0.0;
     double axialMass = 0.0;   // revolute, weld: 1 / (invIA + invIB), kg m^2; 0 when neither turns
     Softness softness;
