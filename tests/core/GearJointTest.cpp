@@ -66,6 +66,30 @@ TEST(GearJoint, GearTrainKeepsItsRatioOverManyTurns) {
     EXPECT_NEAR(w2 / w1, -0.5, 1e-6 * 0.5);
 }
 
+// A free gear train (no motor) turning as the gear requires keeps its kinetic energy: the gear does no work.
+TEST(GearJoint, FreeGearTrainKeepsItsEnergy) {
+    World world;
+    world.setSettings(test::awakeSettings({0.0, 0.0}));
+    const BodyId ground = test::addStaticPivot(world);
+    const BodyId small = addDisc(world, {0.0, 0.0}, 0.5), large = addDisc(world, {1.5, 0.0}, 1.0);
+    GearJointDef def;
+    def.joint1 = pin(world, ground, small, {0.0, 0.0});
+    def.joint2 = pin(world, ground, large, {1.5, 0.0});
+    def.ratio = 2.0;
+    world.createGearJoint(def);
+    world.setAngularVelocity(small, 6.0);
+    world.setAngularVelocity(large, -3.0);
+    auto energy = [&] {
+        return 0.5 * world.inertia(small) * std::pow(world.angularVelocity(small), 2) +
+               0.5 * world.inertia(large) * std::pow(world.angularVelocity(large), 2);
+    };
+    const double e0 = energy();
+    for (int i = 0; i < 600; ++i) world.step(kDt);
+    // The row's velocity error stays at rounding: nothing to take or give.
+    EXPECT_NEAR(energy() / e0, 1.0, 1e-9);
+    EXPECT_NEAR(world.angularVelocity(large), -3.0, 1e-9);
+}
+
 // A pinion of radius R on a pin over a rack on a horizontal slider: ratio -1 / R makes the rack travel R theta.
 TEST(GearJoint, RackAndPinionRollsWithoutSlip) {
     World world;
@@ -95,6 +119,38 @@ TEST(GearJoint, RackAndPinionRollsWithoutSlip) {
     EXPECT_LT(theta, -29.0);
     EXPECT_LT(std::abs(x - R * theta), 1e-6 * std::abs(x));
     EXPECT_NEAR(world.jointSpeed(rail), R * world.angularVelocity(pinion), 1e-6 * 1.5);
+}
+
+// The pinion's motor at its cap T accelerating the rack (mass m) through the gear: T = (I / R + m R) a for the
+// rack's acceleration a, and the gear's reaction on the rack is the force that accelerates it, m a along the rail.
+TEST(GearJoint, RackReactionIsTheForceThatAcceleratesIt) {
+    World world;
+    world.setSettings(test::awakeSettings());
+    const BodyId ground = test::addStaticPivot(world);
+    const double R = 0.5, T = 3.0;
+    const BodyId pinion = addDisc(world, {0.0, 0.0}, R);
+    BodyDef d;
+    d.shape = makeBox(2.0, 0.1);
+    d.position = {0.0, -R - 0.1};
+    d.collides = false;
+    const BodyId rack = world.createBody(d);
+    GearJointDef def;
+    def.joint1 = pin(world, ground, pinion, {0.0, 0.0}, -1000.0, T);
+    PrismaticJointDef slide;
+    slide.bodyA = ground;
+    slide.bodyB = rack;
+    slide.anchor = {0.0, -R - 0.1};
+    def.joint2 = world.createPrismaticJoint(slide);
+    def.ratio = -1.0 / R;
+    const JointId gear = world.createGearJoint(def);
+    for (int i = 0; i < 60; ++i) world.step(kDt);
+    const double m = world.mass(rack), a = T / (world.inertia(pinion) / R + m * R);
+    // Symplectic Euler keeps a constant acceleration's speed exact; the soft row's lag is constant, so its impulse
+    // per substep is m a h to rounding.
+    EXPECT_NEAR(world.velocity(rack).x(), -a * 1.0, 1e-6 * a);
+    const Vec2 F = world.jointReactionForce(gear);
+    EXPECT_NEAR(F.x(), -m * a, 1e-6 * m * a);
+    EXPECT_NEAR(F.y(), 0.0, 1e-9);
 }
 
 // A carrier on a pin and a planet pinned to the carrier: the gear between the carrier's angle and the planet's angle

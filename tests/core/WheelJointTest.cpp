@@ -104,6 +104,53 @@ TEST(WheelJoint, LimitsStopTheSuspension) {
     EXPECT_LT(s.world.jointTranslation(s.joint), -0.5);
 }
 
+// A chassis and its wheel free in space, turning together, the suspension displaced and the motor spinning the
+// wheel: every row's impulses are internal, so the momentum and the angular momentum about the origin stay.
+TEST(WheelJoint, FreeChassisAndWheelKeepTheirMomentumAndAngularMomentum) {
+    World world;
+    world.setSettings(test::awakeSettings({0.0, 0.0}));
+    BodyDef d;
+    d.shape = makeBox(1.0, 0.25);
+    d.collides = false;
+    const BodyId chassis = world.createBody(d);
+    d.shape = makeCircle(0.3);
+    d.position = {0.7, -0.6};
+    const BodyId wheel = world.createBody(d);
+    WheelJointDef def;
+    def.bodyA = chassis;
+    def.bodyB = wheel;
+    def.anchor = {0.7, -0.5};  // 0.1 m off the wheel's centre: its rows turn it too
+    def.axis = {0.2, 1.0};
+    def.hertz = 3.0;
+    def.enableMotor = true;
+    def.motorSpeed = -8.0;
+    def.maxMotorTorque = 0.3;
+    world.createWheelJoint(def);
+    const BodyId bodies[2] = {chassis, wheel};
+    for (const BodyId id : bodies) {
+        world.setAngularVelocity(id, 0.5);
+        world.setVelocity(id, cross(0.5, world.centerOfMass(id)) + Vec2(0.0, id == wheel ? 1.0 : 0.0));
+    }
+    auto momentum = [&] {
+        Vec2 p = Vec2::Zero();
+        for (const BodyId id : bodies) p += world.mass(id) * world.velocity(id);
+        return p;
+    };
+    auto angularMomentum = [&] {
+        double L = 0.0;
+        for (const BodyId id : bodies)
+            L += world.mass(id) * cross(world.centerOfMass(id), world.velocity(id)) +
+                 world.inertia(id) * world.angularVelocity(id);
+        return L;
+    };
+    const Vec2 p0 = momentum();
+    const double L0 = angularMomentum();
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    // Exact but for rounding over 960 substeps.
+    EXPECT_LT((momentum() - p0).norm(), 1e-12);
+    EXPECT_NEAR(angularMomentum(), L0, 1e-10);
+}
+
 TEST(WheelJoint, BadInputIsRefusedNamingTheValueAndLeavesTheWorldUnchanged) {
     World world;
     const BodyId chassis = test::addStaticPivot(world);

@@ -230,13 +230,14 @@ public:
     /// rest reports its bob's weight; zero before the first step. A spring reports its force now.
     Vec2 jointReactionForce(JointId id) const;
     /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
-    /// A): a revolute joint's motor and limits, a weld's hold on the angle; 0 for the other kinds.
+    /// A): a revolute joint's motor and limits, a weld's or prismatic joint's hold on the angle, a wheel's motor, a
+    /// gear's on B's angle; 0 for the other kinds.
     double jointReactionTorque(JointId id) const;
-    /// What the joint's motor applied to body B in the last step (its reaction acts on A), N m: revolute joints
-    /// (0 while the motor is off); other kinds are refused with std::invalid_argument.
+    /// What the joint's motor applied to body B in the last step (its reaction acts on A), N m: revolute and wheel
+    /// joints (0 while the motor is off); other kinds are refused with std::invalid_argument.
     double jointMotorTorque(JointId id) const;
-    /// What the joint's linear motor applied to body B along its axis in the last step, N; kinds without one are
-    /// refused with std::invalid_argument.
+    /// What the joint's linear motor applied to body B along its axis in the last step, N: prismatic joints (0 while
+    /// the motor is off); kinds without one are refused with std::invalid_argument.
     double jointMotorForce(JointId id) const;
     /// A slider (PrismaticJointDef). Throws std::invalid_argument naming a bad value (unknown or repeated body, two
     /// immovable bodies, non-finite anchor, a zero or non-finite axis, lowerTranslation > upperTranslation, negative
