@@ -143,9 +143,10 @@ struct WheelJointDef : JointDefBase {
 };
 
 /// Couples two existing joints, each revolute (its coordinate: the joint angle, rad) or prismatic (its
-/// translation, m), so that coordinate1 + ratio coordinate2 stays what it is at creation. The gear acts between the
-/// bodies the two joints move: each joint's bodyA static, or one joint's bodyA the other's bodyB (a revolute
-/// joint only), so that two bodies move in all. Destroying either joint destroys the gear with it.
+/// translation, m), so that coordinate1 + ratio coordinate2 stays what it is at creation: meshed gears, a rack and
+/// pinion. The gear acts between the bodies the two joints move, which must be two: say each joint's bodyA static,
+/// or a planet pinned to a carrier that the other joint turns. A prismatic joint's bodyA must be static (its axis
+/// fixed); a static body's pose counts as it is at the gear's creation. Destroying either joint destroys the gear.
 struct GearJointDef : JointDefBase {
     JointId joint1, joint2;
     double ratio = 1.0;                ///< finite, != 0 (units of coordinate1 per unit of coordinate2)

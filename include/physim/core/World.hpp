@@ -213,6 +213,7 @@ public:
     void setJointLimits(JointId id, bool enable, double lower, double upper);
     /// Moves a mouse joint's target (m); wakes its body.
     void setMouseJointTarget(JointId id, const Vec2& target);
+    /// Destroys the joint, and any gear on it (GearJointDef). Wakes its bodies.
     void destroyJoint(JointId id);
     bool contains(JointId id) const;
     std::size_t jointCount() const;
