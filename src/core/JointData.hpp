@@ -4,13 +4,13 @@
 
 #include "BodyData.hpp"
 #include "joints/DistanceJoint.hpp"
+#include "joints/GearJoint.hpp"
 #include "joints/MouseJoint.hpp"
 #include "joints/PrismaticJoint.hpp"
 #include "joints/RevoluteJoint.hpp"
 #include "joints/SpringJoint.hpp"
 #include "joints/WeldJoint.hpp"
 #include "joints/WheelJoint.hpp"
-#include "joints/GearJoint.hpp"
 
 #include "physim/core/Joint.hpp"
 #include "physim/core/Math.hpp"
