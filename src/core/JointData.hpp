@@ -4,12 +4,15 @@
 
 #include "BodyData.hpp"
 #include "joints/DistanceJoint.hpp"
+#include "joints/GearJoint.hpp"
 #include "joints/MotorJoint.hpp"
 #include "joints/MouseJoint.hpp"
+#include "joints/PrismaticJoint.hpp"
 #include "joints/PulleyJoint.hpp"
 #include "joints/RevoluteJoint.hpp"
 #include "joints/SpringJoint.hpp"
 #include "joints/WeldJoint.hpp"
+#include "joints/WheelJoint.hpp"
 
 #include "physim/core/Joint.hpp"
 #include "physim/core/Math.hpp"
@@ -39,8 +42,8 @@ struct JointKindList {
         return ((static_cast<std::size_t>(Kinds::kType) == i++) && ...);
     }
 };
-using JointKinds =
-    JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint, PulleyJoint, MotorJoint>;
+using JointKinds = JointKindList<DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint, PulleyJoint,
+                                 MotorJoint, PrismaticJoint, WheelJoint, GearJoint>;
 static_assert(JointKinds::inTypeOrder(), "a joint kind's place in JointKinds is its JointType");
 
 struct JointDefinition {

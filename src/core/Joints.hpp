@@ -19,6 +19,7 @@
 //   jointAngle(A, B)          its angle between the bodies, rad
 //   motorTorque(invH)         what its rotary motor applied over the last step, N m (on B; the reaction on A)
 //   motorForce(invH)          what its linear motor applied over the last step, N (on B along the axis)
+//   jointTranslation(A, B, localA, localB), jointSpeed(...)   a slider's translation along its axis, m, m/s
 // The functions below visit the kind once per call (a switch) for the step and the World's generic queries. Beside
 // them, creation visits the definition (WorldJoints.cpp), and a kind's own setters and effect reach its data by
 // its type.
@@ -68,6 +69,13 @@ template <class Kind, class = void>
 struct HasMotorForce : std::false_type {};
 template <class Kind>
 struct HasMotorForce<Kind, std::void_t<decltype(std::declval<const Kind&>().motorForce(0.0))>> : std::true_type {};
+
+template <class Kind, class = void>
+struct HasTranslation : std::false_type {};
+template <class Kind>
+struct HasTranslation<Kind, std::void_t<decltype(std::declval<const Kind&>().jointTranslation(
+                                std::declval<const BodyData&>(), std::declval<const BodyData&>(),
+                                std::declval<const Vec2&>(), std::declval<const Vec2&>()))>> : std::true_type {};
 
 // "a distance or spring joint": the kinds that have what `call` reads, for refusing the one at hand.
 template <template <class, class> class Has, class... Kinds>
@@ -175,6 +183,24 @@ inline double jointMotorForce(const JointData& joint, double invH) {
             using Kind = std::decay_t<decltype(kind)>;
             if constexpr (detail::HasMotorForce<Kind>::value) return kind.motorForce(invH);
             else detail::refuseKind<detail::HasMotorForce>("jointMotorForce", Kind::kName, JointKinds{});
+        },
+        joint.params);
+}
+
+/// World::jointTranslation and jointSpeed: a slider's translation along its axis and its rate (m, m/s);
+/// std::invalid_argument for a kind without one.
+inline double jointTranslation(const JointData& joint, const std::vector<BodyData>& bodies, bool rate) {
+    return std::visit(
+        [&](const auto& kind) -> double {
+            using Kind = std::decay_t<decltype(kind)>;
+            if constexpr (detail::HasTranslation<Kind>::value) {
+                const BodyData &A = bodies[joint.a], &B = bodies[joint.b];
+                return rate ? kind.jointSpeed(A, B, joint.localA, joint.localB)
+                            : kind.jointTranslation(A, B, joint.localA, joint.localB);
+            } else {
+                detail::refuseKind<detail::HasTranslation>(rate ? "jointSpeed" : "jointTranslation", Kind::kName,
+                                                           JointKinds{});
+            }
         },
         joint.params);
 }

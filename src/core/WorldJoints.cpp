@@ -139,6 +139,9 @@ void World::destroyJoint(JointId id) {
 }
 
 void WorldImpl::removeJoint(std::uint32_t index) {
+    // A gear on this joint reads a coordinate that is going: it goes first (GearJointDef).
+    if (joints[index].type() == JointType::Revolute || joints[index].type() == JointType::Prismatic)
+        for (const JointId gear : gearsOn(*this, index)) removeJoint(gear.index);
     const JointData& j = joints[index];
     wakeBody(j.b);
     if (j.twoBodies()) {
@@ -197,6 +200,10 @@ JointType World::jointType(JointId id) const { return joint(id).type(); }
 
 double World::jointLength(JointId id) const { return physim::jointLength(joint(id)); }
 double World::jointAngle(JointId id) const { return physim::jointAngle(joint(id), impl_->bodies); }
+double World::jointTranslation(JointId id) const {
+    return physim::jointTranslation(joint(id), impl_->bodies, false);
+}
+double World::jointSpeed(JointId id) const { return physim::jointTranslation(joint(id), impl_->bodies, true); }
 
 std::pair<Vec2, Vec2> World::jointAnchors(JointId id) const {
     const JointData& j = joint(id);

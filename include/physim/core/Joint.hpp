@@ -7,7 +7,12 @@
 //             an optional motor;
 //   weld      two bodies share a point and their relative angle: glued;
 //   pulley    two bodies hang from two fixed points by one rope: lengthA + ratio * lengthB stays at most its length;
-//   motor     drives one body's pose relative to another's, within a force and a torque.
+//   motor     drives one body's pose relative to another's, within a force and a torque;
+//   prismatic a slider: B moves along an axis fixed in A without turning relative to it, within optional limits,
+//             driven by an optional motor, pulled by an optional spring;
+//   wheel     a wheel on a suspension: B's anchor moves along an axis fixed in A (a spring along it) and B turns
+//             freely, driven by an optional motor;
+//   gear      couples two revolute or prismatic joints: coordinate1 + ratio coordinate2 stays constant.
 // And one force, evaluated every substep (docs/effects.md):
 //   spring    Hooke's law with damping between an anchor on each body, or from a body's anchor to a world point.
 
@@ -31,7 +36,7 @@ struct JointId {
 };
 
 /// A joint's kind (World::jointType); each has its definition below and its World::createXJoint.
-enum class JointType { Distance, Mouse, Spring, Revolute, Weld, Pulley, Motor };
+enum class JointType { Distance, Mouse, Spring, Revolute, Weld, Pulley, Motor, Prismatic, Wheel, Gear };
 
 /// What every joint definition has besides its kind's own values.
 struct JointDefBase {
@@ -150,6 +155,55 @@ struct MotorJointDef : JointDefBase {
     double maxForce = 1.0;             ///< N, >= 0
     double maxTorque = 1.0;            ///< N m, >= 0
     double correctionFactor = 0.3;     ///< in [0, 1]: the fraction of the pose error removed per substep
+};
+
+/// A slider through a world point along a world axis: B keeps its angle relative to A and its anchor moves only
+/// along the axis, which turns with A. The translation (World::jointTranslation) is axis . (anchorB - anchorA), m,
+/// 0 at creation.
+struct PrismaticJointDef : JointDefBase {
+    BodyId bodyA, bodyB;
+    Vec2 anchor = Vec2::Zero();        ///< world point, m
+    Vec2 axis = Vec2(1.0, 0.0);        ///< world direction at creation, any length > 0 (stored as a unit vector)
+    bool enableLimit = false;
+    double lowerTranslation = 0.0;     ///< m, <= upperTranslation
+    double upperTranslation = 0.0;     ///< m
+    bool enableMotor = false;
+    double motorSpeed = 0.0;           ///< m/s of B relative to A along the axis
+    double maxMotorForce = 0.0;        ///< N, >= 0
+    /// A spring along the axis pulling the translation towards targetTranslation, solved implicitly: frequency
+    /// hertz for the slider's effective mass (k = m_eff (2 pi hertz)^2), dampingRatio 1 critical.
+    bool enableSpring = false;
+    double hertz = 0.0;                ///< Hz, >= 0 (0: no spring)
+    double dampingRatio = 0.0;         ///< >= 0
+    double targetTranslation = 0.0;    ///< m
+};
+
+/// A wheel (bodyB) on a chassis (bodyA): the wheel's anchor (usually its centre) moves only along an axis fixed in
+/// the chassis, held there by a suspension spring, and the wheel turns freely, driven by an optional motor. The
+/// translation along the axis is 0 at creation, the spring's rest.
+struct WheelJointDef : JointDefBase {
+    BodyId bodyA, bodyB;
+    Vec2 anchor = Vec2::Zero();        ///< world point, m
+    Vec2 axis = Vec2(0.0, 1.0);        ///< the suspension's world direction at creation, any length > 0
+    bool enableSpring = true;
+    double hertz = 1.0;                ///< Hz, >= 0, for the effective mass along the axis (0: no spring)
+    double dampingRatio = 0.7;         ///< >= 0
+    bool enableLimit = false;
+    double lowerTranslation = 0.0;     ///< m, <= upperTranslation
+    double upperTranslation = 0.0;     ///< m
+    bool enableMotor = false;
+    double motorSpeed = 0.0;           ///< rad/s of B relative to A
+    double maxMotorTorque = 0.0;       ///< N m, >= 0
+};
+
+/// Couples two existing joints, each revolute (its coordinate: the joint angle, rad) or prismatic (its
+/// translation, m), so that coordinate1 + ratio coordinate2 stays what it is at creation: meshed gears, a rack and
+/// pinion. The gear acts between the bodies the two joints move, which must be two: say each joint's bodyA static,
+/// or a planet pinned to a carrier that the other joint turns. A prismatic joint's bodyA must be static (its axis
+/// fixed); a static body's pose counts as it is at the gear's creation. Destroying either joint destroys the gear.
+struct GearJointDef : JointDefBase {
+    JointId joint1, joint2;
+    double ratio = 1.0;                ///< finite, != 0 (units of coordinate1 per unit of coordinate2)
 };
 
 }  // namespace physim

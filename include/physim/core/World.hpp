@@ -214,6 +214,7 @@ public:
     void setJointLimits(JointId id, bool enable, double lower, double upper);
     /// Moves a mouse joint's target (m); wakes its body.
     void setMouseJointTarget(JointId id, const Vec2& target);
+    /// Destroys the joint, and any gear on it (GearJointDef). Wakes its bodies.
     void destroyJoint(JointId id);
     bool contains(JointId id) const;
     std::size_t jointCount() const;
@@ -231,14 +232,16 @@ public:
     /// rest reports its bob's weight; zero before the first step. A spring reports its force now.
     Vec2 jointReactionForce(JointId id) const;
     /// The torque the joint applied to body B in the last step besides its force's moment, N m (its reaction acts on
-    /// A): a revolute joint's spring, motor and limits, a weld's or motor joint's hold on the angle; 0 for the other
-    /// kinds. A pulley's force is its rope's pull on B; A's side pulls A along its own side, 1/ratio as hard.
+    /// A): a revolute joint's spring, motor and limits, a weld's, prismatic joint's or motor joint's hold on the angle,
+    /// a wheel's motor, a gear's on B's angle; 0 for the other kinds. A pulley's force is its rope's pull on B; A's
+    /// side pulls A along its own side, 1/ratio as hard.
     double jointReactionTorque(JointId id) const;
     /// What the joint's motor applied to body B in the last step (its reaction acts on A), N m: revolute joints
-    /// (0 while the motor is off), motor joints; other kinds are refused with std::invalid_argument.
+    /// and wheel joints (0 while the motor is off), motor joints; other kinds are refused with std::invalid_argument.
     double jointMotorTorque(JointId id) const;
-    /// What the joint's linear motor applied to body B along its axis in the last step, N (a motor joint: the size
-    /// of its force); kinds without one are refused with std::invalid_argument.
+    /// What the joint's linear motor applied to body B along its axis in the last step, N: prismatic joints (0 while
+    /// the motor is off), motor joints (the size of their force); kinds without one are refused with
+    /// std::invalid_argument.
     double jointMotorForce(JointId id) const;
     /// The joints that broke in the last step (JointDefBase::breakForce, breakTorque), beside contactEvents().
     const JointEvents& jointEvents() const;
@@ -253,6 +256,31 @@ public:
     void setMotorJointOffsets(JointId id, const Vec2& linearOffset, double angularOffset);
     /// Revolute joints: the rotary spring (Hz >= 0, damping ratio >= 0; RevoluteJointDef). Wakes the bodies.
     void setJointSpring(JointId id, bool enable, double hertz, double dampingRatio);
+    /// A slider (PrismaticJointDef). Throws std::invalid_argument naming a bad value (unknown or repeated body, two
+    /// immovable bodies, non-finite anchor, a zero or non-finite axis, lowerTranslation > upperTranslation, negative
+    /// maxMotorForce, hertz or dampingRatio).
+    JointId createPrismaticJoint(const PrismaticJointDef& def);
+    /// Prismatic joints: the limits, m, lower <= upper; the motor (m/s, N >= 0); the spring (Hz >= 0, damping ratio
+    /// >= 0, target m). Each wakes the bodies.
+    void setPrismaticLimits(JointId id, bool enable, double lower, double upper);
+    void setPrismaticMotor(JointId id, bool enable, double speed, double maxForce);
+    void setPrismaticSpring(JointId id, bool enable, double hertz, double dampingRatio, double targetTranslation);
+    /// A wheel on a suspension (WheelJointDef). Throws std::invalid_argument as createPrismaticJoint (a negative
+    /// maxMotorTorque too).
+    JointId createWheelJoint(const WheelJointDef& def);
+    /// Wheel joints: the suspension spring (Hz >= 0, damping ratio >= 0), the limits (m), the motor (rad/s,
+    /// N m >= 0). Each wakes the bodies.
+    void setWheelSpring(JointId id, bool enable, double hertz, double dampingRatio);
+    void setWheelLimits(JointId id, bool enable, double lower, double upper);
+    void setWheelMotor(JointId id, bool enable, double speed, double maxTorque);
+    /// Prismatic and wheel joints: the translation of B's anchor along the axis from A's, minus its value at
+    /// creation (m), and its rate (m/s); other kinds are refused with std::invalid_argument.
+    double jointTranslation(JointId id) const;
+    double jointSpeed(JointId id) const;
+    /// Couples two revolute or prismatic joints (GearJointDef). Throws std::invalid_argument naming a bad value
+    /// (a joint that is not live or of another kind, a ratio that is zero or not finite, joints that move more than
+    /// two bodies between them).
+    JointId createGearJoint(const GearJointDef& def);
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

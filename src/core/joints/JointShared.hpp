@@ -28,11 +28,12 @@ struct JointConstraint {
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();    // lever arms from the centres of mass at the start, m
     Vec2 deltaCenter = Vec2::Zero();  // centre of B minus centre of A at the start (a world end: minus its point)
     Vec2 groundB = Vec2::Zero();      // pulley: its ground anchor B minus B's centre at the start, m
-    double deltaAngle = 0.0;  // revolute, weld: joint angle at the start, rad
+    double deltaAngle = 0.0;  // revolute, weld, prismatic: joint angle at the start, rad; gear: its error, rad or m
+    Vec2 axis = Vec2::Zero();  // prismatic, wheel: the slider's unit axis in the world at the start (turns with A)
     double invMassA = 0.0, invMassB = 0.0, invIA = 0.0, invIB = 0.0;
-    double axialMass = 0.0;   // revolute, weld: 1 / (invIA + invIB), kg m^2; 0 when neither turns
+    double axialMass = 0.0;   // revolute, weld, wheel: 1 / (invIA + invIB), kg m^2; 0 when neither turns
     Softness softness;
-    double maxImpulse = 0.0;  // mouse: per substep, N s; revolute motor: N m s per substep
+    double maxImpulse = 0.0;  // mouse, prismatic motor: per substep, N s; revolute, wheel motor: N m s per substep
     double invH = 0.0;        // 1 / substep, 1/s
 };
 
