@@ -122,6 +122,7 @@ inline void prepareJoint(JointConstraint& row, const JointData& joint, const std
         row.deltaCenter = B.center - A.center;
     }
     detail::visitRow(joint.params, [&](const auto& kind) { kind.prepare(row, A, B, h, rodSoftness); });
+    row.inLanes = jointInLanes(joint);
 }
 
 inline void warmStartJoint(const JointConstraint& row, const JointData& joint, SolverBody* states) {

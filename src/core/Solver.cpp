@@ -28,6 +28,7 @@ namespace {
 constexpr std::size_t kBodyGrain = 256;
 constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
 constexpr std::size_t kJointGrain = 16;  // a joint colour's pin blocks and other rows
+constexpr std::size_t kJointPrepareGrain = 256;  // joint rows prepared again in a kept layout
 // Gathering and writing back bodies asks for the record of the body this far ahead in the group.
 constexpr std::size_t kPrefetchBodies = 4;
 
@@ -134,7 +135,10 @@ void Solver::solve(WorldImpl& w) {
     const bool keep = !graph_.stale && byIsland == graph_.laidOutByIsland;
     if (keep && !graph_.jointConstraints.empty()) {
         StageTimer timer(w.profile, Stage::Solve);
-        for (JointConstraint& row : graph_.jointConstraints) row = jointRow(w, row.joint, h, rodSoftness);
+        std::vector<JointConstraint>& rows = graph_.jointConstraints;
+        w.executor.parallelFor(rows.size(), kJointPrepareGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t k = begin; k < end; ++k) rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
+        });
     }
     std::size_t rowCount = graph_.rowContacts.size();
     if (!keep) {
@@ -156,10 +160,10 @@ void Solver::solve(WorldImpl& w) {
     w.profile.rowsLaidOut = !keep && (rowCount > 0 || !graph_.jointConstraints.empty());
     const std::size_t groups = graph_.groupBodyStart.size() - 1;
     if (graph_.jointConstraints.empty()) {
-        sortJointRows(w);  // no rows: nothing to time (a step without rows runs no Solve stage)
+        sortJointRows();  // no rows: nothing to time (a step without rows runs no Solve stage)
     } else {
         StageTimer timer(w.profile, Stage::Solve);
-        sortJointRows(w);
+        sortJointRows();
     }
 
     contactPassSettings_.h = h;
@@ -212,7 +216,7 @@ void Solver::solve(WorldImpl& w) {
     }
 }
 
-void Solver::sortJointRows(const WorldImpl& w) {
+void Solver::sortJointRows() {
     const std::vector<std::uint32_t>& segments = graph_.jointSegmentStart;
     pinBlockStart_.assign(segments.size(), 0);
     otherJointStart_.assign(segments.size(), 0);
@@ -222,7 +226,7 @@ void Solver::sortJointRows(const WorldImpl& w) {
         if (s % kSegments < kColours) {
             for (std::uint32_t r = segments[s]; r < segments[s + 1]; ++r) {
                 const JointConstraint& row = graph_.jointConstraints[r];
-                if (jointInLanes(w.joints[row.joint])) pinRows_.push_back(&row);
+                if (row.inLanes) pinRows_.push_back(&row);
                 else otherJointRows_.push_back(r);
             }
             while (pinRows_.size() % kLanes != 0) pinRows_.push_back(nullptr);  // the colour's last block's free lanes

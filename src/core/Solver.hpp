@@ -49,7 +49,7 @@ private:
     std::size_t solveGroup(WorldImpl& w, std::size_t g, bool timed, int worker);
 
     /// This step's split of each joint colour into pins solved in lanes and the other rows (Solver.cpp).
-    void sortJointRows(const WorldImpl& w);
+    void sortJointRows();
 
     ConstraintGraph graph_;
     std::vector<SolverBody> solverBodies_;       // a still body, then one per awake body
