@@ -15,6 +15,8 @@
 // The scene's chain is a b2ChainShape, whose solid side is on the right of its direction (physim's on the left),
 // so it is given the points in reverse, with ghost vertices continuing its end pieces straight on. Its pieces carry
 // the same 1 cm skin as polygons, so the chain is lowered by it: bodies rest where they rest on physim's.
+// A scene's pins are b2RevoluteJoints made with Initialize at the pin's world point; a scene without collisions
+// gives every fixture a mask of nothing.
 
 #include "Engine.hpp"
 
@@ -32,12 +34,20 @@ constexpr double kCapsuleCore = 0.0025;  // m, half the height of a capsule's st
 
 class Box2dRun final : public EngineRun {
 public:
-    explicit Box2dRun(const Scene& scene) : world_(b2Vec2(0.0f, static_cast<float>(kGravity))) {
+    explicit Box2dRun(const Scene& scene)
+        : world_(b2Vec2(0.0f, static_cast<float>(kGravity))), collides_(scene.collisions) {
         world_.SetAllowSleeping(false);
-        for (const ShapeSpec& s : scene.statics) add(s, b2_staticBody);
+        std::vector<b2Body*> statics;
+        for (const ShapeSpec& s : scene.statics) statics.push_back(add(s, b2_staticBody));
         if (!scene.chain.empty()) addChain(scene.chain);
         bodies_.reserve(scene.dynamics.size());
         for (const ShapeSpec& s : scene.dynamics) bodies_.push_back(add(s, b2_dynamicBody));
+        auto body = [&](const BodyRef& r) { return r.isStatic ? statics[r.index] : bodies_[r.index]; };
+        for (const PinSpec& p : scene.pins) {
+            b2RevoluteJointDef jd;
+            jd.Initialize(body(p.a), body(p.b), b2Vec2(static_cast<float>(p.x), static_cast<float>(p.y)));
+            world_.CreateJoint(&jd);  // owned by world_
+        }
     }
 
     void step() override {
@@ -83,6 +93,7 @@ private:
         }
         fd.density = static_cast<float>(density);
         fd.friction = static_cast<float>(kFriction);
+        if (!collides_) fd.filter.maskBits = 0;
         body->CreateFixture(&fd);
         if (s.isCapsule() && type == b2_dynamicBody) {
             const CapsuleMass m = capsuleMass(s.radius, s.halfLength);
@@ -111,6 +122,7 @@ private:
     }
 
     b2World world_;
+    bool collides_ = true;
     std::vector<b2Body*> bodies_;  // not owning: world_ frees them
 };
 

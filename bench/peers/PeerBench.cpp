@@ -52,6 +52,9 @@ struct Row {
     // Scenes on a chain, last repeat: the least of (a body's centre above the chain at its x, less its radius), m,
     // negative by the deepest overlap; and how many centres ended below the chain (fell through).
     double minClearance = kNone, belowGround = kNone;
+    // Scenes with pins, last repeat: the lowest dynamic body's centre height at the last step, m (how far the
+    // joints stretched under the weight they hold).
+    double lowestY = kNone;
     std::map<std::string, double> stageSeconds;  // summed over every timed step of every repeat
     int timedSteps = 0;
 
@@ -69,7 +72,7 @@ struct Row {
               << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] "
                  "[--substeps a,b,...] [--json FILE] [--profile]\n"
               << "  --scenes   large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids, pyramid_grid<R> "
-                 "(R rows of 20 base-10 pyramids), chain_terrain, scaling (grids of 1k to 21k boxes, for the fit), "
+                 "(R rows of 20 base-10 pyramids), chain_terrain, joint_grid, scaling (grids of 1k to 21k boxes, for the fit), "
                  "all (default)\n"
               << "  --engines  physim and the peers this build has (default: all of them)\n"
               << "  --repeats  runs of each scene and engine, n >= 1 (default 3)\n"
@@ -173,6 +176,13 @@ void measure(const Scene& scene, const Options& o, bool lastRepeat, Row& row) {
             if (!(above >= 0.0)) row.belowGround += 1.0;
         }
     }
+    if (lastRepeat && !scene.pins.empty()) {
+        row.lowestY = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < scene.dynamics.size(); ++i) {
+            const double y = run->position(i).y;
+            row.lowestY = std::isnan(y) || y < row.lowestY ? y : row.lowestY;  // NaN (blown up) shows
+        }
+    }
     if (!lastRepeat || scene.tops.empty()) return;
 
     row.topDrop = -std::numeric_limits<double>::infinity();  // a top that rose has a negative drop
@@ -231,6 +241,22 @@ void printGroundCheck(const std::vector<Row>& rows) {
         std::cout << "  " << r.scene << " " << r.engine->name << " x" << r.engine->threads << ": lowest "
                   << fixed(r.minClearance, 4) << ", " << fixed(r.belowGround, 0) << " of " << r.bodies
                   << " below the chain\n";
+    }
+}
+
+// The jointed scenes' stiffness: where the lowest body hangs at the last step (it starts at the lowest ShapeSpec's y).
+void printLowest(const std::vector<Row>& rows, const std::vector<Scene>& scenes) {
+    bool printed = false;
+    for (const Row& r : rows) {
+        if (std::isnan(r.lowestY)) continue;
+        if (!printed) std::cout << "\nLowest body at the last step (its centre's y, m; where it started):\n";
+        printed = true;
+        double start = std::numeric_limits<double>::infinity();
+        for (const Scene& s : scenes)
+            if (s.name == r.scene)
+                for (const ShapeSpec& d : s.dynamics) start = std::min(start, d.y);
+        std::cout << "  " << r.scene << " " << r.engine->name << " x" << r.engine->threads << ": "
+                  << fixed(r.lowestY, 3) << " (from " << fixed(start, 3) << ")\n";
     }
 }
 
@@ -324,7 +350,8 @@ void writeJson(std::ostream& out, const std::vector<Row>& rows) {
             << ", \"ms_per_step_median\": " << jsonNumber(r.median()) << ", \"top_drop\": " << jsonNumber(r.topDrop)
             << ", \"top_drift\": " << jsonNumber(r.topDrift) << ", \"max_sideways\": " << jsonNumber(r.maxSideways)
             << ", \"min_clearance\": " << jsonNumber(r.minClearance)
-            << ", \"below_ground\": " << jsonNumber(r.belowGround) << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
+            << ", \"below_ground\": " << jsonNumber(r.belowGround) << ", \"lowest_y\": " << jsonNumber(r.lowestY)
+            << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
     }
     out << "]\n";
 }
@@ -390,6 +417,7 @@ int main(int argc, char** argv) {
 
     printTable(rows, peers.engines);
     printGroundCheck(rows);
+    printLowest(rows, scenes);
     if (o.profile) printProfile(rows);
     printFit(rows, engines);
     printSubstepFit(rows);

@@ -4,6 +4,7 @@
 
 #include <string>
 #include <thread>
+#include <vector>
 
 namespace peers {
 
@@ -11,11 +12,21 @@ namespace {
 
 class PhysimRun final : public EngineRun {
 public:
-    PhysimRun(const Scene& scene, int threads, int substeps) : world_(settings(threads, substeps)) {
-        for (const ShapeSpec& s : scene.statics) add(s, physim::BodyType::Static);
+    PhysimRun(const Scene& scene, int threads, int substeps)
+        : world_(settings(threads, substeps)), collides_(scene.collisions) {
+        std::vector<physim::BodyId> statics;
+        for (const ShapeSpec& s : scene.statics) statics.push_back(add(s, physim::BodyType::Static));
         if (!scene.chain.empty()) addChain(scene.chain);
         ids_.reserve(scene.dynamics.size());
         for (const ShapeSpec& s : scene.dynamics) ids_.push_back(add(s, physim::BodyType::Dynamic));
+        auto body = [&](const BodyRef& r) { return r.isStatic ? statics[r.index] : ids_[r.index]; };
+        for (const PinSpec& p : scene.pins) {
+            physim::RevoluteJointDef d;
+            d.bodyA = body(p.a);
+            d.bodyB = body(p.b);
+            d.anchor = {p.x, p.y};
+            world_.createRevoluteJoint(d);
+        }
     }
 
     void step() override { world_.step(kTimeStep); }
@@ -58,6 +69,7 @@ private:
         d.density = kDensity;
         d.staticFriction = kFriction;
         d.dynamicFriction = kFriction;
+        d.collides = collides_;
         return world_.createBody(d);
     }
 
@@ -72,6 +84,7 @@ private:
     }
 
     physim::World world_;
+    bool collides_ = true;
     std::vector<physim::BodyId> ids_;
 };
 

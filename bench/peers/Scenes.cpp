@@ -120,6 +120,38 @@ Scene chainTerrainScene() {
     return s;
 }
 
+Scene jointGridScene() {
+    constexpr int kSide = 100;
+    constexpr int kFirstStatic = kSide / 2 - 3, kLastStatic = kSide / 2 + 3;  // top row: 7 static discs
+    Scene s;
+    s.name = "joint_grid";
+    s.collisions = false;
+    // Bodies column by column, each column top down (Box2D's order of creation); where each one went.
+    std::vector<BodyRef> at(static_cast<std::size_t>(kSide * kSide));
+    for (int k = 0; k < kSide; ++k)
+        for (int i = 0; i < kSide; ++i) {
+            ShapeSpec disc;
+            disc.x = k;
+            disc.y = -i;
+            disc.radius = 0.4;
+            const bool fixed = i == 0 && k >= kFirstStatic && k <= kLastStatic;
+            std::vector<ShapeSpec>& list = fixed ? s.statics : s.dynamics;
+            at[static_cast<std::size_t>(k * kSide + i)] = {fixed, list.size()};
+            list.push_back(disc);
+        }
+    auto pin = [&](int k0, int i0, int k1, int i1) {
+        const BodyRef a = at[static_cast<std::size_t>(k0 * kSide + i0)], b = at[static_cast<std::size_t>(k1 * kSide + i1)];
+        if (a.isStatic && b.isStatic) return;
+        s.pins.push_back({a, b, 0.5 * (k0 + k1), -0.5 * (i0 + i1)});
+    };
+    for (int k = 0; k < kSide; ++k)
+        for (int i = 0; i < kSide; ++i) {
+            if (i > 0) pin(k, i - 1, k, i);  // to the disc above
+            if (k > 0) pin(k - 1, i, k, i);  // to the disc on the left
+        }
+    return s;
+}
+
 double chainHeightAt(const Scene& scene, double x) {
     const std::vector<ChainPoint>& c = scene.chain;
     if (c.size() < 2 || !(x >= c.front().x && x <= c.back().x)) return std::numeric_limits<double>::quiet_NaN();
@@ -143,17 +175,18 @@ Scene makeScene(const std::string& name) {
     if (name == "circles1000") return circlesScene();
     if (name == "many_pyramids") return pyramidGridScene(name, 19);
     if (name == "chain_terrain") return chainTerrainScene();
+    if (name == "joint_grid") return jointGridScene();
     const int base = numberAfter("pyramid", name);
     if (base >= 1 && base <= 400) return pyramidScene(name, base);
     const int rows = numberAfter("pyramid_grid", name);
     if (rows >= 1 && rows <= 100) return pyramidGridScene(name, rows);
     throw std::invalid_argument("unknown scene '" + name +
                                 "' (large_pyramid, pyramid<N> with N in 1..400, circles1000, many_pyramids, "
-                                "pyramid_grid<R> with R in 1..100, chain_terrain, scaling, all)");
+                                "pyramid_grid<R> with R in 1..100, chain_terrain, joint_grid, scaling, all)");
 }
 
 std::vector<std::string> defaultScenes() {
-    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids", "chain_terrain"};
+    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids", "chain_terrain", "joint_grid"};
 }
 
 std::vector<std::string> scalingScenes() {

@@ -34,6 +34,20 @@ struct ChainPoint {
     double y = 0.0;
 };
 
+/// A body of a scene: scene.statics[index] or scene.dynamics[index].
+struct BodyRef {
+    bool isStatic = false;
+    std::size_t index = 0;
+};
+
+/// A revolute joint (a pin) between two of the scene's bodies at a world point (x, y), m; never two static ones
+/// (physim refuses such a joint, Box2D ignores it: scenes leave it out for both).
+struct PinSpec {
+    BodyRef a, b;
+    double x = 0.0;
+    double y = 0.0;
+};
+
 struct Scene {
     std::string name;
     std::vector<ShapeSpec> statics;
@@ -46,6 +60,10 @@ struct Scene {
     std::vector<std::size_t> tops;
     /// Rows of base-10 pyramids: their step times enter the fit of step time against body count.
     bool pyramidGrid = false;
+    /// Pins between bodies; scenes with some report their lowest dynamic body's height at the end (stiffness).
+    std::vector<PinSpec> pins;
+    /// false: no body touches another (no shape collides), as in a scene that measures joints alone.
+    bool collisions = true;
 };
 
 /// The pyramid of base `base` (base * (base + 1) / 2 boxes of half-size 0.5) standing on the ground at
@@ -64,6 +82,12 @@ Scene pyramidGridScene(const std::string& name, int rows);
 /// (0.25 m each, a sum of three sines, steep at both ends), where they roll into its valleys.
 Scene chainTerrainScene();
 
+/// joint_grid, Box2D's benchmark of that name: 100 x 100 discs (radius 0.4 m) 1 m apart, column k at x = k, row i
+/// at y = -i, each pinned to the disc below and the disc to its right halfway between them; the discs of row 0 in
+/// columns 47 to 53 are static, and the grid hangs from them. No collisions. Box2D's six pins between two of those
+/// static discs are left out.
+Scene jointGridScene();
+
 /// The height of the scene's chain at x (m), linear between its points; NaN outside it or without a chain.
 double chainHeightAt(const Scene& scene, double x);
 
@@ -76,7 +100,7 @@ struct CapsuleMass {
 CapsuleMass capsuleMass(double radius, double halfLength);
 
 /// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids,
-/// pyramid_grid<R> (R in 1..100 rows) or chain_terrain. Throws std::invalid_argument naming an unknown one.
+/// pyramid_grid<R> (R in 1..100 rows), chain_terrain or joint_grid. Throws std::invalid_argument naming an unknown one.
 Scene makeScene(const std::string& name);
 
 /// What `--scenes` accepts besides scene names: `all` (the default scenes and the scaling set), and

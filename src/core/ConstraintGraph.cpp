@@ -105,6 +105,9 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             if (byIsland) joinBodies(A.awakeIndex, B.awakeIndex);
             ++rowCount;
         }
+        // Joint rows are coloured the same way, with colours of their own (jointSegment holds the colour for now).
+        bodyColours.assign(n, 0);
+        jointSegment.clear();
         for (std::uint32_t j = 0; j < w.joints.size(); ++j) {
             const JointData& joint = w.joints[j];
             if (!joint.alive || !joint.isRow()) continue;
@@ -112,6 +115,21 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             if (!active) continue;
             const JointConstraint row = jointRow(w, j, h, rodSoftness);
             jointConstraints.push_back(row);
+            auto used = [&](std::uint32_t body) -> std::uint32_t* {
+                const BodyData& b = w.bodies[body];
+                const bool moves = b.type == BodyType::Dynamic && b.awakeIndex != kNullIndex;
+                return moves ? &bodyColours[static_cast<std::size_t>(b.awakeIndex)] : nullptr;
+            };
+            std::uint32_t* const usedA = joint.twoBodies() ? used(joint.a) : nullptr;
+            std::uint32_t* const usedB = used(joint.b);
+            const std::uint32_t free = ~((usedA ? *usedA : 0u) | (usedB ? *usedB : 0u)) & kAllColours;
+            std::uint32_t colour = kColours;
+            if (free != 0 && jointColoured(joint)) {
+                colour = static_cast<std::uint32_t>(__builtin_ctz(free));
+                if (usedA) *usedA |= std::uint32_t{1} << colour;
+                if (usedB) *usedB |= std::uint32_t{1} << colour;
+            }
+            jointSegment.push_back(colour);
             keepRowsWarmStart(row.indexA);
             keepRowsWarmStart(row.indexB);
             if (byIsland) joinBodies(row.indexA, row.indexB);
@@ -178,22 +196,29 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         }
         if (w.executor.threads() == 2) markShareHeads(n);
         else shareHeads.clear();
-        // Joint rows sorted by group, each group's in the joints' order.
+        // Joint rows sorted by group, then colour (the overflow last), each segment's in the joints' order.
+        for (std::size_t k = 0; k < jointConstraints.size(); ++k) {
+            const JointConstraint& row = jointConstraints[k];
+            const std::size_t group =
+                bodyGroup[static_cast<std::size_t>(row.indexB != kNullIndex ? row.indexB : row.indexA)];
+            jointSegment[k] += static_cast<std::uint32_t>(group * kSegments);
+        }
+        jointSegmentStart.assign(groups * kSegments + 1, 0);
+        for (const std::uint32_t s : jointSegment) ++jointSegmentStart[s + 1];
+        for (std::size_t s = 0; s + 1 < jointSegmentStart.size(); ++s) jointSegmentStart[s + 1] += jointSegmentStart[s];
         groupJointStart.assign(groups + 1, 0);
-        auto groupOfJoint = [&](const JointConstraint& row) {
-            return bodyGroup[static_cast<std::size_t>(row.indexB != kNullIndex ? row.indexB : row.indexA)];
-        };
-        for (const JointConstraint& row : jointConstraints) ++groupJointStart[groupOfJoint(row) + 1];
-        for (std::size_t g = 0; g < groups; ++g) groupJointStart[g + 1] += groupJointStart[g];
+        for (std::size_t g = 0; g <= groups; ++g) groupJointStart[g] = jointSegmentStart[g * kSegments];
         groupedJoints.resize(jointConstraints.size());
-        segmentFill.assign(groupJointStart.begin(), groupJointStart.end() - 1);
-        for (const JointConstraint& row : jointConstraints) groupedJoints[segmentFill[groupOfJoint(row)]++] = row;
+        segmentFill.assign(jointSegmentStart.begin(), jointSegmentStart.end() - 1);
+        for (std::size_t k = 0; k < jointConstraints.size(); ++k)
+            groupedJoints[segmentFill[jointSegment[k]]++] = jointConstraints[k];
         jointConstraints.swap(groupedJoints);
     } else {
         shareHeads.clear();
         segmentStart.assign(groups * kSegments + 1, 0);
         blockStart.assign(groups * kSegments + 1, 0);
         groupJointStart.assign(groups + 1, 0);
+        jointSegmentStart.assign(groups * kSegments + 1, 0);
     }
 
     return rowCount;

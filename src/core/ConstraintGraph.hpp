@@ -48,6 +48,9 @@ struct ConstraintGraph {
     std::vector<std::uint32_t> groupBodies;      // awake indices, group by group
     std::vector<std::uint32_t> groupBodyStart;   // group g's bodies: [groupBodyStart[g], groupBodyStart[g + 1])
     std::vector<std::uint32_t> groupJointStart;  // group g's joint rows in jointConstraints, likewise
+    // Joint rows of segment s in jointConstraints: [jointSegmentStart[s], jointSegmentStart[s + 1]). Colours are
+    // the joint rows' own (their passes run apart from the contacts'); the overflow is solved row after row.
+    std::vector<std::uint32_t> jointSegmentStart;
     std::vector<RowRef> rowContacts;             // the contact of each row, segment by segment
     std::vector<std::uint32_t> segmentStart;     // rows of segment s: [segmentStart[s], segmentStart[s + 1])
     std::vector<std::uint32_t> blockStart;       // blocks of segment s: [blockStart[s], blockStart[s + 1])
@@ -69,6 +72,7 @@ struct ConstraintGraph {
     std::vector<std::uint32_t> sortedRows;       // the coloured rows (as rowRefs' indices) by first body
     std::vector<JointConstraint> jointConstraints;  // group by group
     std::vector<JointConstraint> groupedJoints;
+    std::vector<std::uint32_t> jointSegment;     // per joint row while laying out: its segment
     // The layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their order,
     // the bodies' types and detection, which contacts have points), the joints and the thread count: while none of
     // that changes, a step keeps the last one's (Solver::solve). Whatever changes it sets stale.

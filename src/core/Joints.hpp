@@ -14,6 +14,9 @@
 // solve adds to them in place, and they are the next step's warm start, so nothing is stored after the last pass.
 // A kind that is not a row (a spring: a force, effects/Springs.cpp) provides, instead of the row's functions,
 //   addTo, removeFrom(effects, joint)  hand the joint to the effect that applies its force, and take it back
+// A row's kind may also say `static constexpr bool kSerial = true`: its rows are then solved one after another in the
+// joints' order, after the joint colours (a row that reaches bodies besides its two ends must). The others are
+// coloured like contacts (ConstraintGraph.cpp) and solved a colour at a time, on the team's threads.
 // A kind may also provide (World::jointLength, jointAngle, jointMotorTorque and jointMotorForce refuse the others):
 //   jointLength()             its length, m
 //   jointAngle(A, B)          its angle between the bodies, rad
@@ -62,6 +65,11 @@ struct HasAngle<Kind, std::void_t<decltype(std::declval<const Kind&>().jointAngl
     : std::true_type {};
 
 template <class Kind, class = void>
+struct IsSerial : std::false_type {};
+template <class Kind>
+struct IsSerial<Kind, std::enable_if_t<Kind::kSerial>> : std::true_type {};
+
+template <class Kind, class = void>
 struct HasMotorTorque : std::false_type {};
 template <class Kind>
 struct HasMotorTorque<Kind, std::void_t<decltype(std::declval<const Kind&>().motorTorque(0.0))>> : std::true_type {};
@@ -87,6 +95,18 @@ template <template <class, class> class Has, class... Kinds>
 }
 }  // namespace detail
 
+/// Whether the joint's row may share a colour with others (it reads and writes only its two ends' records).
+inline bool jointColoured(const JointData& joint) {
+    return std::visit([](const auto& kind) { return !detail::IsSerial<std::decay_t<decltype(kind)>>::value; },
+                      joint.params);
+}
+
+/// Whether the joint's row is a pin solved in lanes (PinLanes.hpp).
+inline bool jointInLanes(const JointData& joint) {
+    const RevoluteJoint* pin = std::get_if<RevoluteJoint>(&joint.params);
+    return pin != nullptr && pin->pointOnly();
+}
+
 inline void prepareJoint(JointConstraint& row, const JointData& joint, const std::vector<BodyData>& bodies,
                          double h, const Softness& rodSoftness) {
     const BodyData& B = bodies[joint.b];
@@ -110,6 +130,7 @@ inline void prepareJoint(JointConstraint& row, const JointData& joint, const std
         row.deltaCenter = B.center - A.center;
     }
     detail::visitRow(joint.params, [&](const auto& kind) { kind.prepare(row, A, B, h, rodSoftness); });
+    row.inLanes = jointInLanes(joint);
 }
 
 inline void warmStartJoint(const JointConstraint& row, const JointData& joint, SolverBody* states) {

@@ -27,6 +27,8 @@ namespace {
 
 constexpr std::size_t kBodyGrain = 256;
 constexpr std::size_t kBlockGrain = 16;  // blocks of kLanes rows
+constexpr std::size_t kJointGrain = 16;  // a joint colour's pin blocks and other rows
+constexpr std::size_t kJointPrepareGrain = 256;  // joint rows prepared again in a kept layout
 // Gathering and writing back bodies asks for the record of the body this far ahead in the group.
 constexpr std::size_t kPrefetchBodies = 4;
 
@@ -133,7 +135,10 @@ void Solver::solve(WorldImpl& w) {
     const bool keep = !graph_.stale && byIsland == graph_.laidOutByIsland;
     if (keep && !graph_.jointConstraints.empty()) {
         StageTimer timer(w.profile, Stage::Solve);
-        for (JointConstraint& row : graph_.jointConstraints) row = jointRow(w, row.joint, h, rodSoftness);
+        std::vector<JointConstraint>& rows = graph_.jointConstraints;
+        w.executor.parallelFor(rows.size(), kJointPrepareGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t k = begin; k < end; ++k) rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
+        });
     }
     std::size_t rowCount = graph_.rowContacts.size();
     if (!keep) {
@@ -154,6 +159,12 @@ void Solver::solve(WorldImpl& w) {
     graph_.laidOutByIsland = byIsland;
     w.profile.rowsLaidOut = !keep && (rowCount > 0 || !graph_.jointConstraints.empty());
     const std::size_t groups = graph_.groupBodyStart.size() - 1;
+    if (graph_.jointConstraints.empty()) {
+        sortJointRows();  // no rows: nothing to time (a step without rows runs no Solve stage)
+    } else {
+        StageTimer timer(w.profile, Stage::Solve);
+        sortJointRows();
+    }
 
     contactPassSettings_.h = h;
     contactPassSettings_.invH = invH;
@@ -203,6 +214,27 @@ void Solver::solve(WorldImpl& w) {
         if ((enlarged_[i] & 2) || b.detection != CollisionDetection::Discrete) enlarged_[i] |= 4;
         else w.moveProxies(b);
     }
+}
+
+void Solver::sortJointRows() {
+    const std::vector<std::uint32_t>& segments = graph_.jointSegmentStart;
+    pinBlockStart_.assign(segments.size(), 0);
+    otherJointStart_.assign(segments.size(), 0);
+    pinRows_.clear();
+    otherJointRows_.clear();
+    for (std::size_t s = 0; s + 1 < segments.size(); ++s) {
+        if (s % kSegments < kColours) {
+            for (std::uint32_t r = segments[s]; r < segments[s + 1]; ++r) {
+                const JointConstraint& row = graph_.jointConstraints[r];
+                if (row.inLanes) pinRows_.push_back(&row);
+                else otherJointRows_.push_back(r);
+            }
+            while (pinRows_.size() % kLanes != 0) pinRows_.push_back(nullptr);  // the colour's last block's free lanes
+        }
+        pinBlockStart_[s + 1] = static_cast<std::uint32_t>(pinRows_.size() / kLanes);
+        otherJointStart_[s + 1] = static_cast<std::uint32_t>(otherJointRows_.size());
+    }
+    pinBlocks_.resize(pinRows_.size() / kLanes);  // each group packs its own (solveGroup)
 }
 
 void Solver::startBody(WorldImpl& w, std::size_t i) {
@@ -300,9 +332,27 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         return share == 0 ? (head ? std::make_pair(cut, mid) : std::make_pair(first, cut))
                           : (head ? std::make_pair(mid, cut) : std::make_pair(cut, end));
     };
-    auto pass = [&](auto&& rowsWork, auto&& jointWork) {
-        for (std::uint32_t j = graph_.groupJointStart[g]; j < graph_.groupJointStart[g + 1]; ++j)
+    // Joint rows: colour by colour, each colour's pin blocks (pinsWork(begin, end)) and other rows in parallel,
+    // then the joints' overflow row after row.
+    auto jointPass = [&](auto&& pinsWork, auto&& jointWork) {
+        for (std::size_t col = 0; col < kColours; ++col) {
+            const std::size_t s = g * kSegments + col;
+            const std::size_t firstBlock = pinBlockStart_[s], blocks = pinBlockStart_[s + 1] - firstBlock;
+            const std::size_t firstOther = otherJointStart_[s], others = otherJointStart_[s + 1] - firstOther;
+            w.executor.parallelFor(blocks + others, kJointGrain, [&](std::size_t begin, std::size_t end, int) {
+                if (begin < blocks) pinsWork(firstBlock + begin, firstBlock + std::min(end, blocks));
+                for (std::size_t k = std::max(begin, blocks); k < end; ++k) {
+                    JointConstraint& row = graph_.jointConstraints[otherJointRows_[firstOther + k - blocks]];
+                    jointWork(row, w.joints[row.joint]);
+                }
+            });
+        }
+        const std::uint32_t* const overflow = graph_.jointSegmentStart.data() + g * kSegments + kColours;
+        for (std::uint32_t j = overflow[0]; j < overflow[1]; ++j)
             jointWork(graph_.jointConstraints[j], w.joints[graph_.jointConstraints[j].joint]);
+    };
+    auto pass = [&](auto&& rowsWork, auto&& pinsWork, auto&& jointWork) {
+        jointPass(pinsWork, jointWork);
         if (ordered) {
             w.executor.forLoopsInOrder(colourCount, [&](std::size_t loop, int share, bool head) {
                 const auto [begin, end] = halfOf(loop, share, head);
@@ -340,6 +390,12 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             }
     };
     const bool storeInRelax = w.settings.relaxIterations > 0;
+    // Block k's pins: kLanes, but for a colour's last block, whose free lanes hold no row.
+    auto pinBlockCount = [&](std::size_t k) {
+        std::uint32_t count = 0;
+        while (count < kLanes && pinRows_[k * kLanes + count] != nullptr) ++count;
+        return count;
+    };
     ContactPass contactPass = contactPassSettings_;
     contactPass.pushes = pushVelocities_.data();
     contactPass.holdPushes = w.settings.relaxIterations > 0;  // the relax pass takes held push-out back
@@ -361,6 +417,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         pass([&](std::size_t b, std::size_t e) {
                  solveContacts(blockAt(b), blockAt(e), coldAt(b), st, contactPass);
                  if (store) storeBlocks(b, e);
+             },
+             [&](std::size_t b, std::size_t e) {
+                 solvePins(pinBlocks_.data() + b, pinBlocks_.data() + e, st, useBias);
+                 if (store) storePins(pinBlocks_.data() + b, pinBlocks_.data() + e, w.joints);
              },
              [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
     };
@@ -440,6 +500,13 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                      }
                                      warmStartContacts(blockAt(b), blockAt(e), st);
                                  },
+                                 [&](std::size_t b, std::size_t e) {
+                                     if (sub == 0)
+                                         for (std::size_t k = b; k < e; ++k)
+                                             packPins(pinBlocks_[k], pinRows_.data() + k * kLanes,
+                                                      pinBlockCount(k), w.joints);
+                                     warmStartPins(pinBlocks_.data() + b, pinBlocks_.data() + e, st);
+                                 },
                                  [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
                             if (bounces.load(std::memory_order_relaxed))
                                 forBodies([&](std::size_t i) {
@@ -481,6 +548,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         w.executor.parallelFor(blockCount, kBlockGrain, [&](std::size_t begin, std::size_t end, int) {
             storeBlocks(firstBlock + begin, firstBlock + end);
         });
+    }
+    if (!storeInRelax) {
+        const std::size_t first = pinBlockStart_[g * kSegments], end = pinBlockStart_[(g + 1) * kSegments];
+        storePins(pinBlocks_.data() + first, pinBlocks_.data() + end, w.joints);
     }
     {
         auto timer = stage(Stage::Integrate);

@@ -9,6 +9,7 @@
 #include "ConstraintGraph.hpp"
 #include "ContactSolver.hpp"
 #include "SolverData.hpp"
+#include "joints/PinLanes.hpp"
 
 #include "physim/core/Aabb.hpp"
 
@@ -47,6 +48,9 @@ private:
     /// A group's rows, substeps and impulses, its blocks in `worker`'s region; returns its turning rows.
     std::size_t solveGroup(WorldImpl& w, std::size_t g, bool timed, int worker);
 
+    /// This step's split of each joint colour into pins solved in lanes and the other rows (Solver.cpp).
+    void sortJointRows();
+
     ConstraintGraph graph_;
     std::vector<SolverBody> solverBodies_;       // a still body, then one per awake body
     SolverBody* states_ = nullptr;               // &solverBodies_[1]: states_[i] is awake body i, states_[-1] still
@@ -61,6 +65,14 @@ private:
     std::vector<std::int8_t> rowImpact_;         // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed_;         // per block lane with an impact: how fast it met, m/s
     ContactPass contactPassSettings_;            // this step's pass constants
+    // Each joint colour's rows this step (sortJointRows): its pins, kLanes to a block, and its other rows. Segment s
+    // (as ConstraintGraph numbers them) has blocks [pinBlockStart_[s], pinBlockStart_[s + 1]) and other rows
+    // otherJointRows_[otherJointStart_[s] ...] (indices into graph_.jointConstraints); the overflow has none here.
+    std::vector<PinBlock> pinBlocks_;
+    std::vector<const JointConstraint*> pinRows_;  // block b's rows: pinRows_[kLanes b ...], pinBlocks_[b].count
+    std::vector<std::uint32_t> pinBlockStart_;
+    std::vector<std::uint32_t> otherJointRows_;
+    std::vector<std::uint32_t> otherJointStart_;
     std::vector<std::uint8_t> enlarged_;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
                                           // proxy to move after the Continuous stage (bit 2)
     bool fastBodies_ = false;             // a dynamic body moved more than half its core radius

@@ -90,6 +90,24 @@ foreach(i RANGE ${last})
   endif()
 endforeach()
 
+# joint_grid: the net hangs from its top row (101 steps, 1.7 s): every engine's lowest disc is a number, below its
+# start at -99 m (the joints stretch a little under the net's weight), and above -200 m (no joint came apart), and
+# the lines under the table printed.
+bench_smoke_run("${PEER_BENCH}" "${WORK_DIR}/joints.json" "\\| joint_grid \\| physim \\| 1 \\| 9993 \\|"
+  --scenes joint_grid --repeats 1 --steps 101 --json "${WORK_DIR}/joints.json")
+if(NOT bench_stdout MATCHES "joint_grid physim x1: -[0-9.]+ \\(from -99\\.000\\)")
+  message(FATAL_ERROR "no lowest-disc line for physim:\n${bench_stdout}")
+endif()
+string(JSON rows LENGTH "${bench_json}")
+math(EXPR last "${rows} - 1")
+foreach(i RANGE ${last})
+  bench_smoke_number("${bench_json}" lowest ${i} lowest_y)
+  string(JSON engine GET "${bench_json}" ${i} engine)
+  if(NOT lowest LESS -99 OR lowest LESS -200)
+    message(FATAL_ERROR "${engine}: the lowest disc of joint_grid at ${lowest} m")
+  endif()
+endforeach()
+
 bench_smoke_usage_errors("${PEER_BENCH}" "--repeats 0" "--scenes no_such_scene" "--steps 100" "--frobnicate"
   "--substeps 0" "--substeps 4,x" "--substeps 1001")
 file(REMOVE_RECURSE "${WORK_DIR}")

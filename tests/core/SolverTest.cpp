@@ -390,5 +390,82 @@ TEST(Solver, APileSplitsIntoHalvesThatMeetInFewBlocksHoweverItsContactsBegan) {
     EXPECT_LT(4 * two.headBlocks, two.halvedBlocks) << two.headBlocks << " head blocks of " << two.halvedBlocks;
 }
 
+// Joint rows are coloured and each colour is solved on the team's threads: plain pins four at a time in lanes, other
+// rows (a pin with a motor or limits, a weld, a distance joint) one by one within their colour. A hanging net of
+// discs pinned to their neighbours (Box2D's joint_grid, smaller), with all of those kinds in it and a pile of boxes
+// beside it, must give the same bits on 1, 2 and every hardware thread, step after step, and set motors and limits
+// that change which rows go in lanes must too.
+std::vector<double> jointNet(int threads) {
+    World world(crowdSettings(threads));
+    test::addGround(world, 60.0);
+    std::vector<BodyId> ids = addPile(world, 40.0, 3);
+    constexpr int kSide = 24;
+    std::vector<BodyId> net(kSide * kSide);
+    for (int k = 0; k < kSide; ++k)
+        for (int i = 0; i < kSide; ++i) {
+            BodyDef d;
+            d.type = i == 0 && (k == 0 || k == kSide / 2 || k == kSide - 1) ? BodyType::Static : BodyType::Dynamic;
+            d.shape = makeCircle(0.4);
+            d.position = {k, 60.0 - i};
+            d.collides = false;
+            net[k * kSide + i] = world.createBody(d);
+            ids.push_back(net[k * kSide + i]);
+        }
+    std::vector<JointId> pins;
+    for (int k = 0; k < kSide; ++k)
+        for (int i = 0; i < kSide; ++i) {
+            const BodyId body = net[k * kSide + i];
+            if (i > 0 && (k + i) % 7 == 3) {  // some welds and distance joints among the pins
+                WeldJointDef weld;
+                weld.bodyA = net[k * kSide + i - 1];
+                weld.bodyB = body;
+                weld.anchor = {k, 60.5 - i};
+                world.createWeldJoint(weld);
+            } else if (i > 0 && (k + i) % 7 == 5) {
+                DistanceJointDef rod;
+                rod.bodyA = net[k * kSide + i - 1];
+                rod.bodyB = body;
+                world.createDistanceJoint(rod);
+            } else if (i > 0) {
+                RevoluteJointDef pin;
+                pin.bodyA = net[k * kSide + i - 1];
+                pin.bodyB = body;
+                pin.anchor = {k, 60.5 - i};
+                pin.enableLimit = (k * i) % 11 == 1;
+                pin.lowerAngle = -0.2;
+                pin.upperAngle = 0.3;
+                pins.push_back(world.createRevoluteJoint(pin));
+            }
+            if (k > 0 && !(i == 0 && (k == kSide / 2 || k == kSide - 1))) {
+                RevoluteJointDef pin;
+                pin.bodyA = net[(k - 1) * kSide + i];
+                pin.bodyB = body;
+                pin.anchor = {k - 0.5, 60.0 - i};
+                pin.enableMotor = (k * i) % 13 == 2;
+                pin.motorSpeed = 1.0;
+                pin.maxMotorTorque = 5.0;
+                pins.push_back(world.createRevoluteJoint(pin));
+            }
+        }
+    std::vector<double> out;
+    for (int step = 0; step < 60; ++step) {
+        if (step == 30)  // motors and limits on and off: rows move between the lanes and the scalar path
+            for (std::size_t p = 0; p < pins.size(); p += 5) {
+                world.setJointMotor(pins[p], p % 2 == 0, -0.5, 3.0);
+                world.setJointLimits(pins[p], p % 3 == 0, -0.1, 0.1);
+            }
+        world.step(kDt);
+        const std::vector<double> now = poses(world, ids);
+        out.insert(out.end(), now.begin(), now.end());
+    }
+    return out;
+}
+
+TEST(Solver, JointNetOfRevoluteWeldAndDistanceJointsGivesTheSameBitsOnAnyThreadCount) {
+    const std::vector<double> one = jointNet(1);
+    for (const double v : one) ASSERT_TRUE(std::isfinite(v));
+    for (const int threads : {2, 0}) EXPECT_TRUE(sameBits(one, jointNet(threads))) << threads << " threads";
+}
+
 }  // namespace
 }  // namespace physim

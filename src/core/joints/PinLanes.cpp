@@ -1,0 +1,170 @@
+#include "PinLanes.hpp"
+
+#include "../BodyLanes.hpp"
+#include "../Impulse.hpp"
+#include "../JointData.hpp"
+
+#include <variant>
+
+namespace physim {
+namespace {
+
+// The lanes' lever arms now: the anchors turned by each body's turn over the step so far (Rotation::apply).
+struct Arms {
+    Wide rAx, rAy, rBx, rBy;
+};
+[[gnu::always_inline]] inline Arms arms(const PinBlock& p, const WideSide& A, const WideSide& B) {
+    return {A.qc * p.anchorAx - A.qs * p.anchorAy, A.qs * p.anchorAx + A.qc * p.anchorAy,
+            B.qc * p.anchorBx - B.qs * p.anchorBy, B.qs * p.anchorBx + B.qc * p.anchorBy};
+}
+
+// Impulse.hpp's applyImpulse, lane by lane.
+[[gnu::always_inline]] inline void apply(const PinBlock& p, WideSide& A, WideSide& B, const Arms& r, Wide Px,
+                                         Wide Py) {
+    A.vx = A.vx - p.invMassA * Px;
+    A.vy = A.vy - p.invMassA * Py;
+    A.w = A.w - p.invIA * (r.rAx * Py - r.rAy * Px);
+    B.vx = B.vx + p.invMassB * Px;
+    B.vy = B.vy + p.invMassB * Py;
+    B.w = B.w + p.invIB * (r.rBx * Py - r.rBy * Px);
+}
+
+// RevoluteJoint::warmStart.
+[[gnu::always_inline]] inline void warmStartLoop(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
+    for (const PinBlock* p = begin; p != end; ++p) {
+        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
+        apply(*p, A, B, arms(*p, A, B), p->impulseX, p->impulseY);
+        A.w = A.w - p->invIA * p->turnImpulse;
+        B.w = B.w + p->invIB * p->turnImpulse;
+        scatter(p->indexA, p->writesA, A, states);
+        scatter(p->indexB, p->writesB, B, states);
+    }
+}
+
+// JointShared.hpp's solvePoint and solvePointMass.
+template <bool UseBias>
+[[gnu::always_inline]] inline void solveLoop(PinBlock* begin, PinBlock* end, SolverBody* states) {
+    for (PinBlock* p = begin; p != end; ++p) {
+        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
+        const Arms r = arms(*p, A, B);
+        // The relative velocity of the points, B.v + w x rB - A.v - w x rA.
+        const Wide cdotX = ((B.vx + -B.w * r.rBy) - A.vx) - -A.w * r.rAy;
+        const Wide cdotY = ((B.vy + B.w * r.rBx) - A.vy) - A.w * r.rAx;
+        Wide biasX = splat(0.0), biasY = splat(0.0), massScale = splat(1.0), impulseScale = splat(0.0);
+        if constexpr (UseBias) {
+            const Wide sepX = ((p->deltaX + (B.dpx - A.dpx)) + r.rBx) - r.rAx;
+            const Wide sepY = ((p->deltaY + (B.dpy - A.dpy)) + r.rBy) - r.rAy;
+            biasX = p->biasRate * sepX;
+            biasY = p->biasRate * sepY;
+            massScale = p->massScale;
+            impulseScale = p->impulseScale;
+        }
+        const Wide rhsX = cdotX + biasX, rhsY = cdotY + biasY;
+        const Wide m = p->invMassA + p->invMassB;
+        const Wide k11 = (m + p->invIA * r.rAy * r.rAy) + p->invIB * r.rBy * r.rBy;
+        const Wide k12 = -p->invIA * r.rAx * r.rAy - p->invIB * r.rBx * r.rBy;
+        const Wide k22 = (m + p->invIA * r.rAx * r.rAx) + p->invIB * r.rBx * r.rBx;
+        const Wide det = k11 * k22 - k12 * k12;
+        const WideMask solvable = det > splat(0.0);  // else the scalar row does nothing (an unused lane)
+        const Wide safeDet = solvable ? det : splat(1.0);
+        const Wide solvedX = (k22 * rhsX - k12 * rhsY) / safeDet, solvedY = (k11 * rhsY - k12 * rhsX) / safeDet;
+        const Wide ix = -massScale * solvedX - impulseScale * p->impulseX;
+        const Wide iy = -massScale * solvedY - impulseScale * p->impulseY;
+        const Wide Px = solvable ? ix : splat(0.0), Py = solvable ? iy : splat(0.0);
+        p->impulseX = solvable ? p->impulseX + Px : p->impulseX;
+        p->impulseY = solvable ? p->impulseY + Py : p->impulseY;
+        apply(*p, A, B, r, Px, Py);
+        scatter(p->indexA, p->writesA, A, states);
+        scatter(p->indexB, p->writesB, B, states);
+    }
+}
+
+void warmStartBaseline(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+void solveBaseline(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
+    if (useBias) solveLoop<true>(begin, end, states);
+    else solveLoop<false>(begin, end, states);
+}
+#if PHYSIM_HAS_AVX2_CODE
+PHYSIM_AVX2_CODE void warmStartAvx2(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+PHYSIM_AVX2_CODE void solveAvx2(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
+    if (useBias) solveLoop<true>(begin, end, states);
+    else solveLoop<false>(begin, end, states);
+}
+PHYSIM_AVX512_CODE void warmStartAvx512(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
+    warmStartLoop(begin, end, states);
+}
+PHYSIM_AVX512_CODE void solveAvx512(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
+    if (useBias) solveLoop<true>(begin, end, states);
+    else solveLoop<false>(begin, end, states);
+}
+#endif
+
+}  // namespace
+
+void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t count,
+              const std::vector<JointData>& joints) {
+    block = PinBlock{};
+    for (int k = 0; k < kLanes; ++k) block.indexA[k] = block.indexB[k] = kNullIndex;
+    block.count = count;
+    for (std::uint32_t lane = 0; lane < count; ++lane) {
+        const JointConstraint& row = *rows[lane];
+        const RevoluteJoint& pin = std::get<RevoluteJoint>(joints[row.joint].params);
+        const int k = static_cast<int>(lane);
+        block.anchorAx[k] = row.anchorA.x();
+        block.anchorAy[k] = row.anchorA.y();
+        block.anchorBx[k] = row.anchorB.x();
+        block.anchorBy[k] = row.anchorB.y();
+        block.deltaX[k] = row.deltaCenter.x();
+        block.deltaY[k] = row.deltaCenter.y();
+        block.invMassA[k] = row.invMassA;
+        block.invMassB[k] = row.invMassB;
+        block.invIA[k] = row.invIA;
+        block.invIB[k] = row.invIB;
+        block.biasRate[k] = row.softness.biasRate;
+        block.massScale[k] = row.softness.massScale;
+        block.impulseScale[k] = row.softness.impulseScale;
+        block.impulseX[k] = pin.linearImpulse.x();
+        block.impulseY[k] = pin.linearImpulse.y();
+        // As RevoluteJoint::warmStart sums it (from +0.0).
+        block.turnImpulse[k] = 0.0 + pin.motorImpulse + pin.lowerImpulse - pin.upperImpulse;
+        block.indexA[k] = row.indexA;
+        block.indexB[k] = row.indexB;
+        block.joint[k] = row.joint;
+        if (rowMoves(row.indexA, row.invMassA)) block.writesA |= 1u << lane;
+        if (rowMoves(row.indexB, row.invMassB)) block.writesB |= 1u << lane;
+    }
+}
+
+void warmStartPins(const PinBlock* begin, const PinBlock* end, SolverBody* states, WideCode code) {
+    switch (pickWideCode(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+    case WideCode::Avx512: return warmStartAvx512(begin, end, states);
+    case WideCode::Avx2: return warmStartAvx2(begin, end, states);
+#endif
+    default: return warmStartBaseline(begin, end, states);
+    }
+}
+
+void solvePins(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias, WideCode code) {
+    switch (pickWideCode(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+    case WideCode::Avx512: return solveAvx512(begin, end, states, useBias);
+    case WideCode::Avx2: return solveAvx2(begin, end, states, useBias);
+#endif
+    default: return solveBaseline(begin, end, states, useBias);
+    }
+}
+
+void storePins(const PinBlock* begin, const PinBlock* end, std::vector<JointData>& joints) {
+    for (const PinBlock* p = begin; p != end; ++p)
+        for (std::uint32_t lane = 0; lane < p->count; ++lane) {
+            const int k = static_cast<int>(lane);
+            std::get<RevoluteJoint>(joints[p->joint[lane]].params).linearImpulse = {p->impulseX[k], p->impulseY[k]};
+        }
+}
+
+}  // namespace physim

@@ -1,0 +1,41 @@
+#pragma once
+// Revolute joints' shared points solved kLanes at a time (Wide.hpp): the rows of one joint colour share no dynamic
+// body (ConstraintGraph.cpp), so a block's lanes are independent. Each lane does what RevoluteJoint's warmStart and
+// solve do for a pin without motor or limits (RevoluteJoint::pointOnly), operation for operation, so a lane gives
+// the bits the scalar row gives. Other rows of the colour take the scalar path (Joints.hpp). Internal.
+
+#include "../SolverData.hpp"
+#include "../Wide.hpp"
+#include "JointShared.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace physim {
+
+struct JointData;
+
+/// Up to kLanes pin rows for a step: the rows' fields by lane and the points' accumulated impulses, N s. An unused
+/// lane has no bodies (kNullIndex) and no mass: it changes nothing.
+struct alignas(64) PinBlock {  // 64: the AVX builds assume their vectors aligned, which baseline code would not give
+    Wide anchorAx, anchorAy, anchorBx, anchorBy;  // lever arms at the step's start, m
+    Wide deltaX, deltaY;                           // centre of B minus centre of A at the start, m
+    Wide invMassA, invMassB, invIA, invIB;
+    Wide biasRate, massScale, impulseScale;        // the rod's softness (Softness.hpp)
+    Wide impulseX, impulseY;                       // the point's impulse, N s
+    Wide turnImpulse;                              // the warm start's angular impulse on B, N m s
+    std::int32_t indexA[kLanes], indexB[kLanes];
+    std::uint32_t joint[kLanes];
+    unsigned writesA = 0, writesB = 0;  // a bit per lane whose side the row moves (Impulse.hpp's rowMoves)
+    std::uint32_t count = 0;            // lanes in use
+};
+
+/// Fills `block` from `count` (1..kLanes) prepared rows of revolute joints whose pointOnly() holds.
+void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t count,
+              const std::vector<JointData>& joints);
+void warmStartPins(const PinBlock* begin, const PinBlock* end, SolverBody* states, WideCode code = WideCode::Best);
+void solvePins(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias, WideCode code = WideCode::Best);
+/// The blocks' impulses back into their joints (the next step's warm start, the reaction).
+void storePins(const PinBlock* begin, const PinBlock* end, std::vector<JointData>& joints);
+
+}  // namespace physim
