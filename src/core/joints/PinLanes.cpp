@@ -130,7 +130,7 @@ void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t
         block.impulseX[k] = pin.linearImpulse.x();
         block.impulseY[k] = pin.linearImpulse.y();
         // As RevoluteJoint::warmStart sums it (from +0.0).
-        block.turnImpulse[k] = 0.0 + pin.motorImpulse + pin.lowerImpulse - pin.upperImpulse;
+        block.turnImpulse[k] = 0.0 + pin.springImpulse + pin.motorImpulse + pin.lowerImpulse - pin.upperImpulse;
         block.indexA[k] = row.indexA;
         block.indexB[k] = row.indexB;
         block.joint[k] = row.joint;

@@ -37,7 +37,7 @@ struct RevoluteJoint {
     void solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias);
     /// Whether solve does only the shared point (no motor, no limits): such rows are solved kLanes at a time
     /// (PinLanes.hpp). Whatever else solve comes to do must make this false.
-    bool pointOnly() const { return !enableMotor && !enableLimit; }
+    bool pointOnly() const { return !enableMotor && !enableLimit && !enableSpring; }
     JointReaction reaction(const JointEndsNow& now, double invH) const;
     /// World::jointMotorTorque: the motor's torque on B over the last step, N m (0 while it is off).
     double motorTorque(double invH) const { return motorImpulse * invH; }
