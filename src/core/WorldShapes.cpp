@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -109,6 +110,16 @@ void WorldImpl::updateMass(std::uint32_t body) {
     BodyData& b = bodies[body];
     BodyData trial = b;
     trial.unitMass = combine(*this, b);
+    // The parts are weighed by their density over the body's: densities 1e300 apart overflow that.
+    const MassProperties& unit = trial.unitMass;
+    if (!(std::isfinite(unit.area) && std::isfinite(unit.centroid.x()) && std::isfinite(unit.centroid.y()) &&
+          std::isfinite(unit.secondMoment))) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "physim: the shapes' densities are too far from the body's density (" << b.density
+           << " kg/m^2) to combine: their mass overflows";
+        throw std::invalid_argument(os.str());
+    }
     if (trial.type == BodyType::Dynamic) assignMass(trial, trial.density * trial.unitMass.area);  // may throw
     const Vec2 oldCenter = b.center;
     b.unitMass = trial.unitMass;
