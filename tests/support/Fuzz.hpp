@@ -229,13 +229,88 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
                 }
                 break;
             case 8: {
-                if (in.pick(2)) {
+                // The options every kind shares, sometimes bad. Motors' speeds and caps, like forces, get no huge
+                // values (only required finite: the known limit above).
+                auto shared = [&](JointDefBase& j) {
+                    j.collideConnected = in.pick(2) == 0;
+                    if (in.pick(4) == 0) j.breakForce = in.maybeBad(1.0, 1e4);
+                    if (in.pick(4) == 0) j.breakTorque = in.maybeBad(1.0, 1e4);
+                };
+                const int kind = in.pick(7);
+                if (kind == 0) {
                     DistanceJointDef j;
+                    shared(j);
                     j.bodyA = anyBody();
                     j.bodyB = anyBody();
                     j.localAnchorA = {in.maybeBad(-1.0, 1.0), in.maybeBad(-1.0, 1.0)};
                     j.length = in.pick(2) ? 0.0 : in.maybeBad(0.01, 10.0);
                     joints.push_back(world.createDistanceJoint(j));
+                } else if (kind == 1) {
+                    RevoluteJointDef j;
+                    shared(j);
+                    j.bodyA = anyBody();
+                    j.bodyB = anyBody();
+                    j.anchor = {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)};
+                    j.enableLimit = in.pick(2) == 0;
+                    j.lowerAngle = in.maybeBad(-3.0, 0.0);
+                    j.upperAngle = in.maybeBad(0.0, 3.0);
+                    j.enableMotor = in.pick(2) == 0;
+                    j.motorSpeed = in.maybeBad(-10.0, 10.0, 16, false);
+                    j.maxMotorTorque = in.maybeBad(0.0, 1e3, 16, false);
+                    j.enableSpring = in.pick(2) == 0;
+                    j.springHertz = in.maybeBad(0.0, 30.0);
+                    j.springDampingRatio = in.maybeBad(0.0, 2.0);
+                    joints.push_back(world.createRevoluteJoint(j));
+                } else if (kind == 2) {
+                    PrismaticJointDef j;
+                    shared(j);
+                    j.bodyA = anyBody();
+                    j.bodyB = anyBody();
+                    j.anchor = {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)};
+                    j.axis = {in.maybeBad(-1.0, 1.0), in.maybeBad(-1.0, 1.0)};
+                    j.enableLimit = in.pick(2) == 0;
+                    j.lowerTranslation = in.maybeBad(-2.0, 0.0);
+                    j.upperTranslation = in.maybeBad(0.0, 2.0);
+                    j.enableMotor = in.pick(2) == 0;
+                    j.motorSpeed = in.maybeBad(-10.0, 10.0, 16, false);
+                    j.maxMotorForce = in.maybeBad(0.0, 1e3, 16, false);
+                    j.enableSpring = in.pick(2) == 0;
+                    j.hertz = in.maybeBad(0.0, 30.0);
+                    j.dampingRatio = in.maybeBad(0.0, 2.0);
+                    joints.push_back(world.createPrismaticJoint(j));
+                } else if (kind == 3) {
+                    WheelJointDef j;
+                    shared(j);
+                    j.bodyA = anyBody();
+                    j.bodyB = anyBody();
+                    j.anchor = {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)};
+                    j.axis = {in.maybeBad(-1.0, 1.0), in.maybeBad(-1.0, 1.0)};
+                    j.hertz = in.maybeBad(0.0, 30.0);
+                    j.dampingRatio = in.maybeBad(0.0, 2.0);
+                    j.enableMotor = in.pick(2) == 0;
+                    j.motorSpeed = in.maybeBad(-10.0, 10.0, 16, false);
+                    j.maxMotorTorque = in.maybeBad(0.0, 1e3, 16, false);
+                    joints.push_back(world.createWheelJoint(j));
+                } else if (kind == 4) {
+                    PulleyJointDef j;
+                    shared(j);
+                    j.bodyA = anyBody();
+                    j.bodyB = anyBody();
+                    j.groundAnchorA = {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)};
+                    j.groundAnchorB = {in.maybeBad(-20.0, 20.0), in.maybeBad(-20.0, 20.0)};
+                    j.ratio = in.maybeBad(0.1, 4.0);
+                    joints.push_back(world.createPulleyJoint(j));
+                } else if (kind == 5) {
+                    MotorJointDef j;
+                    shared(j);
+                    j.bodyA = anyBody();
+                    j.bodyB = anyBody();
+                    j.linearOffset = {in.maybeBad(-5.0, 5.0), in.maybeBad(-5.0, 5.0)};
+                    j.angularOffset = in.maybeBad(-3.0, 3.0);
+                    j.maxForce = in.maybeBad(0.0, 1e3, 16, false);
+                    j.maxTorque = in.maybeBad(0.0, 1e3, 16, false);
+                    j.correctionFactor = in.maybeBad(0.0, 1.0);
+                    joints.push_back(world.createMotorJoint(j));
                 } else {
                     MouseJointDef j;
                     j.body = anyBody();
@@ -248,7 +323,16 @@ inline std::string worldOnce(const std::uint8_t* data, std::size_t size) {
                 break;
             }
             case 9:
-                if (!joints.empty()) world.destroyJoint(joints[in.pick(static_cast<int>(joints.size()))]);
+                if (joints.empty()) break;
+                if (in.pick(3) == 0) {  // a gear between two of the joints made so far, any kind, live or not
+                    GearJointDef g;
+                    g.joint1 = joints[in.pick(static_cast<int>(joints.size()))];
+                    g.joint2 = joints[in.pick(static_cast<int>(joints.size()))];
+                    g.ratio = in.maybeBad(-4.0, 4.0);
+                    joints.push_back(world.createGearJoint(g));
+                } else {
+                    world.destroyJoint(joints[in.pick(static_cast<int>(joints.size()))]);
+                }
                 break;
             case 10: {
                 WorldSettings s = world.settings();

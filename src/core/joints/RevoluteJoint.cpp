@@ -104,7 +104,7 @@ void RevoluteJoint::setLimits(bool enable, double lower, double upper) {
 
 RevoluteJoint RevoluteJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA,
                                   Vec2& localB) {
-    requireFinite("revolute joint anchor", def.anchor);
+    requireWithin("revolute joint anchor", def.anchor, kMaxCoordinate);
     requireLimits(def.lowerAngle, def.upperAngle);
     requireMotor(def.motorSpeed, def.maxMotorTorque);
     requireSpring(def.springHertz, def.springDampingRatio);

@@ -92,7 +92,7 @@ inline void requireTranslationLimits(const char* kind, double lower, double uppe
 /// in A's frame.
 inline Vec2 slideAt(const char* kind, const Vec2& anchor, const Vec2& axis, const BodyData& A, const BodyData& B,
                     Vec2& localA, Vec2& localB) {
-    requireFinite(std::string(kind) + " joint anchor", anchor);
+    requireWithin(std::string(kind) + " joint anchor", anchor, kMaxCoordinate);
     requireFinite(std::string(kind) + " joint axis", axis);
     const double length = axis.norm();
     if (!(length > 1e-12))

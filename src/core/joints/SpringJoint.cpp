@@ -17,9 +17,9 @@ void SpringJoint::removeFrom(Effects& effects, std::uint32_t joint) { effects.sp
 
 SpringJoint SpringJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB) {
     const bool toPoint = def.bodyA.isNull();
-    requireFinite(toPoint ? "spring point" : "spring anchor A", def.localAnchorA);
-    requireFinite("spring anchor B", def.localAnchorB);
-    requireFinite("spring restLength", def.restLength);
+    requireWithin(toPoint ? "spring point" : "spring anchor A", def.localAnchorA, kMaxCoordinate);
+    requireWithin("spring anchor B", def.localAnchorB, kMaxCoordinate);
+    requireWithin("spring restLength", def.restLength, kMaxCoordinate);
     requirePositive("spring stiffness", def.stiffness);
     requireNonNegative("spring damping", def.damping);
     localA = def.localAnchorA;

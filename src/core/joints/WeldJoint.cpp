@@ -12,7 +12,7 @@ JointId World::createWeldJoint(const WeldJointDef& def) {
 }
 
 WeldJoint WeldJoint::make(const Def& def, const BodyData& A, const BodyData& B, Vec2& localA, Vec2& localB) {
-    requireFinite("weld joint anchor", def.anchor);
+    requireWithin("weld joint anchor", def.anchor, kMaxCoordinate);
     WeldJoint j;
     j.referenceAngle = pinAt(def.anchor, A, B, localA, localB);
     return j;
