@@ -381,6 +381,45 @@ public:
     double error(const World&) const override { return worst_; }
 };
 
+// An Atwood machine: 2 kg and 1 kg on one rope over two pulleys (a pulley joint), released at rest. Error: the
+// acceleration measured between 0.5 s and the end against (m1 - m2) g / (m1 + m2), relative.
+class Atwood : public SceneRun {
+    static constexpr double kHeavy = 2.0, kLight = 1.0;  // kg
+    BodyId heavy_;
+    double v0_ = 0.0, t0_ = -1.0, v1_ = 0.0, t1_ = 0.0;
+
+public:
+    void build(World& w) override {
+        auto weight = [&](double x, double mass) {
+            BodyDef d;
+            d.shape = physim::makeBox(0.1, 0.1);
+            d.position = {x, 0.0};
+            d.collides = false;
+            const BodyId id = add(w, d);
+            w.setMass(id, mass);
+            return id;
+        };
+        physim::PulleyJointDef rope;
+        rope.bodyA = heavy_ = weight(-0.5, kHeavy);
+        rope.bodyB = weight(0.5, kLight);
+        rope.groundAnchorA = {-0.5, 10.0};  // the light body rises 6.5 m in the 2 s: the rope stays clear
+        rope.groundAnchorB = {0.5, 10.0};
+        w.createPulleyJoint(rope);
+    }
+    void observe(const World& w, double t) override {
+        if (t0_ < 0.0 && t >= 0.5) {
+            t0_ = t;
+            v0_ = w.velocity(heavy_).y();
+        }
+        t1_ = t;
+        v1_ = w.velocity(heavy_).y();
+    }
+    double error(const World& w) const override {
+        const double exact = (kHeavy - kLight) * gravity(w) / (kHeavy + kLight);
+        return std::abs(-(v1_ - v0_) / (t1_ - t0_) - exact) / exact;
+    }
+};
+
 template <class T, class... Args>
 std::function<std::unique_ptr<SceneRun>()> maker(Args... args) {
     return [=] { return std::make_unique<T>(args...); };
@@ -404,6 +443,7 @@ const std::vector<SceneInfo>& scenes() {
         {"pendulum", 5.6, "period against the elliptic-integral period, relative", false, contact, maker<Pendulum>()},
         {"heavy_chain", 2.0, "worst stretch of 20 pinned links holding 100 times a link, relative to the length", false,
          contact, maker<HeavyChain>()},
+        {"atwood", 2.0, "acceleration against (m1 - m2) g / (m1 + m2), relative", false, contact, maker<Atwood>()},
         {"pyramid", 2.0, "top box drift from its built place after 2 s (m)", false, contact, maker<Pyramid>()},
         {"stack", 2.0, "top box sink from its built place after 2 s (m)", false, contact, maker<Stack>()},
         {"bullets", 0.2, "fraction of 40 bullets (50-2000 m/s) through a 2 cm wall", false, fast, maker<Bullets>()},
