@@ -299,7 +299,10 @@ TEST(WheelJoint, CarClimbsTheSlopeWithItsDrivenWheelRolling) {
 // substeps change neither, a higher step rate does. The cause is in the contact rows: their separation turns a
 // circle's contact point with the wheel (r (1 - cos(omega dt)), 9 mm per step at 10 rad/s and 40 Hz), so the wheel
 // seems to lift within the step and its grip comes and goes; with that turn left out (a circle's support point
-// does not turn with it), this test passes (0.06%) and a lone disc rolls within 6e-5.
+// does not turn with it), this test passes (0.06%) and a lone disc rolls within 6e-5. Tried with each rounded side's
+// anchor at its centre of curvature: this test then passed, but the ramp example's disc gained 3.2% energy on its
+// 320-piece chain at 40 Hz (its bar is 2%), crossing onto the next piece within a step, which the turning point had
+// masked: not merged until both hold.
 TEST(WheelJoint, DISABLED_CarKeepsRollingAboveTwoMetresPerSecond) {
     Car car(80.0);
     const CarRun run = drive(car, 2.0, 12.0);
