@@ -10,6 +10,7 @@ const std::vector<Scene>& scenes() {
         {"newtons_cradle", makeNewtonsCradle}, {"pyramid", makePyramid},
         {"drag", makeDrag},              {"orbits", makeOrbits},              {"galaxy", makeGalaxy},
         {"ramp", makeRamp},              {"tipping", makeTipping},
+        {"atwood", makeAtwood},          {"gears", makeGears},
     };
     return all;
 }
