@@ -11,6 +11,7 @@ const std::vector<Scene>& scenes() {
         {"drag", makeDrag},              {"orbits", makeOrbits},              {"galaxy", makeGalaxy},
         {"ramp", makeRamp},              {"tipping", makeTipping},
         {"atwood", makeAtwood},          {"gears", makeGears},
+        {"car", makeCar},
     };
     return all;
 }
