@@ -1,7 +1,7 @@
 // car: a chassis (120 kg by default) on two wheels (10 kg discs of radius 0.3 m), each on a wheel joint
 // (WheelJointDef: a suspension spring along the chassis' vertical, the wheel turning freely), the rear one driven
 // by a motor of at most `torque` N m, up to 5 rad/s (1.5 m/s rolling). The terrain is one chain (ChainShape): a flat
-// run-in, an incline of `slope` degrees 8 m long, a flat top and a way down. The car starts at rest at the foot of
+// run-in, an incline of `slope` degrees 8 m long, a flat top, a way down and a wall. The car starts at rest at the foot of
 // the incline, held by the motor as a brake for half a second while its springs settle, then climbs it
 // torque-limited. Rolling without slipping, the motor's work T omega feeds the motion,
 // the wheels' turning and the climb: T v / r = M_eff v a + M g v sin(theta), so
@@ -70,7 +70,8 @@ public:
         top_ = crest.y();
         terrain_ = {{-4.0, 0.0}, foot, crest, crest + physim::Vec2(4.0, 0.0),
                     crest + physim::Vec2(4.0 + 4.0 * std::cos(theta), -4.0 * std::sin(theta)),
-                    crest + physim::Vec2(12.0 + 4.0 * std::cos(theta), -4.0 * std::sin(theta))};
+                    crest + physim::Vec2(12.0 + 4.0 * std::cos(theta), -4.0 * std::sin(theta)),
+                    crest + physim::Vec2(12.0 + 4.0 * std::cos(theta), 1.0 - 4.0 * std::sin(theta))};  // a wall
         crestX_ = crest.x();
         auto& ground = spawn<physim::Object>(physim::ChainShape(terrain_), sf::Color(90, 90, 90));
         ground.rb.setStaticFriction(0.9);
