@@ -124,11 +124,13 @@ public:
         line.append(sf::Vertex({float(a.x()), float(a.y())}, rope));
         for (int i = 0; i <= kArc; ++i) {  // left pulley: from its left side (pi) over the top (pi / 2)
             const double phi = M_PI - 0.5 * M_PI * i / kArc;
-            line.append(sf::Vertex({float(-kPulleyX + kPulleyRadius * std::cos(phi)), float(kPulleyRadius * std::sin(phi))}, rope));
+            line.append(sf::Vertex(
+                {float(-kPulleyX + kPulleyRadius * std::cos(phi)), float(kPulleyRadius * std::sin(phi))}, rope));
         }
         for (int i = 0; i <= kArc; ++i) {  // right pulley: from its top to its right side (0)
             const double phi = 0.5 * M_PI - 0.5 * M_PI * i / kArc;
-            line.append(sf::Vertex({float(kPulleyX + kPulleyRadius * std::cos(phi)), float(kPulleyRadius * std::sin(phi))}, rope));
+            line.append(sf::Vertex(
+                {float(kPulleyX + kPulleyRadius * std::cos(phi)), float(kPulleyRadius * std::sin(phi))}, rope));
         }
         line.append(sf::Vertex({float(b.x()), float(b.y())}, rope));
         window->draw(line, toPixels);

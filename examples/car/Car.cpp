@@ -1,16 +1,17 @@
-// car: a chassis (120 kg by default) on two wheels (10 kg discs of radius 0.3 m), each on a wheel joint
-// (WheelJointDef: a suspension spring along the chassis' vertical, the wheel turning freely), the rear one driven
-// by a motor of at most `torque` N m, up to 5 rad/s (1.5 m/s rolling). The terrain is one chain (ChainShape): a flat
-// run-in, an incline of `slope` degrees 8 m long, a flat top, a way down and a wall. The car starts at rest at the foot of
-// the incline, held by the motor as a brake for half a second while its springs settle, then climbs it
-// torque-limited. Rolling without slipping, the motor's work T omega feeds the motion,
-// the wheels' turning and the climb: T v / r = M_eff v a + M g v sin(theta), so
+// car: a chassis (120 kg by default) on two wheels (10 kg discs of radius 0.3 m), each on a wheel joint (WheelJointDef:
+// a suspension spring along the chassis' vertical, the wheel turning freely), the rear one driven by a motor of at most
+// `torque` N m, up to 5 rad/s (1.5 m/s rolling). The terrain is one chain (ChainShape): a flat run-in, an incline of
+// `slope` degrees 8 m long, a flat top, a way down and a wall. The car starts at rest at the foot of the incline, held
+// by the motor as a brake for half a second while its springs settle, then climbs it torque-limited. Rolling without
+// slipping, the motor's work T omega feeds the motion, the wheels' turning and the climb: T v / r = M_eff v a + M g v
+// sin(theta), so
 //     a = (T / r - M g sin(theta)) / M_eff,   M = chassis + wheels,  M_eff = M + 2 I_wheel / r^2
 // (0.41 m/s^2 at the defaults). Results (summary.json): the mean acceleration along the incline from 1 s (the
 // suspension settled) until 3 s, the car's leaving the incline or 1.4 m/s (below the motor's speed), beside that
-// formula (none when that window is under 0.5 s: a strong motor at its top speed); and the driven wheel's worst slip |omega r / v - 1| on the incline once it moves at 0.3 m/s or more,
-// predicted 0. Graphs: the travel speed beside the driven wheel's omega r, the chassis' height. Parameters: the
-// motor torque, the springs' frequency, the slope, the chassis' mass.
+// formula (none when that window is under 0.5 s: a strong motor at its top speed); and the driven wheel's worst slip
+// |omega r / v - 1| on the incline once it moves at 0.3 m/s or more, predicted 0. Graphs: the travel speed along the
+// chassis beside the driven wheel's omega r, the chassis' height. Parameters: the motor torque, the springs' frequency,
+// the slope, the chassis' mass.
 
 #include "Scenes.hpp"
 
@@ -112,7 +113,8 @@ public:
         predicted_ = (parameters.get("torque") / kWheelRadius - mass * g * std::sin(theta)) / massEff;
         slope_ = u;
 
-        speed_ = graphsManager.addGraph("Speed;t (s);v (m/s)", "travel speed (along the chassis)", {}, physim::GraphMode::WITH_LINES);
+        speed_ = graphsManager.addGraph("Speed;t (s);v (m/s)", "travel speed (along the chassis)", {},
+                                        physim::GraphMode::WITH_LINES);
         rolling_ = graphsManager.addSeries(speed_, "driven wheel's #omega r");
         height_ = graphsManager.addGraph("Height of the chassis;t (s);y (m)", "chassis", {},
                                          physim::GraphMode::WITH_LINES);
@@ -146,7 +148,8 @@ public:
             windowOpen_ = false;
             windowDone_ = true;
             // A window under half a second (a strong motor at its top speed by then) measures nothing worth saying.
-            if (time - t0_ >= 0.5) setResult("acceleration on the incline", (along - v0_) / (time - t0_), predicted_, "m/s^2");
+            if (time - t0_ >= 0.5)
+                setResult("acceleration on the incline", (along - v0_) / (time - t0_), predicted_, "m/s^2");
         }
         // The driven wheel's slip: its centre's speed against omega r (the rolling speed).
         const double vWheel = rear_->rb.velocity().dot(slope_);
