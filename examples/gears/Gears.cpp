@@ -128,8 +128,8 @@ public:
         set12_ = graphsManager.addSeries(ratios_, "1:2 set");
         ratio23_ = graphsManager.addSeries(ratios_, "2:3 measured");
         set23_ = graphsManager.addSeries(ratios_, "2:3 set");
-        piston_x_ = graphsManager.addGraph("Piston;t (s);x (m)", "measured", {}, physim::GraphMode::WITH_LINES);
-        formula_ = graphsManager.addSeries(piston_x_, "r cos#theta + #sqrt{l^{2} - r^{2} sin^{2}#theta}");
+        pistonX_ = graphsManager.addGraph("Piston;t (s);x (m)", "measured", {}, physim::GraphMode::WITH_LINES);
+        formula_ = graphsManager.addSeries(pistonX_, "r cos#theta + #sqrt{l^{2} - r^{2} sin^{2}#theta}");
         graphsManager.build();
     }
 
@@ -154,7 +154,7 @@ public:
         const double x = piston_->getPosition().x() - kCrankAxle.x();
         const double s = kCrankRadius * std::sin(theta);
         const double formula = kCrankRadius * std::cos(theta) + std::sqrt(kRodLength * kRodLength - s * s);
-        graphsManager.addPoint(piston_x_, time, x);
+        graphsManager.addPoint(pistonX_, time, x);
         graphsManager.addPoint(formula_, time, formula);
         worst_ = std::max(worst_, std::abs(x - formula));
         setResult("piston's worst deviation from the crank-slider formula", worst_, 0.0, "m");
@@ -185,7 +185,7 @@ private:
     std::array<double, 2> ratio_{};
     std::array<double, 3> radius_{}, discX_{};  // m
     int angles_ = -1, angle2_ = -1, angle3_ = -1, crankAngle_ = -1, ratios_ = -1, set12_ = -1, ratio23_ = -1,
-        set23_ = -1, piston_x_ = -1, formula_ = -1;
+        set23_ = -1, pistonX_ = -1, formula_ = -1;
     double worst_ = 0.0;  // m
 };
 
