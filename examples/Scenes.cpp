@@ -10,6 +10,8 @@ const std::vector<Scene>& scenes() {
         {"newtons_cradle", makeNewtonsCradle}, {"pyramid", makePyramid},
         {"drag", makeDrag},              {"orbits", makeOrbits},              {"galaxy", makeGalaxy},
         {"ramp", makeRamp},              {"tipping", makeTipping},
+        {"atwood", makeAtwood},          {"gears", makeGears},
+        {"car", makeCar},
     };
     return all;
 }

@@ -26,6 +26,9 @@ std::unique_ptr<Simulation> makeOrbits();
 std::unique_ptr<Simulation> makeGalaxy();
 std::unique_ptr<Simulation> makeRamp();
 std::unique_ptr<Simulation> makeTipping();
+std::unique_ptr<Simulation> makeAtwood();
+std::unique_ptr<Simulation> makeGears();
+std::unique_ptr<Simulation> makeCar();
 
 struct Scene {
     std::string name;  ///< the example's program name

@@ -328,6 +328,18 @@ JointId RigidBody::join(RigidBody& other, WeldJointDef def) {
 JointId RigidBody::join(RigidBody& other, SpringJointDef def) {
     return joinBodies(world_, other.world_, id_, other.id_, def, &World::createSpringJoint);
 }
+JointId RigidBody::join(RigidBody& other, PulleyJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createPulleyJoint);
+}
+JointId RigidBody::join(RigidBody& other, PrismaticJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createPrismaticJoint);
+}
+JointId RigidBody::join(RigidBody& other, WheelJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createWheelJoint);
+}
+JointId RigidBody::join(RigidBody& other, MotorJointDef def) {
+    return joinBodies(world_, other.world_, id_, other.id_, def, &World::createMotorJoint);
+}
 
 void RigidBody::detach() {
     if (!world_) return;

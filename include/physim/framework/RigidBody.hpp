@@ -130,6 +130,10 @@ public:
     JointId join(RigidBody& other, RevoluteJointDef def);
     JointId join(RigidBody& other, WeldJointDef def);
     JointId join(RigidBody& other, SpringJointDef def);
+    JointId join(RigidBody& other, PulleyJointDef def);
+    JointId join(RigidBody& other, PrismaticJointDef def);
+    JointId join(RigidBody& other, WheelJointDef def);
+    JointId join(RigidBody& other, MotorJointDef def);
 
     /// The body origin, m (the point the shape's coordinates are relative to) and its angle, rad.
     Vec2 position() const;
