@@ -239,7 +239,8 @@ Scene makeScene(const std::string& name) {
 }
 
 std::vector<std::string> defaultScenes() {
-    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids", "chain_terrain", "joint_grid", "cars"};
+    return {"large_pyramid", "pyramid20",     "pyramid40",  "circles1000",
+            "many_pyramids", "chain_terrain", "joint_grid", "cars"};
 }
 
 std::vector<std::string> scalingScenes() {

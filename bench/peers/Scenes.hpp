@@ -122,7 +122,8 @@ struct CapsuleMass {
 CapsuleMass capsuleMass(double radius, double halfLength);
 
 /// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids,
-/// pyramid_grid<R> (R in 1..100 rows), chain_terrain, joint_grid or cars. Throws std::invalid_argument naming an unknown one.
+/// pyramid_grid<R> (R in 1..100 rows), chain_terrain, joint_grid or cars. Throws std::invalid_argument naming an
+/// unknown one.
 Scene makeScene(const std::string& name);
 
 /// What `--scenes` accepts besides scene names: `all` (the default scenes and the scaling set), and

@@ -21,11 +21,11 @@ constexpr float kNormalPixels = 36.f;   // drawn length of a contact normal
 constexpr float kPointPixels = 4.f;     // radius of a contact point's dot
 constexpr float kLinePixels = 2.f;      // width of every line
 constexpr float kCrossPixels = 6.f;     // half-length of a centre-of-mass cross
-constexpr float kPinPixels = 5.f;      // radius of a revolute pin's ring
-constexpr float kLimitPixels = 22.f;   // length of a revolute limit's ray
-constexpr float kAxisPixels = 25.f;    // a slider's axis line reaches at least this far either side of its anchor
-constexpr float kTickPixels = 6.f;     // half-length of a slider limit's tick
-constexpr float kWeldPixels = 5.f;     // half-size of a weld's square
+constexpr float kPinPixels = 5.f;       // radius of a revolute pin's ring
+constexpr float kLimitPixels = 22.f;    // length of a revolute limit's ray
+constexpr float kAxisPixels = 25.f;     // a slider's axis line reaches at least this far either side of its anchor
+constexpr float kTickPixels = 6.f;      // half-length of a slider limit's tick
+constexpr float kWeldPixels = 5.f;      // half-size of a weld's square
 constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance covered in this time
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
     kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20);
@@ -122,15 +122,15 @@ void square(Lines& lines, sf::Vector2f c, float half, sf::Color colour) {
 void ring(Lines& lines, sf::Vector2f c, float radius, sf::Color colour) {
     constexpr int kSides = 12;
     for (int i = 0; i < kSides; ++i) {
-        const float t0 = 2.f * static_cast<float>(M_PI) * i / kSides, t1 = 2.f * static_cast<float>(M_PI) * (i + 1) / kSides;
+        const float t0 = 2.f * static_cast<float>(M_PI) * i / kSides;
+        const float t1 = 2.f * static_cast<float>(M_PI) * (i + 1) / kSides;
         lines.add(c + radius * sf::Vector2f(std::cos(t0), std::sin(t0)),
                   c + radius * sf::Vector2f(std::cos(t1), std::sin(t1)), colour);
     }
 }
 
-// A ray at world angle `angle` (counter-clockwise from +x; y is down on screen) from `from` to `to` pixels off c.
-void ray(Lines& lines, sf::Vector2f c, double angle, float from, float to, sf::Color colour) {
-    const sf::Vector2f u(static_cast<float>(std::cos(angle)), static_cast<float>(-std::sin(angle)));
+// A ray along the pixel direction u (unit) from `from` to `to` pixels off c.
+void ray(Lines& lines, sf::Vector2f c, sf::Vector2f u, float from, float to, sf::Color colour) {
     lines.add(c + from * u, c + to * u, colour);
 }
 
@@ -144,7 +144,7 @@ void drawJoint(const World& world, JointId id, const ToPixels& px, Lines& lines)
     switch (world.jointType(id)) {
         case JointType::Mouse:
             lines.add(px(a), px(b), kMouse);
-            square(lines, px(a), 4.f, kMouse);  // the target (a mouse joint's first anchor)
+            square(lines, px(a), kPointPixels, kMouse);  // the target (a mouse joint's first anchor)
             return;
         case JointType::Revolute: {
             lines.add(px(a), px(b), kJoint);  // apart only while the pin is pulled open
@@ -152,9 +152,13 @@ void drawJoint(const World& world, JointId id, const ToPixels& px, Lines& lines)
             const JointLimits limits = world.jointLimits(id);
             if (!limits.enabled) return;
             const double base = world.angle(world.jointBodies(id).first);  // the limits turn with A
-            ray(lines, px(a), base + limits.lower, kPinPixels, kLimitPixels, kJoint);
-            ray(lines, px(a), base + limits.upper, kPinPixels, kLimitPixels, kJoint);
-            ray(lines, px(a), base + world.jointAngle(id), kPinPixels, 0.6f * kLimitPixels, kJoint);
+            const auto towards = [&](double angle) {  // the pixel direction of a world angle, through the view
+                const sf::Vector2f d = px(a + Vec2(std::cos(angle), std::sin(angle))) - px(a);
+                return d / std::max(1e-6f, std::hypot(d.x, d.y));
+            };
+            ray(lines, px(a), towards(base + limits.lower), kPinPixels, kLimitPixels, kJoint);
+            ray(lines, px(a), towards(base + limits.upper), kPinPixels, kLimitPixels, kJoint);
+            ray(lines, px(a), towards(base + world.jointAngle(id)), kPinPixels, 0.6f * kLimitPixels, kJoint);
             return;
         }
         case JointType::Prismatic:
