@@ -17,11 +17,17 @@
 // the same 1 cm skin as polygons, so the chain is lowered by it: bodies rest where they rest on physim's.
 // A scene's pins are b2RevoluteJoints made with Initialize at the pin's world point; a scene without collisions
 // gives every fixture a mask of nothing.
+// A scene's wheels are b2WheelJoints (Initialize at the anchor and axis, bodies not colliding as in physim). 2.4.1's
+// spring takes a stiffness (N/m) and damping (N s/m) where physim takes a frequency and damping ratio for the
+// effective mass along the axis, 1 / (1/mA + 1/mB + sA^2/IA + sB^2/IB) with sA = rA x axis and sB = rB x axis (the
+// same mass 2.4.1's spring row uses): k = m (2 pi f)^2 and c = 2 m zeta (2 pi f) for that mass at creation give
+// both engines the same spring.
 
 #include "Engine.hpp"
 
 #include <box2d/box2d.h>
 
+#include <cmath>
 #include <vector>
 
 namespace peers {
@@ -48,6 +54,7 @@ public:
             jd.Initialize(body(p.a), body(p.b), b2Vec2(static_cast<float>(p.x), static_cast<float>(p.y)));
             world_.CreateJoint(&jd);  // owned by world_
         }
+        for (const WheelSpec& w : scene.wheels) addWheel(w);
     }
 
     void step() override {
@@ -58,6 +65,8 @@ public:
         const b2Vec2& p = bodies_[index]->GetPosition();
         return {p.x, p.y};
     }
+
+    double angle(std::size_t index) const override { return bodies_[index]->GetAngle(); }
 
     std::vector<std::pair<std::string, double>> lastStepStages() const override {
         const b2Profile& p = world_.GetProfile();  // ms; solve includes the broad phase and the solver parts
@@ -104,6 +113,27 @@ private:
             body->SetMassData(&md);
         }
         return body;
+    }
+
+    void addWheel(const WheelSpec& w) {
+        b2Body* a = bodies_[w.chassis];
+        b2Body* b = bodies_[w.wheel];
+        const b2Vec2 anchor(static_cast<float>(w.x), static_cast<float>(w.y));
+        const b2Vec2 axis(static_cast<float>(w.axisX), static_cast<float>(w.axisY));
+        b2WheelJointDef jd;
+        jd.Initialize(a, b, anchor, axis);
+        // Centroidal inertias: GetInertia is about the body origin.
+        const double iA = a->GetInertia() - a->GetMass() * b2Dot(a->GetLocalCenter(), a->GetLocalCenter());
+        const double iB = b->GetInertia() - b->GetMass() * b2Dot(b->GetLocalCenter(), b->GetLocalCenter());
+        const double sA = b2Cross(anchor - a->GetWorldCenter(), axis), sB = b2Cross(anchor - b->GetWorldCenter(), axis);
+        const double mass = 1.0 / (1.0 / a->GetMass() + 1.0 / b->GetMass() + sA * sA / iA + sB * sB / iB);
+        const double omega = 2.0 * M_PI * w.hertz;
+        jd.stiffness = static_cast<float>(mass * omega * omega);
+        jd.damping = static_cast<float>(2.0 * mass * w.dampingRatio * omega);
+        jd.enableMotor = w.enableMotor;
+        jd.motorSpeed = static_cast<float>(w.motorSpeed);
+        jd.maxMotorTorque = static_cast<float>(w.maxMotorTorque);
+        world_.CreateJoint(&jd);  // owned by world_
     }
 
     void addChain(const std::vector<ChainPoint>& points) {

@@ -24,6 +24,8 @@ public:
     virtual void step() = 0;
     /// Centre of scene.dynamics[index], m.
     virtual Point position(std::size_t index) const = 0;
+    /// Angle of scene.dynamics[index], rad, counter-clockwise from its start.
+    virtual double angle(std::size_t index) const = 0;
     /// Seconds spent in each named stage of the last step; empty when the engine does not say.
     virtual std::vector<std::pair<std::string, double>> lastStepStages() const { return {}; }
 };

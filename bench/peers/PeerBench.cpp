@@ -55,6 +55,9 @@ struct Row {
     // Scenes with pins, last repeat: the lowest dynamic body's centre height at the last step, m (how far the
     // joints stretched under the weight they hold).
     double lowestY = kNone;
+    // Scenes with cars, last repeat: the mean x the chassis travelled from its start, m, and how many cars end
+    // upright (chassis within 90 degrees of its start angle).
+    double carsMeanDx = kNone, carsUpright = kNone;
     std::map<std::string, double> stageSeconds;  // summed over every timed step of every repeat
     int timedSteps = 0;
 
@@ -72,8 +75,8 @@ struct Row {
               << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] "
                  "[--substeps a,b,...] [--json FILE] [--profile]\n"
               << "  --scenes   large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids, pyramid_grid<R> "
-                 "(R rows of 20 base-10 pyramids), chain_terrain, joint_grid, scaling (grids of 1k to 21k boxes, for the fit), "
-                 "all (default)\n"
+                 "(R rows of 20 base-10 pyramids), chain_terrain, joint_grid, cars, scaling (grids of 1k to 21k boxes, "
+                 "for the fit), all (default)\n"
               << "  --engines  physim and the peers this build has (default: all of them)\n"
               << "  --repeats  runs of each scene and engine, n >= 1 (default 3)\n"
               << "  --steps    steps per run, n >= " << kUntimedSteps + 1 << " (default 500); steps "
@@ -183,6 +186,13 @@ void measure(const Scene& scene, const Options& o, bool lastRepeat, Row& row) {
             row.lowestY = std::isnan(y) || y < row.lowestY ? y : row.lowestY;  // NaN (blown up) shows
         }
     }
+    if (lastRepeat && !scene.cars.empty()) {
+        row.carsMeanDx = row.carsUpright = 0.0;
+        for (std::size_t c : scene.cars) {
+            row.carsMeanDx += (run->position(c).x - scene.dynamics[c].x) / scene.cars.size();
+            if (std::cos(run->angle(c)) > 0.0) row.carsUpright += 1.0;
+        }
+    }
     if (!lastRepeat || scene.tops.empty()) return;
 
     row.topDrop = -std::numeric_limits<double>::infinity();  // a top that rose has a negative drop
@@ -257,6 +267,21 @@ void printLowest(const std::vector<Row>& rows, const std::vector<Scene>& scenes)
                 for (const ShapeSpec& d : s.dynamics) start = std::min(start, d.y);
         std::cout << "  " << r.scene << " " << r.engine->name << " x" << r.engine->threads << ": "
                   << fixed(r.lowestY, 3) << " (from " << fixed(start, 3) << ")\n";
+    }
+}
+
+// The cars' sanity: how far they drove and whether they stayed on their wheels.
+void printCars(const std::vector<Row>& rows, const std::vector<Scene>& scenes) {
+    bool printed = false;
+    for (const Row& r : rows) {
+        if (std::isnan(r.carsMeanDx)) continue;
+        if (!printed) std::cout << "\nCars at the last step (mean x travelled by the chassis, m; upright ones):\n";
+        printed = true;
+        std::size_t cars = 0;
+        for (const Scene& s : scenes)
+            if (s.name == r.scene) cars = s.cars.size();
+        std::cout << "  " << r.scene << " " << r.engine->name << " x" << r.engine->threads << ": mean dx "
+                  << fixed(r.carsMeanDx, 2) << ", " << fixed(r.carsUpright, 0) << " of " << cars << " upright\n";
     }
 }
 
@@ -351,6 +376,7 @@ void writeJson(std::ostream& out, const std::vector<Row>& rows) {
             << ", \"top_drift\": " << jsonNumber(r.topDrift) << ", \"max_sideways\": " << jsonNumber(r.maxSideways)
             << ", \"min_clearance\": " << jsonNumber(r.minClearance)
             << ", \"below_ground\": " << jsonNumber(r.belowGround) << ", \"lowest_y\": " << jsonNumber(r.lowestY)
+            << ", \"cars_mean_dx\": " << jsonNumber(r.carsMeanDx) << ", \"cars_upright\": " << jsonNumber(r.carsUpright)
             << "}" << (i + 1 < rows.size() ? "," : "") << "\n";
     }
     out << "]\n";
@@ -418,6 +444,7 @@ int main(int argc, char** argv) {
     printTable(rows, peers.engines);
     printGroundCheck(rows);
     printLowest(rows, scenes);
+    printCars(rows, scenes);
     if (o.profile) printProfile(rows);
     printFit(rows, engines);
     printSubstepFit(rows);

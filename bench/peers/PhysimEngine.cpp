@@ -27,6 +27,19 @@ public:
             d.anchor = {p.x, p.y};
             world_.createRevoluteJoint(d);
         }
+        for (const WheelSpec& w : scene.wheels) {
+            physim::WheelJointDef d;
+            d.bodyA = ids_[w.chassis];
+            d.bodyB = ids_[w.wheel];
+            d.anchor = {w.x, w.y};
+            d.axis = {w.axisX, w.axisY};
+            d.hertz = w.hertz;
+            d.dampingRatio = w.dampingRatio;
+            d.enableMotor = w.enableMotor;
+            d.motorSpeed = w.motorSpeed;
+            d.maxMotorTorque = w.maxMotorTorque;
+            world_.createWheelJoint(d);
+        }
     }
 
     void step() override { world_.step(kTimeStep); }
@@ -35,6 +48,8 @@ public:
         const physim::Vec2 p = world_.position(ids_[index]);
         return {p.x(), p.y()};
     }
+
+    double angle(std::size_t index) const override { return world_.angle(ids_[index]); }
 
     std::vector<std::pair<std::string, double>> lastStepStages() const override {
         std::vector<std::pair<std::string, double>> out;

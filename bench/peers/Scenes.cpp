@@ -152,6 +152,58 @@ Scene jointGridScene() {
     return s;
 }
 
+Scene carsScene() {
+    Scene s;
+    s.name = "cars";
+    // Ground: x in [-150, 150] in 1 200 pieces of 0.25 m, rolling hills (sines of 23, 7.7 and 3.1 m, slopes up to
+    // 15 degrees: the rear-driven cars climb them within the tyres' friction), rising as a parabola past
+    // |x| = 135 to 22.5 m at the ends, too steep for a car to climb out.
+    constexpr int kPieces = 1200;
+    constexpr double kLeft = -150.0, kPiece = 0.25;
+    for (int i = 0; i <= kPieces; ++i) {
+        const double x = kLeft + kPiece * i;
+        const double rim = std::max(0.0, std::abs(x) - 135.0);
+        const double y = 0.4 * std::sin(2.0 * M_PI * x / 23.0) + 0.12 * std::sin(2.0 * M_PI * x / 7.7 + 1.0) +
+                         0.03 * std::sin(2.0 * M_PI * x / 3.1 + 2.0) + 0.1 * rim * rim;
+        s.chain.push_back({x, y});
+    }
+    // Cars, 4.3 m apart from x = -130, each dropped with its wheels 0.1 m above the highest ground under it. A car:
+    // chassis of half-size (1.25, 0.25) (1.25 kg), wheels of radius 0.4 m (0.50 kg) whose centres hang 0.5 m below
+    // the chassis's centre and 0.9 m to either side (they overlap the chassis: joined bodies do not collide).
+    constexpr int kCars = 60;
+    constexpr double kSpacing = 4.3, kFirst = -130.0;
+    constexpr double kHalfWidth = 1.25, kHalfHeight = 0.25, kWheelRadius = 0.4, kAxleX = 0.9, kAxleDrop = 0.5;
+    for (int c = 0; c < kCars; ++c) {
+        const double x = kFirst + kSpacing * c;
+        double ground = -std::numeric_limits<double>::infinity();
+        for (double u = x - kHalfWidth - 0.2; u <= x + kHalfWidth + 0.2; u += 0.05)
+            ground = std::max(ground, chainHeightAt(s, u));
+        const double y = ground + 0.1 + kWheelRadius + kAxleDrop;
+        s.cars.push_back(s.dynamics.size());
+        const std::size_t chassis = s.dynamics.size();
+        s.dynamics.push_back(box(x, y, kHalfWidth, kHalfHeight));
+        for (double side : {-1.0, 1.0}) {  // rear (left) then front
+            ShapeSpec wheel;
+            wheel.x = x + side * kAxleX;
+            wheel.y = y - kAxleDrop;
+            wheel.radius = kWheelRadius;
+            WheelSpec j;
+            j.chassis = chassis;
+            j.wheel = s.dynamics.size();
+            j.x = wheel.x;
+            j.y = wheel.y;
+            j.hertz = 4.0;
+            j.dampingRatio = 0.7;
+            j.enableMotor = side < 0.0;  // rear-wheel drive, rolling to the right (clockwise: negative)
+            j.motorSpeed = j.enableMotor ? -10.0 : 0.0;
+            j.maxMotorTorque = j.enableMotor ? 4.0 : 0.0;
+            s.wheels.push_back(j);
+            s.dynamics.push_back(wheel);
+        }
+    }
+    return s;
+}
+
 double chainHeightAt(const Scene& scene, double x) {
     const std::vector<ChainPoint>& c = scene.chain;
     if (c.size() < 2 || !(x >= c.front().x && x <= c.back().x)) return std::numeric_limits<double>::quiet_NaN();
@@ -176,17 +228,19 @@ Scene makeScene(const std::string& name) {
     if (name == "many_pyramids") return pyramidGridScene(name, 19);
     if (name == "chain_terrain") return chainTerrainScene();
     if (name == "joint_grid") return jointGridScene();
+    if (name == "cars") return carsScene();
     const int base = numberAfter("pyramid", name);
     if (base >= 1 && base <= 400) return pyramidScene(name, base);
     const int rows = numberAfter("pyramid_grid", name);
     if (rows >= 1 && rows <= 100) return pyramidGridScene(name, rows);
     throw std::invalid_argument("unknown scene '" + name +
                                 "' (large_pyramid, pyramid<N> with N in 1..400, circles1000, many_pyramids, "
-                                "pyramid_grid<R> with R in 1..100, chain_terrain, joint_grid, scaling, all)");
+                                "pyramid_grid<R> with R in 1..100, chain_terrain, joint_grid, cars, scaling, all)");
 }
 
 std::vector<std::string> defaultScenes() {
-    return {"large_pyramid", "pyramid20", "pyramid40", "circles1000", "many_pyramids", "chain_terrain", "joint_grid"};
+    return {"large_pyramid", "pyramid20",     "pyramid40",  "circles1000",
+            "many_pyramids", "chain_terrain", "joint_grid", "cars"};
 }
 
 std::vector<std::string> scalingScenes() {

@@ -48,6 +48,19 @@ struct PinSpec {
     double y = 0.0;
 };
 
+/// A wheel joint: `wheel` turns freely about its centre, which slides along the world axis (axisX, axisY) (unit)
+/// through (x, y) fixed in `chassis`, held by a suspension spring of `hertz` (for the effective mass along the axis at
+/// creation) and `dampingRatio`; with a motor, it is driven at motorSpeed (rad/s of the wheel relative to the chassis)
+/// within maxMotorTorque (N m).
+struct WheelSpec {
+    std::size_t chassis = 0, wheel = 0;  ///< indices into scene.dynamics
+    double x = 0.0, y = 0.0;
+    double axisX = 0.0, axisY = 1.0;
+    double hertz = 0.0, dampingRatio = 0.0;
+    bool enableMotor = false;
+    double motorSpeed = 0.0, maxMotorTorque = 0.0;
+};
+
 struct Scene {
     std::string name;
     std::vector<ShapeSpec> statics;
@@ -64,6 +77,10 @@ struct Scene {
     std::vector<PinSpec> pins;
     /// false: no body touches another (no shape collides), as in a scene that measures joints alone.
     bool collisions = true;
+    /// Wheel joints; and the index into `dynamics` of each car's chassis, for scenes whose cars report how far they
+    /// drove and how many stayed upright at the end.
+    std::vector<WheelSpec> wheels;
+    std::vector<std::size_t> cars;
 };
 
 /// The pyramid of base `base` (base * (base + 1) / 2 boxes of half-size 0.5) standing on the ground at
@@ -88,6 +105,11 @@ Scene chainTerrainScene();
 /// static discs are left out.
 Scene jointGridScene();
 
+/// cars: 60 cars (a 2.5 x 0.5 m chassis on two wheels of radius 0.4 m, each on a wheel joint with a vertical
+/// suspension spring of 4 Hz, damping ratio 0.7; a motor on the rear wheel of 8 N m at -12 rad/s, to the right)
+/// dropped 4.3 m apart onto a rolling chain of 1 200 pieces of 0.25 m (slopes up to 15 degrees, walls at the ends).
+Scene carsScene();
+
 /// The height of the scene's chain at x (m), linear between its points; NaN outside it or without a chain.
 double chainHeightAt(const Scene& scene, double x);
 
@@ -100,7 +122,8 @@ struct CapsuleMass {
 CapsuleMass capsuleMass(double radius, double halfLength);
 
 /// The scene called `name`: large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids,
-/// pyramid_grid<R> (R in 1..100 rows), chain_terrain or joint_grid. Throws std::invalid_argument naming an unknown one.
+/// pyramid_grid<R> (R in 1..100 rows), chain_terrain, joint_grid or cars. Throws std::invalid_argument naming an
+/// unknown one.
 Scene makeScene(const std::string& name);
 
 /// What `--scenes` accepts besides scene names: `all` (the default scenes and the scaling set), and

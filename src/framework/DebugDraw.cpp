@@ -21,6 +21,11 @@ constexpr float kNormalPixels = 36.f;   // drawn length of a contact normal
 constexpr float kPointPixels = 4.f;     // radius of a contact point's dot
 constexpr float kLinePixels = 2.f;      // width of every line
 constexpr float kCrossPixels = 6.f;     // half-length of a centre-of-mass cross
+constexpr float kPinPixels = 5.f;       // radius of a revolute pin's ring
+constexpr float kLimitPixels = 22.f;    // length of a revolute limit's ray
+constexpr float kAxisPixels = 25.f;     // a slider's axis line reaches at least this far either side of its anchor
+constexpr float kTickPixels = 6.f;      // half-length of a slider limit's tick
+constexpr float kWeldPixels = 5.f;      // half-size of a weld's square
 constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance covered in this time
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
     kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20);
@@ -107,6 +112,103 @@ bool atRest(const World& world, BodyId id) {
     return false;
 }
 
+void square(Lines& lines, sf::Vector2f c, float half, sf::Color colour) {
+    lines.add(c + sf::Vector2f(-half, -half), c + sf::Vector2f(half, -half), colour);
+    lines.add(c + sf::Vector2f(half, -half), c + sf::Vector2f(half, half), colour);
+    lines.add(c + sf::Vector2f(half, half), c + sf::Vector2f(-half, half), colour);
+    lines.add(c + sf::Vector2f(-half, half), c + sf::Vector2f(-half, -half), colour);
+}
+
+void ring(Lines& lines, sf::Vector2f c, float radius, sf::Color colour) {
+    constexpr int kSides = 12;
+    for (int i = 0; i < kSides; ++i) {
+        const float t0 = 2.f * static_cast<float>(M_PI) * i / kSides;
+        const float t1 = 2.f * static_cast<float>(M_PI) * (i + 1) / kSides;
+        lines.add(c + radius * sf::Vector2f(std::cos(t0), std::sin(t0)),
+                  c + radius * sf::Vector2f(std::cos(t1), std::sin(t1)), colour);
+    }
+}
+
+// A ray along the pixel direction u (unit) from `from` to `to` pixels off c.
+void ray(Lines& lines, sf::Vector2f c, sf::Vector2f u, float from, float to, sf::Color colour) {
+    lines.add(c + from * u, c + to * u, colour);
+}
+
+// One joint, drawn so its kind shows: a pin as a ring at its anchor (limits as rays out of it at the lower and upper
+// angles and a shorter one at the angle now), a slider (prismatic, wheel) as a line along its axis through A's anchor
+// (limits as ticks across it), a pulley as its rope, a gear as a line between its bodies' centres, a weld as a
+// square, a mouse joint as a line to its target's square, the other kinds as a line between their anchors.
+template <class ToPixels>
+void drawJoint(const World& world, JointId id, const ToPixels& px, Lines& lines) {
+    const auto [a, b] = world.jointAnchors(id);
+    switch (world.jointType(id)) {
+        case JointType::Mouse:
+            lines.add(px(a), px(b), kMouse);
+            square(lines, px(a), kPointPixels, kMouse);  // the target (a mouse joint's first anchor)
+            return;
+        case JointType::Revolute: {
+            lines.add(px(a), px(b), kJoint);  // apart only while the pin is pulled open
+            ring(lines, px(a), kPinPixels, kJoint);
+            const JointLimits limits = world.jointLimits(id);
+            if (!limits.enabled) return;
+            const double base = world.angle(world.jointBodies(id).first);  // the limits turn with A
+            const auto towards = [&](double angle) {  // the pixel direction of a world angle, through the view
+                const sf::Vector2f d = px(a + Vec2(std::cos(angle), std::sin(angle))) - px(a);
+                return d / std::max(1e-6f, std::hypot(d.x, d.y));
+            };
+            ray(lines, px(a), towards(base + limits.lower), kPinPixels, kLimitPixels, kJoint);
+            ray(lines, px(a), towards(base + limits.upper), kPinPixels, kLimitPixels, kJoint);
+            ray(lines, px(a), towards(base + world.jointAngle(id)), kPinPixels, 0.6f * kLimitPixels, kJoint);
+            return;
+        }
+        case JointType::Prismatic:
+        case JointType::Wheel: {
+            const Vec2 axis = world.jointAxis(id);
+            const JointLimits limits = world.jointLimits(id);
+            // Along the axis from A's anchor, m: at least kAxisPixels either side, and far enough to show B's
+            // anchor and the limits.
+            const sf::Vector2f unitPx = px(a + axis) - px(a);
+            const double metresPerPixel = 1.0 / std::max(1e-9, static_cast<double>(std::hypot(unitPx.x, unitPx.y)));
+            double lo = -kAxisPixels * metresPerPixel, hi = -lo;
+            const double at = axis.dot(b - a);
+            lo = std::min(lo, at);
+            hi = std::max(hi, at);
+            if (limits.enabled) {
+                lo = std::min(lo, limits.lower);
+                hi = std::max(hi, limits.upper);
+            }
+            lines.add(px(a + lo * axis), px(a + hi * axis), kJoint);
+            lines.add(px(a), px(b), kJoint);  // off the axis only while the slider is pulled open
+            if (!limits.enabled) return;
+            const Vec2 across = (kTickPixels * metresPerPixel) * Vec2(-axis.y(), axis.x());
+            for (const double t : {limits.lower, limits.upper})
+                lines.add(px(a + t * axis - across), px(a + t * axis + across), kJoint);
+            return;
+        }
+        case JointType::Pulley: {
+            const auto [groundA, groundB] = world.jointPulleyGroundAnchors(id);
+            lines.add(px(groundA), px(a), kJoint);
+            lines.add(px(groundB), px(b), kJoint);
+            lines.add(px(groundA), px(groundB), kJoint);
+            return;
+        }
+        case JointType::Gear: {
+            const auto [bodyA, bodyB] = world.jointBodies(id);
+            lines.add(px(world.centerOfMass(bodyA)), px(world.centerOfMass(bodyB)), kJoint);
+            return;
+        }
+        case JointType::Weld:
+            lines.add(px(a), px(b), kJoint);
+            square(lines, px(a), kWeldPixels, kJoint);
+            return;
+        case JointType::Distance:
+        case JointType::Spring:
+        case JointType::Motor:
+            lines.add(px(a), px(b), kJoint);
+            return;
+    }
+}
+
 }  // namespace
 
 std::vector<Manifold> restingContacts(const World& world) {
@@ -180,18 +282,7 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
                 lines.arrow(px(world.centerOfMass(id)),
                             px(world.centerOfMass(id) + kVelocitySeconds * world.velocity(id)), kVelocity);
     if (options.joints)
-        for (JointId id : world.joints()) {
-            const auto [a, b] = world.jointAnchors(id);
-            const bool mouse = world.jointType(id) == JointType::Mouse;
-            lines.add(px(a), px(b), mouse ? kMouse : kJoint);
-            if (mouse) {  // the target (a mouse joint's first anchor): a small square
-                const sf::Vector2f t = px(a);
-                lines.add(t + sf::Vector2f(-4, -4), t + sf::Vector2f(4, -4), kMouse);
-                lines.add(t + sf::Vector2f(4, -4), t + sf::Vector2f(4, 4), kMouse);
-                lines.add(t + sf::Vector2f(4, 4), t + sf::Vector2f(-4, 4), kMouse);
-                lines.add(t + sf::Vector2f(-4, 4), t + sf::Vector2f(-4, -4), kMouse);
-            }
-        }
+        for (JointId id : world.joints()) drawJoint(world, id, px, lines);
     if (options.centres)
         for (BodyId id : bodies) {
             if (world.type(id) == BodyType::Static) continue;

@@ -1,7 +1,8 @@
 # cmake -DPEER_BENCH=<peer_bench> -DWORK_DIR=<dir> -DPEER=<peer engine name or empty> -P PeerBenchSmoke.cmake
 # Runs peer_bench on a tiny setting and checks what it writes, not how fast anything is: the JSON parses, has
 # one row per engine with every field the table promises, the body count is the pyramid's N (N + 1) / 2, every
-# engine keeps chain_terrain's bodies on its chain, and command-line errors exit with status 2.
+# engine keeps chain_terrain's bodies on its chain, every engine's cars drive, and command-line errors exit with
+# status 2.
 cmake_policy(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
 bench_smoke_fresh_dir()
@@ -105,6 +106,26 @@ foreach(i RANGE ${last})
   string(JSON engine GET "${bench_json}" ${i} engine)
   if(NOT lowest LESS -99 OR lowest LESS -200)
     message(FATAL_ERROR "${engine}: the lowest disc of joint_grid at ${lowest} m")
+  endif()
+endforeach()
+
+# cars: 60 cars land on their chain and drive right (120 steps, 2 s): every engine's cars moved right on average by
+# more than 1 m (from rest, they reach about 4 m/s within a second), all stay upright, none fell through the chain,
+# and the line under the table printed.
+bench_smoke_run("${PEER_BENCH}" "${WORK_DIR}/cars.json" "\\| cars \\| physim \\| 1 \\| 180 \\|"
+  --scenes cars --repeats 1 --steps 120 --json "${WORK_DIR}/cars.json")
+if(NOT bench_stdout MATCHES "cars physim x1: mean dx [0-9.]+, 60 of 60 upright")
+  message(FATAL_ERROR "no cars line for physim:\n${bench_stdout}")
+endif()
+string(JSON rows LENGTH "${bench_json}")
+math(EXPR last "${rows} - 1")
+foreach(i RANGE ${last})
+  bench_smoke_number("${bench_json}" dx ${i} cars_mean_dx)
+  bench_smoke_number("${bench_json}" upright ${i} cars_upright)
+  bench_smoke_number("${bench_json}" below ${i} below_ground)
+  string(JSON engine GET "${bench_json}" ${i} engine)
+  if(NOT dx GREATER 1 OR NOT upright EQUAL 60 OR NOT below EQUAL 0)
+    message(FATAL_ERROR "${engine}: cars moved ${dx} m, ${upright} of 60 upright, ${below} bodies below the chain")
   endif()
 endforeach()
 

@@ -206,4 +206,10 @@ struct GearJointDef : JointDefBase {
     double ratio = 1.0;                ///< finite, != 0 (units of coordinate1 per unit of coordinate2)
 };
 
+/// A joint's limits (World::jointLimits): rad for revolute joints, m for prismatic and wheel joints.
+struct JointLimits {
+    bool enabled = false;
+    double lower = 0.0, upper = 0.0;
+};
+
 }  // namespace physim

@@ -281,6 +281,17 @@ public:
     /// (a joint that is not live or of another kind, a ratio that is zero or not finite, joints that move more than
     /// two bodies between them).
     JointId createGearJoint(const GearJointDef& def);
+    /// The joint's bodies, A then B (a joint to a world point: B twice), for drawing and inspection.
+    std::pair<BodyId, BodyId> jointBodies(JointId id) const;
+    /// Prismatic and wheel joints: the axis in the world now (unit; it turns with A); other kinds are refused with
+    /// std::invalid_argument.
+    Vec2 jointAxis(JointId id) const;
+    /// Revolute (rad, of jointAngle), prismatic and wheel (m, of jointTranslation) joints: the limits and whether
+    /// they are on; other kinds are refused with std::invalid_argument.
+    JointLimits jointLimits(JointId id) const;
+    /// Pulley joints: the fixed points A's and B's sides hang from, m; other kinds are refused with
+    /// std::invalid_argument.
+    std::pair<Vec2, Vec2> jointPulleyGroundAnchors(JointId id) const;
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

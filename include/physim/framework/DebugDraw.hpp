@@ -19,7 +19,9 @@ struct DebugDrawOptions {
     bool contacts = false;    ///< contact points (red) and normals (blue, from A to B); resting ones dimmed
     bool boxes = false;       ///< bounding boxes
     bool velocities = false;  ///< velocity arrows from each centre of mass: the distance it covers in 0.1 s
-    bool joints = false;      ///< joint lines between their anchors; a mouse joint to its target
+    /// joints by kind: a revolute pin's ring (and limits' rays), a prismatic or wheel joint's axis (and limits'
+    /// ticks), a pulley's rope, a gear's line between its bodies, a weld's square; the others a line between anchors
+    bool joints = false;
     bool centres = false;     ///< centres of mass (the body origin only for a shape centred on it)
     bool sleep = false;       ///< sleeping bodies dimmed
 

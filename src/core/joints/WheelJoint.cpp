@@ -118,7 +118,8 @@ void WheelJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B,
     // The suspension: soft in both passes (it is the user's spring, not an error to remove). Its rest: 0.
     if (enableSpring && hertz > 0.0 && kAxial > 0.0) {
         const Softness soft = makeSoftness(hertz, dampingRatio, 1.0 / row.invH);
-        const double lambda = -soft.massScale * (axialRate(f, A, B) + soft.biasRate * f.translation) / kAxial -
+        // The mass over kAxial first: the division then waits on nothing the rows before changed.
+        const double lambda = -(soft.massScale / kAxial) * (axialRate(f, A, B) + soft.biasRate * f.translation) -
                               soft.impulseScale * springImpulse;
         springImpulse += lambda;
         pushAlong(row, A, B, f.axis, f.a1, f.a2, lambda);
@@ -137,7 +138,7 @@ void WheelJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B,
         impulseScale = row.softness.impulseScale;
     }
     const double Cdot = f.normal.dot(B.v - A.v) + f.n2 * B.w - f.n1 * A.w;
-    const double lambda = -massScale * (Cdot + bias) / kNormal - impulseScale * normalImpulse;
+    const double lambda = -(massScale / kNormal) * (Cdot + bias) - impulseScale * normalImpulse;
     normalImpulse += lambda;
     pushAlong(row, A, B, f.normal, f.n1, f.n2, lambda);
 }

@@ -1,7 +1,8 @@
 // Debug drawing rendered off screen (needs a display for the OpenGL context: run under Xvfb by
 // tests/support/with-display.sh), checked pixel by pixel where each item must appear: a contact point's dot,
 // a resting contact's ring, a bounding box's edge, a velocity arrow, a joint's line, a centre's cross, and the
-// veil over a sleeping body (every shape of it, a segment as a line), over chain ground too.
+// veil over a sleeping body (every shape of it, a segment as a line), over chain ground too; and each joint kind's
+// marks.
 
 #include <physim/core/World.hpp>
 #include <physim/framework/DebugDraw.hpp>
@@ -161,6 +162,116 @@ TEST(DebugDrawWindow, ChainGroundAndCompoundSleeperSegmentAsLine) {
     const sf::Color edge = canvas.at({-2.5, -2.0});  // the chain's box is flat: its edges lie on the chain
     EXPECT_GT(edge.r, 150);
     EXPECT_LT(edge.g, 60) << "the box colour (magenta) along the chain";
+}
+
+// Every joint kind drawn so its kind shows (DebugDrawOptions::joints), checked where each mark must be and where
+// nothing must be. Nothing steps: the joints are as created. The view is 100 px/m, so 0.01 m is a pixel; samples
+// sit on a mark's centre line (its lines are 2 px wide), and the empty ones at least 5 px from any mark.
+TEST(DebugDrawWindow, JointKindsRevolutePrismaticWheelPulleyGearWeld) {
+    WorldSettings settings;
+    settings.gravity = Vec2::Zero();
+    World world(settings);
+    BodyDef groundDef;
+    groundDef.type = BodyType::Static;
+    groundDef.shape = makeBox(0.1, 0.1);
+    groundDef.position = {0.0, -2.8};
+    const BodyId ground = world.createBody(groundDef);
+    BodyDef def;
+    def.shape = makeCircle(0.1);
+    const auto body = [&](const Vec2& at) {
+        def.position = at;
+        return world.createBody(def);
+    };
+
+    RevoluteJointDef pin;  // limits -45 and +90 degrees; A static at angle 0, so the rays point there
+    pin.bodyA = ground;
+    pin.bodyB = body({-3.0, 2.0});
+    pin.anchor = {-3.0, 2.0};
+    pin.enableLimit = true;
+    pin.lowerAngle = -M_PI / 4;
+    pin.upperAngle = M_PI / 2;
+    world.createRevoluteJoint(pin);
+
+    PrismaticJointDef slider;  // along x, limits -0.5 and 0.8 m
+    slider.bodyA = ground;
+    slider.bodyB = body({0.0, 2.0});
+    slider.anchor = {0.0, 2.0};
+    slider.enableLimit = true;
+    slider.lowerTranslation = -0.5;
+    slider.upperTranslation = 0.8;
+    world.createPrismaticJoint(slider);
+
+    WheelJointDef wheel;  // along y, no limits
+    wheel.bodyA = ground;
+    wheel.bodyB = body({3.0, 2.0});
+    wheel.anchor = {3.0, 2.0};
+    world.createWheelJoint(wheel);
+
+    PulleyJointDef pulley;
+    pulley.bodyA = body({-3.0, -2.5});
+    pulley.bodyB = body({-1.0, -2.5});
+    pulley.groundAnchorA = {-3.0, -1.0};
+    pulley.groundAnchorB = {-1.0, -1.0};
+    world.createPulleyJoint(pulley);
+
+    RevoluteJointDef axle;  // two discs on axles, geared
+    axle.bodyA = ground;
+    axle.bodyB = body({1.5, -2.0});
+    axle.anchor = {1.5, -2.0};
+    const JointId axle1 = world.createRevoluteJoint(axle);
+    axle.bodyB = body({3.0, -2.0});
+    axle.anchor = {3.0, -2.0};
+    const JointId axle2 = world.createRevoluteJoint(axle);
+    GearJointDef gear;
+    gear.joint1 = axle1;
+    gear.joint2 = axle2;
+    gear.ratio = 2.0;
+    world.createGearJoint(gear);
+
+    WeldJointDef weld;
+    weld.bodyA = body({-0.5, 0.0});
+    weld.bodyB = body({0.5, 0.0});
+    weld.anchor = {0.0, 0.0};
+    world.createWeldJoint(weld);
+
+    Canvas canvas;
+    DebugDrawOptions options;
+    options.joints = true;
+    canvas.draw(world, options, "debug_joint_kinds");
+    const auto teal = [](sf::Color c) { return c.r < 80 && c.g > 90 && c.b > 90; };
+    const auto at = [&](const Vec2& anchor, double angle, double metres) {
+        return canvas.at(anchor + metres * Vec2(std::cos(angle), std::sin(angle)));
+    };
+
+    const Vec2 p(-3.0, 2.0);
+    EXPECT_TRUE(teal(canvas.at(p + Vec2(-0.05, 0.0)))) << "revolute: a ring of 5 px around its anchor";
+    EXPECT_EQ(canvas.at(p), sf::Color::White) << "revolute: a ring, not a dot";
+    EXPECT_TRUE(teal(at(p, M_PI / 2, 0.15))) << "revolute: the upper limit's ray, straight up";
+    EXPECT_TRUE(teal(at(p, -M_PI / 4, 0.15))) << "revolute: the lower limit's ray, down to the right";
+    EXPECT_EQ(at(p, M_PI, 0.15), sf::Color::White) << "revolute: no ray to the left";
+
+    const Vec2 s(0.0, 2.0);
+    EXPECT_TRUE(teal(canvas.at(s + Vec2(0.6, 0.0)))) << "prismatic: its axis line, out to the upper limit";
+    EXPECT_TRUE(teal(canvas.at(s + Vec2(0.8, 0.04)))) << "prismatic: the upper limit's tick across the axis";
+    EXPECT_TRUE(teal(canvas.at(s + Vec2(-0.5, -0.04)))) << "prismatic: the lower limit's tick";
+    EXPECT_EQ(canvas.at(s + Vec2(0.3, 0.05)), sf::Color::White) << "prismatic: no tick between the limits";
+    EXPECT_EQ(canvas.at(s + Vec2(1.0, 0.0)), sf::Color::White) << "prismatic: the axis ends past the limit";
+
+    const Vec2 w(3.0, 2.0);
+    EXPECT_TRUE(teal(canvas.at(w + Vec2(0.0, 0.2)))) << "wheel: its axis, vertical, 25 px either side";
+    EXPECT_TRUE(teal(canvas.at(w + Vec2(0.0, -0.2))));
+    EXPECT_EQ(canvas.at(w + Vec2(0.2, 0.0)), sf::Color::White) << "wheel: nothing across its axis";
+
+    EXPECT_TRUE(teal(canvas.at({-2.0, -1.0}))) << "pulley: the line between its ground anchors";
+    EXPECT_TRUE(teal(canvas.at({-3.0, -1.75}))) << "pulley: A's rope";
+    EXPECT_TRUE(teal(canvas.at({-1.0, -1.75}))) << "pulley: B's rope";
+    EXPECT_EQ(canvas.at({-2.0, -1.75}), sf::Color::White) << "pulley: no line between its bodies";
+
+    EXPECT_TRUE(teal(canvas.at({2.25, -2.0}))) << "gear: the line between its bodies' centres";
+
+    EXPECT_TRUE(teal(canvas.at({0.05, 0.0}))) << "weld: a square of 10 px at its anchor";
+    EXPECT_TRUE(teal(canvas.at({0.0, -0.05})));
+    EXPECT_EQ(canvas.at({0.0, 0.0}), sf::Color::White) << "weld: a square, not a dot";
 }
 
 }  // namespace
