@@ -140,7 +140,8 @@ void ray(Lines& lines, sf::Vector2f c, sf::Vector2f u, float from, float to, sf:
 // square, a mouse joint as a line to its target's square, the other kinds as a line between their anchors.
 template <class ToPixels>
 void drawJoint(const World& world, JointId id, const ToPixels& px, Lines& lines) {
-    const auto [a, b] = world.jointAnchors(id);
+    const std::pair<Vec2, Vec2> anchors = world.jointAnchors(id);  // not a structured binding: lambdas capture it
+    const Vec2 a = anchors.first, b = anchors.second;
     switch (world.jointType(id)) {
         case JointType::Mouse:
             lines.add(px(a), px(b), kMouse);
