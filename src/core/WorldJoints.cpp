@@ -17,6 +17,9 @@
 namespace physim {
 namespace {
 
+// 1 / the last step's substep, 1/s: turns a joint's impulses per substep into forces (0 before the first step).
+double substepRate(const WorldImpl& w) { return w.dt > 0.0 ? 1.0 / (w.dt / w.settings.substeps) : 0.0; }
+
 bool breakable(const JointData& j) {
     return j.breakForce < std::numeric_limits<double>::infinity() ||
            j.breakTorque < std::numeric_limits<double>::infinity();
@@ -175,7 +178,7 @@ bool WorldImpl::jointKeepsApart(std::uint32_t a, std::uint32_t b) const {
 }
 
 void WorldImpl::breakJoints() {
-    const double invH = dt > 0.0 ? 1.0 / (dt / settings.substeps) : 0.0;
+    const double invH = substepRate(*this);
     for (std::uint32_t i = 0; i < joints.size(); ++i) {
         const JointData& j = joints[i];
         if (!j.alive || !breakable(j) || !j.isRow()) continue;
@@ -223,18 +226,13 @@ namespace {
 
 // The last step's joint reaction: impulses accumulated per substep become a force and a torque over it.
 JointReaction reactionOf(const WorldImpl& w, const JointData& j) {
-    const double invH = w.dt > 0.0 ? 1.0 / (w.dt / w.settings.substeps) : 0.0;
-    return jointReaction(j, w.bodies, invH);
+    return jointReaction(j, w.bodies, substepRate(w));
 }
 
 }  // namespace
 
 Vec2 World::jointReactionForce(JointId id) const { return reactionOf(*impl_, joint(id)).force; }
 double World::jointReactionTorque(JointId id) const { return reactionOf(*impl_, joint(id)).torque; }
-
-namespace {
-double substepRate(const WorldImpl& w) { return w.dt > 0.0 ? 1.0 / (w.dt / w.settings.substeps) : 0.0; }
-}  // namespace
 
 double World::jointMotorTorque(JointId id) const {
     return physim::jointMotorTorque(joint(id), substepRate(*impl_));
