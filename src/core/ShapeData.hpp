@@ -26,6 +26,8 @@ struct ShapeData {
     double staticFriction = 0.0;
     double dynamicFriction = 0.0;
     MassProperties unitMass;               // per unit density
+    Filter filter;                         // which shapes it may pair with
+    bool sensor = false;                   // reports overlaps, never collides
 
     std::int32_t next = kNullIndex;        // the body's next shape
     std::uint32_t generation = 0;
@@ -41,6 +43,8 @@ inline void assignShape(ShapeData& s, std::uint32_t body, const ShapeDef& def, c
     s.restitution = def.restitution;
     s.staticFriction = def.staticFriction;
     s.dynamicFriction = def.dynamicFriction;
+    s.filter = def.filter;
+    s.sensor = def.isSensor;
 }
 
 }  // namespace physim

@@ -32,6 +32,19 @@ void runStage(StepProfile& profile, Stage s, bool needed, Work&& work) {
     profile.ran[static_cast<std::size_t>(s)] = true;
 }
 
+// The body's first shape, from the shape fields of its definition.
+ShapeDef firstShapeDef(const BodyDef& def) {
+    ShapeDef shape;
+    shape.geometry = def.shape;
+    shape.density = def.density;
+    shape.restitution = def.restitution;
+    shape.staticFriction = def.staticFriction;
+    shape.dynamicFriction = def.dynamicFriction;
+    shape.filter = def.filter;
+    shape.isSensor = def.isSensor;
+    return shape;
+}
+
 void requireBodyType(BodyType type) {
     if (type != BodyType::Static && type != BodyType::Kinematic && type != BodyType::Dynamic)
         throw std::invalid_argument("physim: body type must be Static, Kinematic or Dynamic, got " +
@@ -192,9 +205,7 @@ BodyId World::createBody(const BodyDef& def) {
     b.type = def.type;
     if (def.withShape) {
         const std::uint32_t s = takeSlot(w.shapes, w.freeShapes);
-        assignShape(w.shapes[s], index,
-                    ShapeDef{def.shape, def.density, def.restitution, def.staticFriction, def.dynamicFriction},
-                    massed.unitMass);
+        assignShape(w.shapes[s], index, firstShapeDef(def), massed.unitMass);
         b.shapeHead = b.shapeTail = static_cast<std::int32_t>(s);
         b.shapeCount = 1;
         ++w.shapeLiveCount;

@@ -43,6 +43,8 @@ struct BodyDef {
     double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+    Filter filter{};                   ///< the first shape's collision filter (Filter.hpp)
+    bool isSensor = false;             ///< true: the first shape collides with nothing, reports overlaps instead
     bool useGravity = true;
     double gravityScale = 1.0;         ///< finite: the body feels gravityScale times the world's gravity
     bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it

@@ -3,6 +3,7 @@
 // may gain more (World::createShape, World::createChain): its mass, centre of mass and inertia come from all of
 // them, and each keeps its own material, so a hammer's steel head and wooden handle are one body.
 
+#include "physim/core/Filter.hpp"
 #include "physim/core/Geometry.hpp"
 
 #include <cstdint>
@@ -31,6 +32,8 @@ struct ShapeDef {
     double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
     double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
     double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+    Filter filter{};                   ///< which shapes it may collide with (Filter.hpp)
+    bool isSensor = false;             ///< true: collides with nothing, reports overlaps instead
 };
 
 /// A chain (World::createChain): ground or walls as a polyline of many pieces (makeChain, Geometry.hpp), smooth
