@@ -113,8 +113,12 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             if (!joint.alive || !joint.isRow()) continue;
             const bool active = w.bodies[joint.b].awake() || (joint.twoBodies() && w.bodies[joint.a].awake());
             if (!active) continue;
-            const JointConstraint row = jointRow(w, j, h, rodSoftness);
-            jointConstraints.push_back(row);
+            jointConstraints.push_back(jointRow(w, j, h, rodSoftness));
+        }
+        // Chains of pins under a large mass ratio are solved as blocks, after the colours (PinChains.hpp).
+        chains.find(jointConstraints, n, w.settings.directChainMassRatio);
+        for (const JointConstraint& row : jointConstraints) {
+            const JointData& joint = w.joints[row.joint];
             auto used = [&](std::uint32_t body) -> std::uint32_t* {
                 const BodyData& b = w.bodies[body];
                 const bool moves = b.type == BodyType::Dynamic && b.awakeIndex != kNullIndex;
@@ -124,7 +128,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             std::uint32_t* const usedB = used(joint.b);
             const std::uint32_t free = ~((usedA ? *usedA : 0u) | (usedB ? *usedB : 0u)) & kAllColours;
             std::uint32_t colour = kColours;
-            if (free != 0 && jointColoured(joint)) {
+            if (free != 0 && jointColoured(joint) && !row.chained) {
                 colour = static_cast<std::uint32_t>(__builtin_ctz(free));
                 if (usedA) *usedA |= std::uint32_t{1} << colour;
                 if (usedB) *usedB |= std::uint32_t{1} << colour;
@@ -210,15 +214,23 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         for (std::size_t g = 0; g <= groups; ++g) groupJointStart[g] = jointSegmentStart[g * kSegments];
         groupedJoints.resize(jointConstraints.size());
         segmentFill.assign(jointSegmentStart.begin(), jointSegmentStart.end() - 1);
-        for (std::size_t k = 0; k < jointConstraints.size(); ++k)
-            groupedJoints[segmentFill[jointSegment[k]]++] = jointConstraints[k];
+        sortedJointIndex.resize(jointConstraints.size());
+        for (std::size_t k = 0; k < jointConstraints.size(); ++k) {
+            sortedJointIndex[k] = segmentFill[jointSegment[k]]++;
+            groupedJoints[sortedJointIndex[k]] = jointConstraints[k];
+        }
         jointConstraints.swap(groupedJoints);
+        chains.sorted(sortedJointIndex, groups, [&](std::uint32_t r) {
+            const JointConstraint& row = jointConstraints[r];
+            return bodyGroup[static_cast<std::size_t>(row.indexB != kNullIndex ? row.indexB : row.indexA)];
+        });
     } else {
         shareHeads.clear();
         segmentStart.assign(groups * kSegments + 1, 0);
         blockStart.assign(groups * kSegments + 1, 0);
         groupJointStart.assign(groups + 1, 0);
         jointSegmentStart.assign(groups * kSegments + 1, 0);
+        chains.clear(groups);
     }
 
     return rowCount;

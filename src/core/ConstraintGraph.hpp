@@ -11,6 +11,7 @@
 #include "ContactSolver.hpp"
 #include "JointData.hpp"
 #include "SolverData.hpp"
+#include "joints/PinChains.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -73,6 +74,8 @@ struct ConstraintGraph {
     std::vector<JointConstraint> jointConstraints;  // group by group
     std::vector<JointConstraint> groupedJoints;
     std::vector<std::uint32_t> jointSegment;     // per joint row while laying out: its segment
+    std::vector<std::uint32_t> sortedJointIndex; // per joint row while laying out: its place once sorted
+    PinChains chains;                            // chains of pins solved as blocks, group by group
     // The layout above (colours, rows, blocks, groups) depends only on the awake bodies and contacts (their order,
     // the bodies' types and detection, which contacts have points), the joints and the thread count: while none of
     // that changes, a step keeps the last one's (Solver::solve). Whatever changes it sets stale.

@@ -137,7 +137,11 @@ void Solver::solve(WorldImpl& w) {
         StageTimer timer(w.profile, Stage::Solve);
         std::vector<JointConstraint>& rows = graph_.jointConstraints;
         w.executor.parallelFor(rows.size(), kJointPrepareGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t k = begin; k < end; ++k) rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
+            for (std::size_t k = begin; k < end; ++k) {
+                const bool chained = rows[k].chained;
+                rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
+                rows[k].chained = chained;
+            }
         });
     }
     std::size_t rowCount = graph_.rowContacts.size();
@@ -175,6 +179,7 @@ void Solver::solve(WorldImpl& w) {
     pushVelocities_.assign(n, PushVelocity{});
     rowsBase_.resize(n);
     warmStarts_.resize(n);
+    if (!graph_.chains.rows.empty()) chainScratch_.resize(static_cast<std::size_t>(w.executor.workerSlots()));
     std::atomic<std::size_t> turningRows{0};
     for (std::size_t g = 0; g < groups; ++g)
         if (graph_.spreads(g, w.executor.threads(), n)) turningRows += solveGroup(w, g, true, 0);
@@ -333,8 +338,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                           : (head ? std::make_pair(mid, cut) : std::make_pair(cut, end));
     };
     // Joint rows: colour by colour, each colour's pin blocks (pinsWork(begin, end)) and other rows in parallel,
-    // then the joints' overflow row after row.
-    auto jointPass = [&](auto&& pinsWork, auto&& jointWork) {
+    // then the joints' overflow row after row, then the chains (chainsWork(), which solve passes give).
+    auto jointPass = [&](auto&& pinsWork, auto&& jointWork, auto&& chainsWork) {
         for (std::size_t col = 0; col < kColours; ++col) {
             const std::size_t s = g * kSegments + col;
             const std::size_t firstBlock = pinBlockStart_[s], blocks = pinBlockStart_[s + 1] - firstBlock;
@@ -350,9 +355,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         const std::uint32_t* const overflow = graph_.jointSegmentStart.data() + g * kSegments + kColours;
         for (std::uint32_t j = overflow[0]; j < overflow[1]; ++j)
             jointWork(graph_.jointConstraints[j], w.joints[graph_.jointConstraints[j].joint]);
+        chainsWork();
     };
-    auto pass = [&](auto&& rowsWork, auto&& pinsWork, auto&& jointWork) {
-        jointPass(pinsWork, jointWork);
+    auto pass = [&](auto&& rowsWork, auto&& pinsWork, auto&& jointWork, auto&& chainsWork) {
+        jointPass(pinsWork, jointWork, chainsWork);
         if (ordered) {
             w.executor.forLoopsInOrder(colourCount, [&](std::size_t loop, int share, bool head) {
                 const auto [begin, end] = halfOf(loop, share, head);
@@ -422,7 +428,16 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                  solvePins(pinBlocks_.data() + b, pinBlocks_.data() + e, st, useBias);
                  if (store) storePins(pinBlocks_.data() + b, pinBlocks_.data() + e, w.joints);
              },
-             [&](const JointConstraint& row, JointData& joint) { solveJoint(row, joint, st, useBias); });
+             [&](const JointConstraint& row, JointData& joint) {
+                 if (!row.chained) solveJoint(row, joint, st, useBias);
+             },
+             [&] {
+                 const PinChains& chains = graph_.chains;
+                 for (std::uint32_t c = chains.groupChainStart[g]; c < chains.groupChainStart[g + 1]; ++c)
+                     solveChain(chains.rows.data() + chains.chainStart[c], chains.chainStart[c + 1] - chains.chainStart[c],
+                                graph_.jointConstraints.data(), w.joints, st, useBias,
+                                chainScratch_[static_cast<std::size_t>(worker)]);
+             });
     };
 
     // On two threads, a substep's solve passes, position integration and relax passes are one ordered sequence
@@ -507,7 +522,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                                       pinBlockCount(k), w.joints);
                                      warmStartPins(pinBlocks_.data() + b, pinBlocks_.data() + e, st);
                                  },
-                                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); });
+                                 [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); },
+                                 [] {});
                             if (bounces.load(std::memory_order_relaxed))
                                 forBodies([&](std::size_t i) {
                                     if (sims_[i].dynamic) recordWarmStart(st[i], base[i], warm[i]);

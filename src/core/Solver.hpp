@@ -73,6 +73,7 @@ private:
     std::vector<std::uint32_t> pinBlockStart_;
     std::vector<std::uint32_t> otherJointRows_;
     std::vector<std::uint32_t> otherJointStart_;
+    std::vector<ChainScratch> chainScratch_;  // per worker: solveChain's scratch
     std::vector<std::uint8_t> enlarged_;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
                                           // proxy to move after the Continuous stage (bit 2)
     bool fastBodies_ = false;             // a dynamic body moved more than half its core radius

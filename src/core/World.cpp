@@ -111,6 +111,9 @@ void validate(const WorldSettings& s) {
     requirePositive("contactPushMaxVelocity", s.contactPushMaxVelocity);
     requirePositive("jointHertz", s.jointHertz);
     requireNonNegative("jointDampingRatio", s.jointDampingRatio);
+    if (!(s.directChainMassRatio >= 1.0))
+        throw std::invalid_argument("physim: directChainMassRatio must be >= 1 (infinity: no direct chains), got " +
+                                    std::to_string(s.directChainMassRatio));
     requireNonNegative("linearSlop", s.linearSlop);
     requireNonNegative("restitutionThreshold", s.restitutionThreshold);
     requireNonNegative("impactSpeedThreshold", s.impactSpeedThreshold);

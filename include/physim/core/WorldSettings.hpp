@@ -21,6 +21,11 @@ struct WorldSettings {
     double contactPushMaxVelocity = 3.0; ///< m/s: deep overlaps separate no faster than this
     double jointHertz = 120.0;           ///< joint stiffness, Hz (also capped at a quarter of the substep rate)
     double jointDampingRatio = 1.0;      ///< critical: stretch dies out without draining a swing
+    /// A chain of pins (revolute joints without motor, limit or spring, each body pinned at most twice) whose
+    /// bodies' masses differ by this factor or more is solved as one block, exactly, in every pass: a heavy weight
+    /// on light links then stretches the chain by its top pin's give alone (docs/dynamics.md). >= 1; 1: every
+    /// chain; infinity: none (each pin on its own, like other rows).
+    double directChainMassRatio = 4.0;
     double linearSlop = 0.005;        ///< m: speculative contacts reach 4 slops; touching is within that
     /// m/s: below e = 1, slower approaches do not bounce, so resting bodies settle. e = 1 bounces at any speed.
     double restitutionThreshold = 1.0;

@@ -26,6 +26,7 @@ struct JointConstraint {
     std::uint32_t joint = 0;
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: fixed
     bool inLanes = false;  // a pin solved in lanes this step (Joints.hpp's jointInLanes, PinLanes.hpp)
+    bool chained = false;  // a pin of a chain solved as one block (PinChains.hpp); kept with the layout
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();    // lever arms from the centres of mass at the start, m
     Vec2 deltaCenter = Vec2::Zero();  // centre of B minus centre of A at the start (a world end: minus its point)
     Vec2 groundB = Vec2::Zero();      // pulley: its ground anchor B minus B's centre at the start, m
