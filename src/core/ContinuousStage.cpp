@@ -157,6 +157,12 @@ void ContinuousStage::run(WorldImpl& w) {
                 return true;
             });
             for (const std::uint32_t otherShape : found_) {
+                // Shapes that may not collide (Filter.hpp) pass through each other here too; a pair with a contact
+                // was allowed when it was made, one without is asked.
+                if (!shouldCollide(shape.filter, w.shapes[otherShape].filter)) continue;
+                if (w.pairFilter && !w.contactExists(std::min(mineShape, otherShape), std::max(mineShape, otherShape)) &&
+                    !w.pairAllowed(mineShape, otherShape))
+                    continue;
                 const std::uint32_t other = w.shapes[otherShape].body;
                 const BodyData& o = w.bodies[other];
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;
