@@ -182,9 +182,8 @@ void ContinuousStage::run(WorldImpl& w) {
                 // Shapes that may not collide (Filter.hpp) pass through each other here too; a pair with a contact
                 // was allowed when it was made, one without is asked.
                 if (!shouldCollide(shape.filter, w.shapes[otherShape].filter)) continue;
-                if (w.pairFilter && !w.contactExists(std::min(mineShape, otherShape), std::max(mineShape, otherShape)) &&
-                    !w.pairAllowed(mineShape, otherShape))
-                    continue;
+                const std::uint32_t low = std::min(mineShape, otherShape), high = std::max(mineShape, otherShape);
+                if (w.pairFilter && !w.contactExists(low, high) && !w.pairAllowed(mineShape, otherShape)) continue;
                 const std::uint32_t other = w.shapes[otherShape].body;
                 const BodyData& o = w.bodies[other];
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;

@@ -21,7 +21,8 @@ void WorldImpl::applyFilterChanges() {
     auto recheck = [&](std::uint32_t index) {
         const ContactData& c = contacts[index];
         if (pairAllowed(c.shapeA(), c.shapeB())) return;
-        if (c.touching) events.end.push_back({c.manifold.bodyA, c.manifold.bodyB, c.manifold.shapeA, c.manifold.shapeB});
+        const Manifold& m = c.manifold;
+        if (c.touching) events.end.push_back({m.bodyA, m.bodyB, m.shapeA, m.shapeB});
         destroyContact(index, true);
     };
     // Pairs the filters now allow are offered again: a refused pair was taken and dropped, so the broad phase would

@@ -14,7 +14,8 @@ namespace {
 std::map<std::string, physim::test::LessonResult> runOneWay(const std::string& name, const std::string& more = "") {
     const auto dir = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(dir);
-    const auto r = physim::test::runProgram(PHYSIM_ONE_WAY, "--headless --seconds 4 " + more + " --out " + dir.string());
+    const std::string options = "--headless --seconds 4 " + more + " --out " + dir.string();
+    const auto r = physim::test::runProgram(PHYSIM_ONE_WAY, options);
     EXPECT_EQ(r.exitCode, 0) << r.output;
     auto results = physim::test::readResults((dir / "summary.json").string());
     std::filesystem::remove_all(dir);
