@@ -12,6 +12,7 @@
 //   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
 //   WorldEffects.cpp   the public API of the effects
+//   WorldFilters.cpp   collision filters and the contact hooks (pair filter, pre-solve): their API and step work
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
 #include "BodyData.hpp"
