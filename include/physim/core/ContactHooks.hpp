@@ -18,8 +18,9 @@ using PairFilterCallback = std::function<bool(ShapeId a, ShapeId b)>;
 /// Called every step for each awake contact with points (its normal from A to B, its points and separations, the
 /// impulses of the last step), after the narrow phase and before the solver, one contact after another in a fixed
 /// order (deterministic). Returning false disables the contact for this step: it gives the solver nothing, does
-/// not touch (a touching contact ends with an end event; contacts() omits it) and its impulses are dropped. It
-/// may read the world but not change it (std::logic_error).
+/// not touch (a touching contact ends with an end event; contacts() omits it) and its impulses are dropped. The
+/// Continuous stage asks it too about each impact it finds (the contact the two shapes would make at the impact
+/// pose), so a fast body passes where a slow one would. It may read the world but not change it (std::logic_error).
 using PreSolveCallback = std::function<bool(const Manifold& contact)>;
 
 }  // namespace physim
