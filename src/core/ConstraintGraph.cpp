@@ -71,6 +71,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColours) - 1;
         constraintColour.assign(w.awakeContacts.size(), -1);
         rowRefs.resize(w.awakeContacts.size());
+        const bool hooked = static_cast<bool>(w.preSolve);  // contacts may be disabled (WorldImpl::runPreSolve)
         for (std::size_t k = 0; k < w.awakeContacts.size(); ++k) {
             // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead.
             if (k + 2 * kPrefetchContacts < w.awakeContacts.size())
@@ -81,7 +82,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
                 __builtin_prefetch(&w.bodies[ahead.b()].awakeIndex);
             }
             const ContactData& c = w.contacts[w.awakeContacts[k]];
-            if (c.manifold.pointCount == 0) continue;
+            if (c.manifold.pointCount == 0 || (hooked && c.disabled)) continue;
             const BodyData& A = w.bodies[c.a()];
             const BodyData& B = w.bodies[c.b()];
             // The lowest colour neither dynamic body has yet; the overflow if both have them all.

@@ -61,6 +61,9 @@ struct alignas(64) ContactData {
     std::uint32_t generation = 0;
     // The shapes' proxy keys, fixed while the contact lives (a shape's proxy is remade only after its contacts end).
     std::int32_t proxyA = kNullIndex, proxyB = kNullIndex;
+    // The pre-solve hook disabled it this step (World::setPreSolve): no row although it has points. Read only while
+    // a hook is set.
+    bool disabled = false;
 
     std::uint32_t a() const { return manifold.bodyA.index; }  // body slots
     std::uint32_t b() const { return manifold.bodyB.index; }

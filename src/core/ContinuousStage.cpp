@@ -1,6 +1,7 @@
 #include "ContinuousStage.hpp"
 
 #include "ContinuousCpu.hpp"
+#include "Manifolds.hpp"
 #include "WorldImpl.hpp"
 #include "shapes/ShapeKinds.hpp"
 
@@ -23,6 +24,27 @@ double deepest(const Geometry& a, const Transform& xa, const Geometry& b, const 
 // How far the outline can move per radian the body turns about its origin, m (ShapeKind.hpp).
 double turningRadius(const Geometry& g) {
     return withKind(g, [](auto kind, const auto& s) { return kind.turningRadius(s); });
+}
+
+// Whether the pre-solve hook lets an impact at time t of the sweeps stand (World::setPreSolve): it is asked about
+// the contact the two shapes would make there, as the narrow phase builds one (shape slots in order, the normal
+// from the first to the second, points within the speculative distance). A one-way platform is passed this way by
+// bodies fast enough for this stage, as by the others in the narrow phase.
+bool impactAllowed(const WorldImpl& w, std::uint32_t mine, const Sweep& mySweep, std::uint32_t theirs,
+                   const Sweep& theirSweep, double t) {
+    const bool mineFirst = mine < theirs;
+    const std::uint32_t first = mineFirst ? mine : theirs, second = mineFirst ? theirs : mine;
+    const Transform x1 = (mineFirst ? mySweep : theirSweep).at(t), x2 = (mineFirst ? theirSweep : mySweep).at(t);
+    NarrowResult r = collideGeometries(w.shapes[first].geometry, x1, w.shapes[second].geometry, x2,
+                                       4.0 * w.settings.linearSlop);
+    Manifold& m = r.manifold;
+    if (m.pointCount == 0) return true;  // not touching there: nothing to ask about
+    const std::uint32_t a = w.shapes[first].body, b = w.shapes[second].body;
+    m.bodyA = BodyId{a, w.bodies[a].generation};
+    m.bodyB = BodyId{b, w.bodies[b].generation};
+    m.shapeA = ShapeId{first, w.shapes[first].generation};
+    m.shapeB = ShapeId{second, w.shapes[second].generation};
+    return w.preSolve(m);
 }
 
 }  // namespace
@@ -157,6 +179,11 @@ void ContinuousStage::run(WorldImpl& w) {
                 return true;
             });
             for (const std::uint32_t otherShape : found_) {
+                // Shapes that may not collide (Filter.hpp) pass through each other here too; a pair with a contact
+                // was allowed when it was made, one without is asked.
+                if (!shouldCollide(shape.filter, w.shapes[otherShape].filter)) continue;
+                const std::uint32_t low = std::min(mineShape, otherShape), high = std::max(mineShape, otherShape);
+                if (w.pairFilter && !w.contactExists(low, high) && !w.pairAllowed(mineShape, otherShape)) continue;
                 const std::uint32_t other = w.shapes[otherShape].body;
                 const BodyData& o = w.bodies[other];
                 const Geometry& theirGeometry = w.shapes[otherShape].geometry;
@@ -178,8 +205,11 @@ void ContinuousStage::run(WorldImpl& w) {
                 }
                 if (b.detection == CollisionDetection::ContinuousSampled) {
                     const Sweep& theirs = sweepFor(other);
+                    const double before = c.t;
                     consider(c, sampledTimeOfImpact(myGeometry, c.sweep, theirGeometry, theirs, b.precision),
                              myGeometry, theirGeometry, theirs, slop);
+                    if (w.preSolve && c.t < before && !impactAllowed(w, mineShape, c.sweep, otherShape, theirs, c.t))
+                        c.t = before;
                 } else {
                     // Two exact candidates: one test serves both, asked by the one in the lower slot.
                     const std::int32_t partner = candidateOf_[other];
@@ -206,10 +236,19 @@ void ContinuousStage::run(WorldImpl& w) {
             const Geometry& mine = w.shapes[pairShapes_[p].first].geometry;
             const Geometry& theirs = w.shapes[pairShapes_[p].second].geometry;
             const ToiResult r = batchResult_.toi(p);
-            consider(c, r, mine, theirs, sweeps_[pairPartner_[p]], slop);
+            const auto [mineShape, otherShape] = pairShapes_[p];
+            const Sweep& theirSweep = sweeps_[pairPartner_[p]];
+            const double before = c.t;
+            consider(c, r, mine, theirs, theirSweep, slop);
+            if (w.preSolve && c.t < before && !impactAllowed(w, mineShape, c.sweep, otherShape, theirSweep, c.t))
+                c.t = before;
             if (pairPartnerCandidate_[p] >= 0) {
                 Candidate& d = candidates_[static_cast<std::size_t>(pairPartnerCandidate_[p])];
+                const double partnerBefore = d.t;
                 consider(d, r, theirs, mine, c.sweep, slop);
+                if (w.preSolve && d.t < partnerBefore &&
+                    !impactAllowed(w, otherShape, theirSweep, mineShape, c.sweep, d.t))
+                    d.t = partnerBefore;
             }
         }
     }

@@ -550,6 +550,8 @@ void World::step(double dt) {
     w.events.impacts.clear();
     w.jointEvents.broken.clear();
     w.touchingValid = false;
+    // Filters changed since the last step act now, so their contacts' end events are this step's.
+    if (!w.refiltered.empty() || w.refilterAll) w.applyFilterChanges();
 
     // Bodies made or changed since the last step got proxies before dt was known: grow them for this step's motion.
     for (const std::uint32_t slot : w.touched) {

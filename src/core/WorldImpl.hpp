@@ -12,6 +12,7 @@
 //   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
 //   WorldEffects.cpp   the public API of the effects
+//   WorldFilters.cpp   collision filters and the contact hooks (pair filter, pre-solve): their API and step work
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
 #include "BodyData.hpp"
@@ -27,6 +28,7 @@
 #include "effects/Effects.hpp"
 
 #include "physim/core/Contact.hpp"
+#include "physim/core/ContactHooks.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
 
@@ -95,6 +97,12 @@ struct WorldImpl {
     std::vector<std::uint32_t> splitMembers;
     std::vector<std::uint32_t> found;             // broad-phase query results
     std::vector<std::uint32_t> sleepy;           // islands ready to sleep this step
+
+    // Filters and contact hooks (WorldFilters.cpp): each costs a flag test per step while unused.
+    PairFilterCallback pairFilter;          // null: the shapes' filters alone decide
+    PreSolveCallback preSolve;              // null: no contact is asked
+    std::vector<std::uint32_t> refiltered;  // shape slots whose filter changed since the last step
+    bool refilterAll = false;               // the pair filter changed: every contact is asked again
 
     StepProfile profile;
     ContactEvents events;
@@ -173,6 +181,16 @@ struct WorldImpl {
     void updateContacts();   // the narrow phase over the awake contacts
     void addAwakeContact(std::uint32_t contact);
     void removeAwakeContact(std::uint32_t contact);
+
+    // WorldFilters.cpp
+    /// Whether shapes a and b (slots, of two bodies) may make a contact: their filters, then the pair filter.
+    bool pairAllowed(std::uint32_t a, std::uint32_t b) const;
+    /// At the step's start, after a filter change: the contacts now refused end (end events; their bodies wake) and
+    /// the changed shapes' pairs are offered again.
+    void applyFilterChanges();
+    /// After the narrow phase (preSolve set): each awake contact with points is asked, in the awake list's order; a
+    /// disabled one does not touch and has no row this step.
+    void runPreSolve();
 
     // Islands.cpp
     void createIsland(std::uint32_t bodySlot);

@@ -211,6 +211,7 @@ std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
         d.restitution = def.restitution;
         d.staticFriction = def.staticFriction;
         d.dynamicFriction = def.dynamicFriction;
+        d.filter = def.filter;
         pieces.push_back(d);
     }
     return addShapes(id, pieces, "createChain");

@@ -27,6 +27,7 @@ void validate(const Material& m) {
 Object::Object(const Mesh& m, std::unique_ptr<CollisionShape> s) : mesh(m), shape(requireShape(std::move(s))) {
     registerMemberBehavior(mesh);
     registerMemberBehavior(rb);
+    rb.setFilter(shape->filter());
     if (shape->getType() == ShapeType::CHAIN) {
         const auto& chain = static_cast<const ChainShape&>(*shape);
         rb.setChain(chain.points(), chain.loop());
@@ -56,6 +57,7 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         def.restitution = material.restitution;
         def.staticFriction = material.staticFriction;
         def.dynamicFriction = material.dynamicFriction;
+        def.filter = s->filter();
         rb.addChain(def);
     } else {
         ShapeDef def;
@@ -64,6 +66,7 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         def.restitution = material.restitution;
         def.staticFriction = material.staticFriction;
         def.dynamicFriction = material.dynamicFriction;
+        def.filter = s->filter();
         rb.addShape(def);
     }
     Mesh drawn = partMesh ? *partMesh : Mesh::ShapeMesh(*s, mesh.shape().getFillColor());

@@ -128,6 +128,7 @@ void RigidBody::createMoreShapes() {
         c.restitution = def_.restitution;
         c.staticFriction = def_.staticFriction;
         c.dynamicFriction = def_.dynamicFriction;
+        c.filter = def_.filter;
         world_->createChain(id_, c);
     }
     for (const auto& m : more_) {
@@ -274,6 +275,22 @@ std::optional<Vec2> RigidBody::checkContinuousCollision(const Vec2& position, co
         }
     if (!first) return std::nullopt;
     return path.at(*first).p;
+}
+
+void RigidBody::setFilter(const Filter& filter) {
+    if (world_) {
+        world_->setFilter(id_, filter);
+        return;
+    }
+    def_.filter = filter;
+    for (auto& m : more_)
+        if (auto* d = std::get_if<ShapeDef>(&m)) d->filter = filter;
+        else std::get<ChainDef>(m).filter = filter;
+}
+
+Filter RigidBody::filter() const {
+    if (world_ && !world_->shapes(id_).empty()) return world_->filter(world_->shapes(id_).front());
+    return def_.filter;  // the first shape's, a chain's too (createMoreShapes)
 }
 
 bool RigidBody::isAwake() const { return world_ ? world_->isAwake(id_) : true; }

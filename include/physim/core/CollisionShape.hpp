@@ -5,6 +5,7 @@
 
 #include "physim/core/Aabb.hpp"
 #include "physim/core/Colliding.hpp"
+#include "physim/core/Filter.hpp"
 #include "physim/core/Geometry.hpp"
 #include "physim/core/Math.hpp"
 
@@ -49,6 +50,11 @@ public:
     /// Places the shape: its local origin (the body origin) at `position`, rotated by `angle` rad.
     void setTransform(const Vec2& position, double angle);
 
+    /// The collision filter its body's shape gets (Filter.hpp): an Object reads it when it is made from this shape
+    /// or adds it as a part. Once the object is in a simulation, RigidBody::setFilter or World::setFilter change it.
+    const Filter& filter() const { return filter_; }
+    void setFilter(const Filter& filter) { filter_ = filter; }
+
 protected:
     explicit CollisionShape(Geometry geometry);
     /// A shape of several pieces (a chain), at least one; each validated.
@@ -59,6 +65,7 @@ private:
     std::vector<Geometry> morePieces_;  // after the first: only a chain has them
     Transform transform_;
     double angle_ = 0.0;
+    Filter filter_;
 };
 
 }  // namespace physim

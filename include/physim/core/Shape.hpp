@@ -45,6 +45,7 @@ struct ChainDef {
     double restitution = 0.0;          ///< in [0, 1]
     double staticFriction = 0.6;       ///< >= 0
     double dynamicFriction = 0.4;      ///< >= 0
+    Filter filter{};                   ///< every piece's collision filter (Filter.hpp)
 };
 
 }  // namespace physim

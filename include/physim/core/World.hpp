@@ -18,6 +18,8 @@
 
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
+#include "physim/core/ContactHooks.hpp"
+#include "physim/core/Filter.hpp"
 #include "physim/core/ForceCallback.hpp"
 #include "physim/core/Gravitation.hpp"
 #include "physim/core/Joint.hpp"
@@ -163,6 +165,23 @@ public:
     double dynamicFriction(ShapeId id) const;
     /// As setMaterial(BodyId, ...), for one shape. Wakes its body.
     void setMaterial(ShapeId id, double restitution, double staticFriction, double dynamicFriction);
+
+    // --- collision filtering (Filter.hpp, ContactHooks.hpp): each costs nothing while unused -----------------
+    /// The shape's filter. A change takes effect at the next step: its contacts the new filter refuses end (with
+    /// end events, waking their bodies), and the pairs it allows are found again. Wakes the shape's body (a static
+    /// body's: what its shape overlaps). A destroyed or stale id is refused with std::invalid_argument naming it.
+    void setFilter(ShapeId id, const Filter& filter);
+    const Filter& filter(ShapeId id) const;
+    /// Every shape of the body gets `filter`, as setFilter(ShapeId, ...); filter(BodyId) is its first shape's.
+    void setFilter(BodyId id, const Filter& filter);
+    const Filter& filter(BodyId id) const;
+    /// Asked once when a pair whose filters allow it would become a contact (PairFilterCallback); null: none. Takes
+    /// effect at the next step, as a filter change does: existing contacts it refuses end, and every pair is asked
+    /// again.
+    void setPairFilter(PairFilterCallback callback);
+    /// Called for each awake contact with points before the solver, every step (PreSolveCallback); false disables
+    /// the contact for that step (a one-way platform). Null: none.
+    void setPreSolve(PreSolveCallback callback);
 
     // --- effects (docs/effects.md): each costs nothing while no body uses it ---------------------------
     /// Finite; the body feels scale times the world's gravity (when useGravity). Wakes it.

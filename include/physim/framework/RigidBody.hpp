@@ -135,6 +135,12 @@ public:
     JointId join(RigidBody& other, WheelJointDef def);
     JointId join(RigidBody& other, MotorJointDef def);
 
+    /// Which shapes this body collides with (Filter.hpp: category and mask bits, a group), for every shape it has:
+    /// kept for the world before the entity is added, set in it at once afterwards (World::setFilter: acts at the
+    /// next step). A shape added later keeps its own ShapeDef's or ChainDef's filter. filter() is the first shape's.
+    void setFilter(const Filter& filter);
+    Filter filter() const;
+
     /// The body origin, m (the point the shape's coordinates are relative to) and its angle, rad.
     Vec2 position() const;
     double angle() const;

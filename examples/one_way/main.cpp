@@ -1,0 +1,4 @@
+// The one_way program: the scene in OneWay.cpp, in a window or --headless (--help lists the options).
+#include "Scenes.hpp"
+
+int main(int argc, char** argv) { return physim::runMain(argc, argv, physim::examples::makeOneWay); }
