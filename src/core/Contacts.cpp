@@ -520,21 +520,22 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 
 void WorldImpl::updatePairs() {
     const double speculative = 4.0 * settings.linearSlop;
-    // Pairs that never make a contact (two shapes of one body, two immovable bodies) are taken and dropped here:
-    // declined pairs are asked about again every step.
+    // Pairs that never make a contact (two shapes of one body, two immovable bodies, a sensor: the Sensors stage
+    // finds its overlaps itself) are taken and dropped here: declined pairs are asked about again every step.
     const auto wanted = [&](std::uint32_t a, std::uint32_t b) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
         const BodyData& A = bodies[bodyA];
         const BodyData& B = bodies[bodyB];
-        return bodyA == bodyB || !shouldCollide(A, B) || !deferred(A, B, speculative, dt);
+        return bodyA == bodyB || !shouldCollide(A, B) || shapes[a].sensor || shapes[b].sensor ||
+               !deferred(A, B, speculative, dt);
     };
     // Bodies joined by a joint without collideConnected meet only through it: their pair is taken and dropped.
     const bool joints = jointCount > 0;
     broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
     for (const auto& [a, b] : newPairs) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
-        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) &&
-            !(joints && jointKeepsApart(bodyA, bodyB)))
+        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) && !shapes[a].sensor &&
+            !shapes[b].sensor && !(joints && jointKeepsApart(bodyA, bodyB)))
             createContact(a, b);
     }
 }

@@ -11,6 +11,7 @@
 //   ContactSolver.cpp  the contact constraint rows
 //   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
+//   Sensors.cpp        sensors' overlaps and events
 //   WorldEffects.cpp   the public API of the effects
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
@@ -22,6 +23,7 @@
 #include "IslandData.hpp"
 #include "JointData.hpp"
 #include "PairSet.hpp"
+#include "Sensors.hpp"
 #include "ShapeData.hpp"
 #include "Solver.hpp"
 #include "effects/Effects.hpp"
@@ -80,6 +82,7 @@ struct WorldImpl {
     Solver solver;
     ContinuousStage continuous;
     Effects effects;
+    SensorStage sensors;  // Sensors.cpp: the sensor shapes, their overlaps and events
 
     // Step scratch, kept between steps so a running scene allocates nothing.
     std::vector<ShapePair> newPairs;
