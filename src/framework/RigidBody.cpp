@@ -120,6 +120,22 @@ void RigidBody::addChain(const ChainDef& def) {
     more_.emplace_back(def);
 }
 
+void RigidBody::setSensor(bool sensor) {
+    if (world_) {
+        for (const ShapeId s : world_->shapes(id_)) world_->setSensor(s, sensor);
+        return;
+    }
+    def_.isSensor = sensor;
+    for (auto& more : more_)
+        if (auto* shape = std::get_if<ShapeDef>(&more)) shape->isSensor = sensor;
+}
+
+bool RigidBody::isSensor() const {
+    if (!world_) return def_.isSensor;
+    const std::vector<ShapeId> shapes = world_->shapes(id_);
+    return !shapes.empty() && world_->isSensor(shapes.front());
+}
+
 std::vector<ShapeId> RigidBody::shapeIds() const { return world_ ? world_->shapes(id_) : std::vector<ShapeId>{}; }
 
 void RigidBody::createMoreShapes() {
