@@ -122,18 +122,17 @@ void SensorStage::run(WorldImpl& w) {
         return p;
     };
 
-    // Shapes whose whole path lies in their proxy's box are found by querying the trees with a sensor's swept box;
-    // the others (fast, or whose proxy was just moved on) are listed here.
+    // A proxy's box holds its shape's whole path over the step unless the step gave it a new box (it left the old
+    // one: the box holds the path ahead, and the turn, from where it was then). A sensor finds the first by querying
+    // the trees with its swept box; the others, in the broad phase's move buffer (the step's moved proxies), are
+    // listed here with their swept boxes, so a scene at rest or slow adds nothing to the list.
     movers_.clear();
-    for (const std::uint32_t slot : w.awake) {
-        if (slot >= starts_.size() || starts_[slot].step != now) continue;
-        const BodyData& b = w.bodies[slot];
-        const Path p = pathOf(slot);
-        w.forEachShape(b, [&](std::uint32_t shape, const ShapeData& d) {
-            if (d.proxy == kNullIndex || d.sensor) return;
-            const Aabb swept = sweptBox(d.aabb, p, b.extent);
-            if (!w.broadPhase.fatBox(d.proxy).contains(swept)) movers_.push_back({shape, swept});
-        });
+    for (const std::int32_t key : w.broadPhase.movedProxies()) {
+        const std::uint32_t shape = w.broadPhase.shapeOf(key);
+        const ShapeData& d = w.shapes[shape];
+        if (d.sensor) continue;
+        const BodyData& b = w.bodies[d.body];
+        movers_.push_back({shape, sweptBox(d.aabb, pathOf(d.body), b.extent)});
     }
 
     for (Sensor& sensor : sensors_) {
