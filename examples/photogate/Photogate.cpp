@@ -54,8 +54,11 @@ public:
         world().setSettings(settings);
         radius_ = parameters.get("r");
         for (const double h : kDepths) {
-            auto& gate = spawn<physim::Object>(physim::RectangleShape({kGateWidth, kGateThickness}),
-                                               sf::Color(230, 150, 0));
+            // Drawn as a beam 5 mm wide (the 1 mm gate would be a hairline), outlined by nothing.
+            const double half = 0.5 * kGateWidth;
+            auto& gate = spawn<physim::Object>(
+                physim::Mesh::LineMesh({{-half, 0.0}, {half, 0.0}}, false, 0.005, sf::Color(230, 150, 0)),
+                physim::RectangleShape({kGateWidth, kGateThickness}));
             gate.setPosition({0.0, -h});
             gate.rb.setMass(0.0);
             gate.rb.setSensor(true);
