@@ -315,6 +315,8 @@ void RigidBody::attach(World& world) {
         throw;
     }
     if (def_.type == BodyType::Dynamic && massOverride_ > 0.0) world.setMass(id_, massOverride_);
+    if (chain_ && def_.isSensor)  // a chain's pieces are its first shape: sensors too (ChainDef has no flag)
+        for (const ShapeId s : world.shapes(id_)) world.setSensor(s, true);
 }
 
 namespace {

@@ -48,6 +48,10 @@ public:
     double getRotation() const { return angle_; }  ///< rad
     /// Places the shape: its local origin (the body origin) at `position`, rotated by `angle` rad.
     void setTransform(const Vec2& position, double angle);
+    /// true: the shape is a sensor when it becomes a body's (Object: the body's first shape, or a part): it
+    /// collides with nothing and reports overlaps (physim/core/Sensor.hpp). The paper's queries ignore the flag.
+    void setSensor(bool sensor) { sensor_ = sensor; }
+    bool isSensor() const { return sensor_; }
 
 protected:
     explicit CollisionShape(Geometry geometry);
@@ -59,6 +63,7 @@ private:
     std::vector<Geometry> morePieces_;  // after the first: only a chain has them
     Transform transform_;
     double angle_ = 0.0;
+    bool sensor_ = false;
 };
 
 }  // namespace physim

@@ -12,6 +12,7 @@
 //   Solve        the soft step (docs/architecture.md): `substeps` times integrate, warm start, solve, integrate
 //   Integrate    positions, relax; then restitution; poses and boxes updated
 //   Continuous   time of impact for fast bodies (docs/ccd.md)
+//   Sensors      while the world holds a sensor: what overlaps each, entered and left when (Sensor.hpp)
 //   Sleep        islands at rest stop being simulated
 // Forces and impulses added between steps act in the next step. Changing the world from inside its step (from a
 // continuous solver, say) is refused with std::logic_error naming the call.
