@@ -280,8 +280,15 @@ TEST(Sensor, SetSensorTurnsAShapeIntoASensorAndBack) {
     EXPECT_EQ(world.sensorEvents().begin.size(), 1u);  // the ball, inside it from the start of the step
     for (int i = 0; i < 30; ++i) world.step(kDt);
     EXPECT_LT(world.position(b).y(), -0.5);  // fell through
+    // A ball sinking into the sensor floor: made solid again, the floor pushes it back out and holds it.
+    const BodyId c = ball(world, {1.0, 0.2}, Vec2::Zero(), 0.1);
+    for (int i = 0; i < 5; ++i) world.step(kDt);
+    EXPECT_LT(world.position(c).y(), 0.2 - 0.01);
     world.setSensor(floorShape, false);
     EXPECT_EQ(world.sensorCount(), 0u);
+    EXPECT_FALSE(world.isSensor(floorShape));
+    for (int i = 0; i < 60; ++i) world.step(kDt);
+    EXPECT_NEAR(world.position(c).y(), 0.2, 0.01);
 }
 
 TEST(Sensor, BadInputIsRefusedNamingTheValueAndTheWorldIsUnchanged) {
