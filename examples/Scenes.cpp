@@ -13,6 +13,7 @@ const std::vector<Scene>& scenes() {
         {"atwood", makeAtwood},          {"gears", makeGears},
         {"car", makeCar},
         {"one_way", makeOneWay},
+        {"photogate", makePhotogate},
     };
     return all;
 }

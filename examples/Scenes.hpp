@@ -30,6 +30,7 @@ std::unique_ptr<Simulation> makeAtwood();
 std::unique_ptr<Simulation> makeGears();
 std::unique_ptr<Simulation> makeCar();
 std::unique_ptr<Simulation> makeOneWay();
+std::unique_ptr<Simulation> makePhotogate();
 
 struct Scene {
     std::string name;  ///< the example's program name

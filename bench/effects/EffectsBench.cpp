@@ -248,6 +248,24 @@ std::vector<Row> rows() {
     r.push_back({"rotation", "400 circles",
                  "every body free to turn (without: all locked; unused: one far-off body turning)",
                  rotation(true, false), rotation(true, true), rotation(false, false)});
+    // Sensors: the Sensors stage runs only while the world holds one. Unused: one static sensor far off, which nothing
+    // visits (the stage runs and finds nothing); used: a sensor over the box's lower 2 m, which the churning circles
+    // enter and leave every step.
+    auto sensor = [](const Vec2& at, double halfWidth, double halfHeight) {
+        return [=] {
+            Scene s = circles();
+            BodyDef d;
+            d.type = BodyType::Static;
+            d.position = at;
+            d.shape = makeBox(halfWidth, halfHeight);
+            d.isSensor = true;
+            s.world->createBody(d);
+            return s;
+        };
+    };
+    r.push_back({"sensors", "400 circles",
+                 "a sensor over the box's lower 2 m, the circles crossing it (unused: one far-off sensor)",
+                 [] { return circles(); }, sensor({1000.0, 0.0}, 1.0, 1.0), sensor({0.0, 1.0}, 10.0, 1.0)});
     // Sleep: its bookkeeping (islands, rest timers, the Sleep stage) costs only while sleep is on; here nothing may
     // fall asleep, so the three forms do the same simulation. What sleeping saves is the next row's.
     auto sleepOn = [](bool on, bool off) {

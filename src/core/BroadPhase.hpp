@@ -44,6 +44,9 @@ public:
     void requery(std::int32_t key) { markMoved(key); }
 
     std::size_t moveCount() const { return moved_.size(); }
+    /// The move buffer: proxy keys given a new box since the last findNewPairs (the Sensors stage's fast shapes).
+    const std::vector<std::int32_t>& movedProxies() const { return moved_; }
+    std::uint32_t shapeOf(std::int32_t key) const { return treeOf(key).userData(key >> 1); }
     /// Changes whenever a proxy is created, destroyed or given a new box: while it stays the same, so do all boxes.
     std::uint64_t boxRevision() const { return boxRevision_; }
     /// Shapes whose boxes overlap `box` (both trees).

@@ -520,15 +520,16 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 
 void WorldImpl::updatePairs() {
     const double speculative = 4.0 * settings.linearSlop;
-    // Pairs that never make a contact (two shapes of one body, two immovable bodies, shapes whose filters refuse
-    // each other) are taken and dropped here: declined pairs are asked about again every step. The filters are
-    // read last, for the deferred pairs only: the others are taken anyway and meet them below.
+    // Pairs that never make a contact (two shapes of one body, two immovable bodies, a sensor: the Sensors stage
+    // finds its overlaps itself; shapes whose filters refuse each other) are taken and dropped here: declined pairs
+    // are asked about again every step. The filters are read last, for the deferred pairs only: the others are
+    // taken anyway and meet them below.
     const auto wanted = [&](std::uint32_t a, std::uint32_t b) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
         const BodyData& A = bodies[bodyA];
         const BodyData& B = bodies[bodyB];
-        return bodyA == bodyB || !shouldCollide(A, B) || !deferred(A, B, speculative, dt) ||
-               !shouldCollide(shapes[a].filter, shapes[b].filter);
+        return bodyA == bodyB || !shouldCollide(A, B) || shapes[a].sensor || shapes[b].sensor ||
+               !deferred(A, B, speculative, dt) || !shouldCollide(shapes[a].filter, shapes[b].filter);
     };
     // Bodies joined by a joint without collideConnected meet only through it: their pair is taken and dropped. So
     // is a pair the filters or the pair filter refuse (asked here, serially, once per offer).
@@ -536,8 +537,8 @@ void WorldImpl::updatePairs() {
     broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
     for (const auto& [a, b] : newPairs) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
-        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) &&
-            !(joints && jointKeepsApart(bodyA, bodyB)) && pairAllowed(a, b))
+        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) && !shapes[a].sensor &&
+            !shapes[b].sensor && !(joints && jointKeepsApart(bodyA, bodyB)) && pairAllowed(a, b))
             createContact(a, b);
     }
 }

@@ -172,10 +172,11 @@ void ContinuousStage::run(WorldImpl& w) {
         const BodyData& b = w.bodies[slot];
         const kernel::Motion mine = toKernel(c.sweep);
         w.forEachShape(b, [&](std::uint32_t mineShape, const ShapeData& shape) {
+            if (shape.sensor) return;  // sensors stop nothing and are stopped by nothing
             const Geometry& myGeometry = shape.geometry;
             found_.clear();
             w.broadPhase.query(sweptAabb(myGeometry, c.sweep), [&](std::uint32_t other) {
-                if (w.shapes[other].body != slot) found_.push_back(other);
+                if (w.shapes[other].body != slot && !w.shapes[other].sensor) found_.push_back(other);
                 return true;
             });
             for (const std::uint32_t otherShape : found_) {

@@ -12,6 +12,7 @@ std::string_view stageName(Stage s) {
         case Stage::Solve: return "solve";
         case Stage::Integrate: return "integrate";
         case Stage::Continuous: return "continuous";
+        case Stage::Sensors: return "sensors";
         case Stage::Sleep: return "sleep";
         case Stage::Count: break;
     }

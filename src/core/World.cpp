@@ -230,6 +230,7 @@ BodyId World::createBody(const BodyDef& def) {
     w.updateBoxes(b);
     b.collides = def.collides;
     if (def.collides) w.createProxies(index);
+    if (def.withShape && def.isSensor) w.sensors.add(static_cast<std::uint32_t>(b.shapeHead));
     w.addAwakeBody(index);
     if (def.type == BodyType::Static) w.wakeShapesOverlapping(index);
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
@@ -266,6 +267,7 @@ void World::destroyBody(BodyId id) {
     w.removeAwakeBody(index);
     w.destroyProxies(index);
     w.forEachShape(b, [&](std::uint32_t slot, ShapeData& shape) {
+        if (shape.sensor) w.sensors.remove(slot);
         shape.alive = false;
         w.freeShapes.push_back(slot);
         --w.shapeLiveCount;
@@ -549,6 +551,7 @@ void World::step(double dt) {
     w.events.end.clear();
     w.events.impacts.clear();
     w.jointEvents.broken.clear();
+    w.sensors.clearEvents();
     w.touchingValid = false;
     // Filters changed since the last step act now, so their contacts' end events are this step's.
     if (!w.refiltered.empty() || w.refilterAll) w.applyFilterChanges();
@@ -568,12 +571,16 @@ void World::step(double dt) {
     if (narrowPhase || solve)
         w.executor.run([&] {
             runStage(w.profile, Stage::NarrowPhase, narrowPhase, [&] { w.updateContacts(); });
-            if (solve) w.solver.solve(w);
+            if (solve) {
+                if (w.sensors.active()) w.sensors.recordStarts(w);  // the start of the paths sensors look along
+                w.solver.solve(w);
+            }
         });
     runStage(w.profile, Stage::Continuous, (w.continuousCount > 0 || w.solver.fastBodies()) && !w.awake.empty(),
              [&] { w.continuous.run(w); });
     runStage(w.profile, Stage::Integrate, !w.awake.empty(), [&] { w.solver.moveDeferredProxies(w); });
     if (w.breakableJoints > 0) w.breakJoints();
+    runStage(w.profile, Stage::Sensors, w.sensors.active(), [&] { w.sensors.run(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.solver.rowCount() : 0;
     ++w.stepCount;

@@ -11,6 +11,7 @@
 //   ContactSolver.cpp  the contact constraint rows
 //   joints/            one file per joint kind (Joints.hpp: what a kind provides; WorldJoints.cpp: their API)
 //   ContinuousStage.cpp time of impact for fast bodies
+//   Sensors.cpp        sensors' overlaps and events
 //   WorldEffects.cpp   the public API of the effects
 //   WorldFilters.cpp   collision filters and the contact hooks (pair filter, pre-solve): their API and step work
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
@@ -23,6 +24,7 @@
 #include "IslandData.hpp"
 #include "JointData.hpp"
 #include "PairSet.hpp"
+#include "Sensors.hpp"
 #include "ShapeData.hpp"
 #include "Solver.hpp"
 #include "effects/Effects.hpp"
@@ -82,6 +84,7 @@ struct WorldImpl {
     Solver solver;
     ContinuousStage continuous;
     Effects effects;
+    SensorStage sensors;  // Sensors.cpp: the sensor shapes, their overlaps and events
 
     // Step scratch, kept between steps so a running scene allocates nothing.
     std::vector<ShapePair> newPairs;

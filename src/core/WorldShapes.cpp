@@ -251,6 +251,8 @@ std::vector<ShapeId> World::addShapes(BodyId id, const std::vector<ShapeDef>& de
         throw;
     }
     w.shapeLiveCount += slots.size();
+    for (const std::uint32_t slot : slots)
+        if (w.shapes[slot].sensor) w.sensors.add(slot);
     w.updateBoxes(b);
     if (b.collides) {
         w.createProxies(body);
@@ -298,6 +300,7 @@ void World::destroyShape(ShapeId id) {
     // Its contacts end, waking what they held.
     w.forEachContactOfShape(slot, [&](std::uint32_t c) { w.destroyContact(c, true); });
     ShapeData& shape = w.shapes[slot];
+    if (shape.sensor) w.sensors.remove(slot);
     if (shape.proxy != kNullIndex) w.broadPhase.destroyProxy(shape.proxy);
     shape.proxy = kNullIndex;
     shape.alive = false;

@@ -28,7 +28,7 @@ constexpr float kTickPixels = 6.f;      // half-length of a slider limit's tick
 constexpr float kWeldPixels = 5.f;      // half-size of a weld's square
 constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance covered in this time
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
-    kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20);
+    kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20), kSensor(230, 150, 0);
 const sf::Color kSleepVeil(235, 235, 235, 160);  // the window's background, half see-through
 
 sf::Color faded(sf::Color c) {
@@ -242,6 +242,7 @@ std::vector<Manifold> restingContacts(const World& world) {
                 continue;
             for (ShapeId sa : shapes[a])
                 for (ShapeId sb : shapes[b]) {
+                    if (world.isSensor(sa) || world.isSensor(sb)) continue;  // sensors touch nothing
                     if (!world.bounds(sa).overlaps(world.bounds(sb))) continue;
                     Manifold m = collide(world.geometry(sa), world.transform(ids[a]), world.geometry(sb),
                                          world.transform(ids[b]));
@@ -291,6 +292,15 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
             lines.add(c - sf::Vector2f(kCrossPixels, 0), c + sf::Vector2f(kCrossPixels, 0), kCentre);
             lines.add(c - sf::Vector2f(0, kCrossPixels), c + sf::Vector2f(0, kCrossPixels), kCentre);
         }
+    if (options.sensors)  // outlined only: a sensor holds nothing, and what passes through it stays visible
+        for (BodyId id : bodies)
+            for (ShapeId s : world.shapes(id)) {
+                if (!world.isSensor(s)) continue;
+                const sf::Color colour = world.sensorOverlaps(s).empty() ? faded(kSensor) : kSensor;
+                const std::vector<Vec2> points = outline(world.geometry(s), world.transform(id));
+                const std::size_t n = points.size(), edges = n > 2 ? n : n - 1;  // a segment's is its 2 points
+                for (std::size_t i = 0; i < edges; ++i) lines.add(px(points[i]), px(points[(i + 1) % n]), colour);
+            }
     if (options.contacts) {
         drawContacts(target, toPixels, restingContacts(world), true, lines);
         drawContacts(target, toPixels, world.contacts(), false, lines);

@@ -35,6 +35,7 @@ Object::Object(const Mesh& m, std::unique_ptr<CollisionShape> s) : mesh(m), shap
     }
     rb.setGeometry(shape->geometry());
     if (!(shape->getMassProperties().area > 0.0)) rb.setMass(0.0);  // a segment: no mass, so static
+    if (shape->isSensor()) rb.setSensor(true);
 }
 
 Object::Object(const Mesh& m, const CollisionShape& s) : Object(m, s.clone()) {}
@@ -67,6 +68,7 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         def.staticFriction = material.staticFriction;
         def.dynamicFriction = material.dynamicFriction;
         def.filter = s->filter();
+        def.isSensor = s->isSensor();
         rb.addShape(def);
     }
     Mesh drawn = partMesh ? *partMesh : Mesh::ShapeMesh(*s, mesh.shape().getFillColor());

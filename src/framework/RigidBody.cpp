@@ -120,6 +120,22 @@ void RigidBody::addChain(const ChainDef& def) {
     more_.emplace_back(def);
 }
 
+void RigidBody::setSensor(bool sensor) {
+    if (world_) {
+        for (const ShapeId s : world_->shapes(id_)) world_->setSensor(s, sensor);
+        return;
+    }
+    def_.isSensor = sensor;
+    for (auto& more : more_)
+        if (auto* shape = std::get_if<ShapeDef>(&more)) shape->isSensor = sensor;
+}
+
+bool RigidBody::isSensor() const {
+    if (!world_) return def_.isSensor;
+    const std::vector<ShapeId> shapes = world_->shapes(id_);
+    return !shapes.empty() && world_->isSensor(shapes.front());
+}
+
 std::vector<ShapeId> RigidBody::shapeIds() const { return world_ ? world_->shapes(id_) : std::vector<ShapeId>{}; }
 
 void RigidBody::createMoreShapes() {
@@ -316,6 +332,8 @@ void RigidBody::attach(World& world) {
         throw;
     }
     if (def_.type == BodyType::Dynamic && massOverride_ > 0.0) world.setMass(id_, massOverride_);
+    if (chain_ && def_.isSensor)  // a chain's pieces are its first shape: sensors too (ChainDef has no flag)
+        for (const ShapeId s : world.shapes(id_)) world.setSensor(s, true);
 }
 
 namespace {

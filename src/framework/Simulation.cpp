@@ -92,6 +92,8 @@ void Simulation::fixedStep() {
     world_.step(fixedTimeStep_);
     forEachEntity([](Entity& e) { e.checkCollisions(); });
     forEachEntity([](Entity& e) { e.fixedUpdate(); });
+    for (const SensorEvent& e : world_.sensorEvents().begin) onSensor(e, true, time + e.time);
+    for (const SensorEvent& e : world_.sensorEvents().end) onSensor(e, false, time + e.time);
     time += fixedTimeStep_;
 }
 

@@ -49,6 +49,10 @@ public:
     double getRotation() const { return angle_; }  ///< rad
     /// Places the shape: its local origin (the body origin) at `position`, rotated by `angle` rad.
     void setTransform(const Vec2& position, double angle);
+    /// true: the shape is a sensor when it becomes a body's (Object: the body's first shape, or a part): it
+    /// collides with nothing and reports overlaps (physim/core/Sensor.hpp). The paper's queries ignore the flag.
+    void setSensor(bool sensor) { sensor_ = sensor; }
+    bool isSensor() const { return sensor_; }
 
     /// The collision filter its body's shape gets (Filter.hpp): an Object reads it when it is made from this shape
     /// or adds it as a part. Once the object is in a simulation, RigidBody::setFilter or World::setFilter change it.
@@ -66,6 +70,7 @@ private:
     Transform transform_;
     double angle_ = 0.0;
     Filter filter_;
+    bool sensor_ = false;
 };
 
 }  // namespace physim

@@ -16,6 +16,7 @@ enum class Stage : std::size_t {
     Solve,        ///< contact impulses
     Integrate,    ///< velocities into positions, position correction
     Continuous,   ///< time of impact for fast bodies
+    Sensors,      ///< sensors' overlaps and their events (only while the world holds a sensor)
     Sleep,        ///< bodies at rest stop being simulated
     Count
 };

@@ -12,6 +12,7 @@
 //   Solve        the soft step (docs/architecture.md): `substeps` times integrate, warm start, solve, integrate
 //   Integrate    positions, relax; then restitution; poses and boxes updated
 //   Continuous   time of impact for fast bodies (docs/ccd.md)
+//   Sensors      while the world holds a sensor: what overlaps each, entered and left when (Sensor.hpp)
 //   Sleep        islands at rest stop being simulated
 // Forces and impulses added between steps act in the next step. Changing the world from inside its step (from a
 // continuous solver, say) is refused with std::logic_error naming the call.
@@ -23,6 +24,7 @@
 #include "physim/core/ForceCallback.hpp"
 #include "physim/core/Gravitation.hpp"
 #include "physim/core/Joint.hpp"
+#include "physim/core/Sensor.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
 
@@ -311,6 +313,20 @@ public:
     /// Pulley joints: the fixed points A's and B's sides hang from, m; other kinds are refused with
     /// std::invalid_argument.
     std::pair<Vec2, Vec2> jointPulleyGroundAnchors(JointId id) const;
+
+    // --- sensors (Sensor.hpp): shapes that report overlaps and collide with nothing ---------------------
+    /// Makes the shape a sensor (its contacts end now, waking what they held) or an ordinary shape again (its
+    /// overlaps end without events; it collides from the next step). Wakes its body. Throws
+    /// std::invalid_argument naming a shape that is not live.
+    void setSensor(ShapeId id, bool sensor);
+    bool isSensor(ShapeId id) const;
+    /// Sensor shapes in the world. While there are none the Sensors stage does not run and costs nothing.
+    std::size_t sensorCount() const;
+    /// The shapes overlapping the sensor after the last step, by shape index. Throws std::invalid_argument for a
+    /// shape that is not live or not a sensor.
+    std::vector<ShapeId> sensorOverlaps(ShapeId sensor) const;
+    /// Visitors that began and ended overlapping sensors during the last step, with the time within the step.
+    const SensorEvents& sensorEvents() const;
 
     // --- stepping -----------------------------------------------------------------------------------
     /// Advances the world by dt seconds, in [1e-9, 1]: larger steps are a unit mistake (milliseconds as seconds),

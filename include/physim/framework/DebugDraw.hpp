@@ -24,8 +24,9 @@ struct DebugDrawOptions {
     bool joints = false;
     bool centres = false;     ///< centres of mass (the body origin only for a shape centred on it)
     bool sleep = false;       ///< sleeping bodies dimmed
+    bool sensors = false;     ///< sensor shapes outlined, not filled (amber; bright while something overlaps one)
 
-    bool any() const { return contacts || boxes || velocities || joints || centres || sleep; }
+    bool any() const { return contacts || boxes || velocities || joints || centres || sleep || sensors; }
 };
 
 /// Draws what `options` asks for, over the scene, into a target whose current view is the pixel view.

@@ -140,6 +140,11 @@ public:
     /// next step). A shape added later keeps its own ShapeDef's or ChainDef's filter. filter() is the first shape's.
     void setFilter(const Filter& filter);
     Filter filter() const;
+    /// true: every shape of the body is a sensor (physim/core/Sensor.hpp): it collides with nothing and reports
+    /// what overlaps it (Simulation::onSensor, World::sensorEvents); shapes added later keep their own ShapeDef's
+    /// isSensor. Allowed before and after the entity is added. isSensor: the first shape's.
+    void setSensor(bool sensor);
+    bool isSensor() const;
 
     /// The body origin, m (the point the shape's coordinates are relative to) and its angle, rad.
     Vec2 position() const;

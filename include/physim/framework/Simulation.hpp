@@ -60,6 +60,11 @@ public:
     /// crossing) in a per-step hook instead: an entity's checkCollisions or fixedUpdate.
     virtual void onDrawGraphs() {}
     virtual void onRender(sf::RenderWindow*) {}
+    /// After each fixed step, once per sensor event of that step (World::sensorEvents, physim/core/Sensor.hpp):
+    /// its begin events first, then its end events, each list in the world's order. `at` is the simulated time (s)
+    /// at which the visitor entered (began) or left the sensor: the step's start plus the event's time within it,
+    /// so a gate times a crossing more finely than the step.
+    virtual void onSensor(const SensorEvent& /*event*/, bool /*began*/, double /*at*/) {}
     /// Shown in the window title and --help.
     virtual std::string title() const { return "physim"; }
     /// The simulation's own keys, shown in the window's overlay next to the runner's (e.g. "N: kick").
