@@ -12,7 +12,9 @@
 
 #include "physim/core/Aabb.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -71,6 +73,13 @@ public:
     /// Allocates nothing unless the tree is deeper than kQueryStack - 1 levels; a NaN box meets nothing.
     template <class Callback>
     void query(const Aabb& box, Callback&& callback) const;
+
+    /// The ray origin + f * translation, f in [0, maxFraction] (m): calls callback(proxy, userData, maxFraction) for
+    /// each proxy whose box the ray's remaining part meets, and takes its answer as the new maxFraction (clipping
+    /// the ray there: later boxes beyond it are skipped); an answer <= 0 stops, one above maxFraction is ignored.
+    /// Returns the final maxFraction. Allocates as query does.
+    template <class Callback>
+    double rayCast(const Vec2& origin, const Vec2& translation, double maxFraction, Callback&& callback) const;
 
     std::size_t proxyCount() const { return proxyCount_; }
     /// Levels below the root: 0 for one proxy (and for none).
@@ -167,6 +176,53 @@ void DynamicTree::query(const Aabb& box, Callback&& callback) const {
             stack[top++] = n.child1;
         }
     }
+}
+
+template <class Callback>
+double DynamicTree::rayCast(const Vec2& origin, const Vec2& translation, double maxFraction,
+                            Callback&& callback) const {
+    if (root_ == kNull) return maxFraction;
+    const double ox = origin.x(), oy = origin.y(), dx = translation.x(), dy = translation.y();
+    // A box is skipped when the ray's line misses it (the line's unit normal separates them) or when the box of the
+    // ray's remaining part misses it; the second test tightens as the ray is clipped.
+    const double length = std::sqrt(dx * dx + dy * dy);
+    const double nx = -dy / length, ny = dx / length;
+    const double anx = std::abs(nx), any = std::abs(ny);
+    double ex = ox + maxFraction * dx, ey = oy + maxFraction * dy;
+    double lowX = std::min(ox, ex), lowY = std::min(oy, ey), highX = std::max(ox, ex), highY = std::max(oy, ey);
+
+    std::int32_t fixed[kQueryStack];
+    std::vector<std::int32_t> deep;
+    std::int32_t* stack = fixed;
+    const std::size_t needed = static_cast<std::size_t>(at(root_).height) + 1;
+    if (needed > kQueryStack) {
+        deep.resize(needed);
+        stack = deep.data();
+    }
+    std::size_t top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const std::int32_t id = stack[--top];
+        const Node& n = at(id);
+        const double bx0 = n.box.lower.x(), by0 = n.box.lower.y(), bx1 = n.box.upper.x(), by1 = n.box.upper.y();
+        if (bx0 > highX || lowX > bx1 || by0 > highY || lowY > by1) continue;
+        const double cx = 0.5 * (bx0 + bx1) - ox, cy = 0.5 * (by0 + by1) - oy;
+        if (std::abs(nx * cx + ny * cy) > 0.5 * (anx * (bx1 - bx0) + any * (by1 - by0))) continue;
+        if (!n.isLeaf()) {
+            stack[top++] = n.child2;
+            stack[top++] = n.child1;
+            continue;
+        }
+        const double value = callback(id, n.userData, maxFraction);
+        if (!(value > 0.0)) return 0.0;
+        if (value < maxFraction) {
+            maxFraction = value;
+            ex = ox + maxFraction * dx;
+            ey = oy + maxFraction * dy;
+            lowX = std::min(ox, ex), lowY = std::min(oy, ey), highX = std::max(ox, ex), highY = std::max(oy, ey);
+        }
+    }
+    return maxFraction;
 }
 
 }  // namespace physim
