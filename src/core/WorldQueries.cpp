@@ -205,7 +205,7 @@ void World::overlapAabb(const Aabb& box, const QueryFilter& filter, const Overla
     const WorldImpl& w = *impl_;
     w.broadPhase.query(box, [&](std::uint32_t slot) {
         const ShapeData& shape = w.shapes[slot];
-        if (!seen(shape, filter) || !shape.aabb.overlaps(box)) return true;
+        if (!shape.aabb.overlaps(box) || !seen(shape, filter)) return true;
         return callback(ShapeId{slot, shape.generation});
     });
 }
@@ -217,7 +217,7 @@ std::vector<ShapeId> World::overlapAabb(const Aabb& box, const QueryFilter& filt
     std::vector<ShapeId> found;
     w.broadPhase.query(box, [&](std::uint32_t slot) {
         const ShapeData& shape = w.shapes[slot];
-        if (seen(shape, filter) && shape.aabb.overlaps(box)) found.push_back(ShapeId{slot, shape.generation});
+        if (shape.aabb.overlaps(box) && seen(shape, filter)) found.push_back(ShapeId{slot, shape.generation});
         return true;
     });
     return found;
