@@ -26,6 +26,7 @@ bool* debugSwitch(DebugDrawOptions& o, sf::Keyboard::Key key) {
         case sf::Keyboard::Num4: return &o.joints;
         case sf::Keyboard::Num5: return &o.centres;
         case sf::Keyboard::Num6: return &o.sleep;
+        case sf::Keyboard::Num7: return &o.rays;
         default: return nullptr;
     }
 }
@@ -140,7 +141,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
 
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   [ ] slower/faster   F fit   Tab stats   "
-           "1-6 contacts/boxes/velocities/joints/centres/sleep   left drag: move a body   right drag: pan   "
+           "1-7 contacts/boxes/velocities/joints/centres/sleep/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }
 
