@@ -41,7 +41,7 @@ public:
     bool start = false;            ///< true once onCreate has run
     bool paused = false;           ///< no fixed steps while paused (P toggles it)
     View view;                     ///< what the window shows: centre and zoom, in metres
-    /// Debug drawing over the scene (keys 1 to 6 toggle each); a simulation may switch some on in onCreate.
+    /// Debug drawing over the scene (keys 1 to 7 toggle each); a simulation may switch some on in onCreate.
     DebugDrawOptions debugDraw;
     /// Adjustable values (declare them in the constructor, read them in onCreate): the gallery's sliders and
     /// `--param name=value`. The runner carries them over when it makes the simulation again.
