@@ -198,16 +198,43 @@ void World::castShape(const Geometry& geometry, const Transform& pose, const Vec
     });
 }
 
+namespace {
+
+// The shapes whose tight box meets `box`, to onShape(slot) (false stops). The tree's candidates are gathered a batch
+// at a time with their records asked for from memory, then checked: each record's line then arrives while the walk
+// goes on instead of stalling the check (a record is several lines, far apart from the next).
+template <class OnShape>
+void overlapAabbImpl(const WorldImpl& w, const Aabb& box, const QueryFilter& filter, OnShape&& onShape) {
+    constexpr std::size_t kBatch = 32;
+    std::uint32_t batch[kBatch];
+    std::size_t count = 0;
+    const auto flush = [&] {
+        for (std::size_t i = 0; i < count; ++i) {
+            const ShapeData& shape = w.shapes[batch[i]];
+            if (shape.aabb.overlaps(box) && seen(shape, filter) && !onShape(batch[i])) return false;
+        }
+        count = 0;
+        return true;
+    };
+    bool go = true;
+    w.broadPhase.query(box, [&](std::uint32_t slot) {
+        __builtin_prefetch(&w.shapes[slot].aabb);
+        __builtin_prefetch(&w.shapes[slot].filter);
+        batch[count++] = slot;
+        if (count == kBatch) go = flush();
+        return go;
+    });
+    if (go) flush();
+}
+
+}  // namespace
+
 void World::overlapAabb(const Aabb& box, const QueryFilter& filter, const OverlapCallback& callback) const {
     impl_->requireNotStepping("overlapAabb");
     requireBox("overlapAabb", box);
     if (!callback) throw std::invalid_argument("physim: World::overlapAabb: callback is empty");
     const WorldImpl& w = *impl_;
-    w.broadPhase.query(box, [&](std::uint32_t slot) {
-        const ShapeData& shape = w.shapes[slot];
-        if (!shape.aabb.overlaps(box) || !seen(shape, filter)) return true;
-        return callback(ShapeId{slot, shape.generation});
-    });
+    overlapAabbImpl(w, box, filter, [&](std::uint32_t slot) { return callback(ShapeId{slot, w.shapes[slot].generation}); });
 }
 
 std::vector<ShapeId> World::overlapAabb(const Aabb& box, const QueryFilter& filter) const {
@@ -215,9 +242,8 @@ std::vector<ShapeId> World::overlapAabb(const Aabb& box, const QueryFilter& filt
     requireBox("overlapAabb", box);
     const WorldImpl& w = *impl_;
     std::vector<ShapeId> found;
-    w.broadPhase.query(box, [&](std::uint32_t slot) {
-        const ShapeData& shape = w.shapes[slot];
-        if (shape.aabb.overlaps(box) && seen(shape, filter)) found.push_back(ShapeId{slot, shape.generation});
+    overlapAabbImpl(w, box, filter, [&](std::uint32_t slot) {
+        found.push_back(ShapeId{slot, w.shapes[slot].generation});
         return true;
     });
     return found;
