@@ -48,7 +48,8 @@ struct Options {
 int positive(const std::string& flag, const char* text) {
     char* end = nullptr;
     const long v = std::strtol(text, &end, 10);
-    if (end == text || *end != '\0' || v < 1 || v > 100000000) usage(flag + " takes a positive count, got '" + text + "'");
+    if (end == text || *end != '\0' || v < 1 || v > 100000000)
+        usage(flag + " takes a positive count, got '" + text + "'");
     return static_cast<int>(v);
 }
 

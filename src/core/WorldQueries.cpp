@@ -234,7 +234,8 @@ void World::overlapAabb(const Aabb& box, const QueryFilter& filter, const Overla
     requireBox("overlapAabb", box);
     if (!callback) throw std::invalid_argument("physim: World::overlapAabb: callback is empty");
     const WorldImpl& w = *impl_;
-    overlapAabbImpl(w, box, filter, [&](std::uint32_t slot) { return callback(ShapeId{slot, w.shapes[slot].generation}); });
+    overlapAabbImpl(w, box, filter,
+                    [&](std::uint32_t slot) { return callback(ShapeId{slot, w.shapes[slot].generation}); });
 }
 
 std::vector<ShapeId> World::overlapAabb(const Aabb& box, const QueryFilter& filter) const {

@@ -252,7 +252,9 @@ std::unique_ptr<Scene> randomScene(unsigned seed) {
     return scene;
 }
 
-bool isIn(const std::vector<ShapeId>& list, ShapeId id) { return std::find(list.begin(), list.end(), id) != list.end(); }
+bool isIn(const std::vector<ShapeId>& list, ShapeId id) {
+    return std::find(list.begin(), list.end(), id) != list.end();
+}
 
 bool visible(const Scene& s, ShapeId id) { return !isIn(s.sensors, id) && !isIn(s.hidden, id); }
 
