@@ -142,6 +142,7 @@ void Gallery::drawDebugSwitches(Runner& runner) {
     ImGui::Checkbox("Centres of mass", &d.centres);
     ImGui::SameLine(150.f);
     ImGui::Checkbox("Sleep (dimmed)", &d.sleep);
+    ImGui::Checkbox("Rays", &d.rays);
     bool stats = runner.statsShown();
     if (ImGui::Checkbox("Statistics", &stats)) runner.setStatsShown(stats);
 }

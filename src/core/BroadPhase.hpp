@@ -57,6 +57,15 @@ public:
         tree_[1].query(box, forward);
     }
 
+    /// Both trees' proxies along a ray (DynamicTree::rayCast), the movable tree first, the clip carried from one to
+    /// the other: callback(shape, maxFraction) returns the new maxFraction (<= 0 stops).
+    template <class Callback>
+    void rayCast(const Vec2& origin, const Vec2& translation, double maxFraction, Callback&& callback) const {
+        auto forward = [&](std::int32_t, std::uint32_t shape, double fraction) { return callback(shape, fraction); };
+        maxFraction = tree_[0].rayCast(origin, translation, maxFraction, forward);
+        if (maxFraction > 0.0) tree_[1].rayCast(origin, translation, maxFraction, forward);
+    }
+
 private:
     DynamicTree& treeOf(std::int32_t key) { return tree_[key & 1]; }
     const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }

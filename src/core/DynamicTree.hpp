@@ -12,7 +12,9 @@
 
 #include "physim/core/Aabb.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -71,6 +73,13 @@ public:
     /// Allocates nothing unless the tree is deeper than kQueryStack - 1 levels; a NaN box meets nothing.
     template <class Callback>
     void query(const Aabb& box, Callback&& callback) const;
+
+    /// The ray origin + f * translation, f in [0, maxFraction] (m): calls callback(proxy, userData, maxFraction) for
+    /// each proxy whose box the ray's remaining part meets, and takes its answer as the new maxFraction (clipping
+    /// the ray there: later boxes beyond it are skipped); an answer <= 0 stops, one above maxFraction is ignored.
+    /// Returns the final maxFraction. Allocates as query does.
+    template <class Callback>
+    double rayCast(const Vec2& origin, const Vec2& translation, double maxFraction, Callback&& callback) const;
 
     std::size_t proxyCount() const { return proxyCount_; }
     /// Levels below the root: 0 for one proxy (and for none).
@@ -140,10 +149,89 @@ private:
 template <class Callback>
 void DynamicTree::query(const Aabb& box, Callback&& callback) const {
     if (root_ == kNull) return;
-    // Depth-first with both children pushed: at most one pending sibling per level above plus two children,
-    // so height + 1 entries suffice.
+    // As Aabb::overlaps (touching counts), with one branch for the four comparisons: which way it goes is hard to
+    // predict, so one misprediction instead of up to four.
+    const auto meets = [&box](const Aabb& b) {
+        return (b.lower.x() <= box.upper.x()) & (box.lower.x() <= b.upper.x()) & (b.lower.y() <= box.upper.y()) &
+               (box.lower.y() <= b.upper.y());
+    };
+    // false: the callback stopped the query.
+    const auto report = [&callback](std::int32_t id, const Node& leaf) {
+        if constexpr (std::is_void_v<std::invoke_result_t<Callback&, std::int32_t, std::uint32_t>>) {
+            callback(id, leaf.userData);
+            return true;
+        } else {
+            return static_cast<bool>(callback(id, leaf.userData));
+        }
+    };
+    const Node& root = at(root_);
+    if (!meets(root.box)) return;
+    if (root.isLeaf()) {
+        report(root_, root);
+        return;
+    }
+    // Depth-first, child1's subtree before child2's (the order callbacks come in). A child is tested before it is
+    // pushed, and a leaf that meets the box is reported at once unless child1's subtree must come first: the stack
+    // holds at most one pending sibling per level plus two children, so height + 1 entries suffice.
     std::int32_t fixed[kQueryStack];
     std::vector<std::int32_t> deep;  // used only for trees too deep for `fixed`
+    std::int32_t* stack = fixed;
+    const std::size_t needed = static_cast<std::size_t>(root.height) + 1;
+    if (needed > kQueryStack) {
+        deep.resize(needed);
+        stack = deep.data();
+    }
+    std::size_t top = 0;
+    stack[top++] = root_;
+    while (top > 0) {
+        const Node& n = at(stack[--top]);  // an internal node that meets the box
+        const Node& c1 = at(n.child1);
+        const Node& c2 = at(n.child2);
+        bool first = meets(c1.box);
+        const bool second = meets(c2.box);
+        if (first && c1.isLeaf()) {
+            if (!report(n.child1, c1)) return;
+            first = false;
+        }
+        // The children of a pushed node are tested when it is popped: ask for their lines now, so the memory works
+        // while the traversal goes on.
+        if (second) {
+            if (!c2.isLeaf()) {
+                stack[top++] = n.child2;
+                __builtin_prefetch(&at(c2.child1)), __builtin_prefetch(&at(c2.child2));
+            } else if (first) {
+                stack[top++] = n.child2;  // a leaf, after child1's subtree (popped as a leaf below)
+            } else if (!report(n.child2, c2)) {
+                return;
+            }
+        }
+        if (first) {
+            stack[top++] = n.child1;
+            __builtin_prefetch(&at(c1.child1)), __builtin_prefetch(&at(c1.child2));
+        }
+        // A leaf left on the stack (child2 waiting for child1's subtree) is reported when it comes up.
+        while (top > 0 && at(stack[top - 1]).isLeaf()) {
+            const std::int32_t id = stack[--top];
+            if (!report(id, at(id))) return;
+        }
+    }
+}
+
+template <class Callback>
+double DynamicTree::rayCast(const Vec2& origin, const Vec2& translation, double maxFraction,
+                            Callback&& callback) const {
+    if (root_ == kNull) return maxFraction;
+    const double ox = origin.x(), oy = origin.y(), dx = translation.x(), dy = translation.y();
+    // A box is skipped when the ray's line misses it (the line's unit normal separates them) or when the box of the
+    // ray's remaining part misses it; the second test tightens as the ray is clipped.
+    const double length = std::sqrt(dx * dx + dy * dy);
+    const double nx = -dy / length, ny = dx / length;
+    const double anx = std::abs(nx), any = std::abs(ny);
+    double ex = ox + maxFraction * dx, ey = oy + maxFraction * dy;
+    double lowX = std::min(ox, ex), lowY = std::min(oy, ey), highX = std::max(ox, ex), highY = std::max(oy, ey);
+
+    std::int32_t fixed[kQueryStack];
+    std::vector<std::int32_t> deep;
     std::int32_t* stack = fixed;
     const std::size_t needed = static_cast<std::size_t>(at(root_).height) + 1;
     if (needed > kQueryStack) {
@@ -155,18 +243,31 @@ void DynamicTree::query(const Aabb& box, Callback&& callback) const {
     while (top > 0) {
         const std::int32_t id = stack[--top];
         const Node& n = at(id);
-        if (!n.box.overlaps(box)) continue;
-        if (n.isLeaf()) {
-            if constexpr (std::is_void_v<std::invoke_result_t<Callback&, std::int32_t, std::uint32_t>>) {
-                callback(id, n.userData);
-            } else {
-                if (!callback(id, n.userData)) return;
-            }
-        } else {
-            stack[top++] = n.child2;
-            stack[top++] = n.child1;
+        const double bx0 = n.box.lower.x(), by0 = n.box.lower.y(), bx1 = n.box.upper.x(), by1 = n.box.upper.y();
+        if (bx0 > highX || lowX > bx1 || by0 > highY || lowY > by1) continue;
+        const double cx = 0.5 * (bx0 + bx1) - ox, cy = 0.5 * (by0 + by1) - oy;
+        if (std::abs(nx * cx + ny * cy) > 0.5 * (anx * (bx1 - bx0) + any * (by1 - by0))) continue;
+        if (!n.isLeaf()) {
+            // The child whose centre lies nearer along the ray goes first: its hits clip the ray for the other.
+            const Aabb& b1 = at(n.child1).box;
+            const Aabb& b2 = at(n.child2).box;
+            const double s1 = (b1.lower.x() + b1.upper.x()) * dx + (b1.lower.y() + b1.upper.y()) * dy;
+            const double s2 = (b2.lower.x() + b2.upper.x()) * dx + (b2.lower.y() + b2.upper.y()) * dy;
+            const bool firstIsNearer = s1 <= s2;
+            stack[top++] = firstIsNearer ? n.child2 : n.child1;
+            stack[top++] = firstIsNearer ? n.child1 : n.child2;
+            continue;
+        }
+        const double value = callback(id, n.userData, maxFraction);
+        if (!(value > 0.0)) return 0.0;
+        if (value < maxFraction) {
+            maxFraction = value;
+            ex = ox + maxFraction * dx;
+            ey = oy + maxFraction * dy;
+            lowX = std::min(ox, ex), lowY = std::min(oy, ey), highX = std::max(ox, ex), highY = std::max(oy, ey);
         }
     }
+    return maxFraction;
 }
 
 }  // namespace physim

@@ -27,6 +27,7 @@ bool* debugSwitch(DebugDrawOptions& o, sf::Keyboard::Key key) {
         case sf::Keyboard::Num5: return &o.centres;
         case sf::Keyboard::Num6: return &o.sleep;
         case sf::Keyboard::Num7: return &o.sensors;
+        case sf::Keyboard::Num8: return &o.rays;
         default: return nullptr;
     }
 }
@@ -141,7 +142,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
 
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   [ ] slower/faster   F fit   Tab stats   "
-           "1-7 contacts/boxes/velocities/joints/centres/sleep/sensors   left drag: move a body   right drag: pan   "
+           "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }
 

@@ -26,9 +26,10 @@ constexpr float kLimitPixels = 22.f;    // length of a revolute limit's ray
 constexpr float kAxisPixels = 25.f;     // a slider's axis line reaches at least this far either side of its anchor
 constexpr float kTickPixels = 6.f;      // half-length of a slider limit's tick
 constexpr float kWeldPixels = 5.f;      // half-size of a weld's square
+constexpr float kHitPixels = 5.f;       // radius of a ray's hit point
 constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance covered in this time
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
-    kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20), kSensor(230, 150, 0);
+    kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20), kSensor(230, 150, 0), kRay(230, 120, 0);
 const sf::Color kSleepVeil(235, 235, 235, 160);  // the window's background, half see-through
 
 sf::Color faded(sf::Color c) {
@@ -256,7 +257,8 @@ std::vector<Manifold> restingContacts(const World& world) {
     return found;
 }
 
-void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options) {
+void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options,
+               const std::vector<DebugRay>& rays) {
     if (!options.any()) return;
     const sf::Transform toPixels = view.worldToPixels(target.getSize());
     const auto px = [&](const Vec2& p) {
@@ -304,6 +306,24 @@ void drawDebug(sf::RenderTarget& target, const View& view, const World& world, c
     if (options.contacts) {
         drawContacts(target, toPixels, restingContacts(world), true, lines);
         drawContacts(target, toPixels, world.contacts(), false, lines);
+    }
+    if (options.rays) {
+        sf::CircleShape dot(kHitPixels);
+        dot.setOrigin(kHitPixels, kHitPixels);
+        dot.setFillColor(kRay);
+        for (const DebugRay& r : rays) {
+            const Vec2 end = r.origin + r.translation;
+            if (!r.hit) {
+                lines.add(px(r.origin), px(end), faded(kRay));
+                continue;
+            }
+            lines.add(px(r.origin), px(r.hit->point), kRay);
+            lines.add(px(r.hit->point), px(end), faded(kRay));
+            const sf::Vector2f n(static_cast<float>(r.hit->normal.x()), static_cast<float>(-r.hit->normal.y()));
+            lines.arrow(px(r.hit->point), px(r.hit->point) + kNormalPixels * n, kNormal);
+            dot.setPosition(px(r.hit->point));
+            target.draw(dot);
+        }
     }
     lines.draw(target);
 }

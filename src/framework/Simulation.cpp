@@ -1,7 +1,10 @@
 #include "physim/framework/Simulation.hpp"
 
+#include "physim/framework/Object.hpp"
+
 #include "physim/core/Validate.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -88,6 +91,7 @@ void Simulation::forEachEntity(Phase&& phase) {
 void Simulation::fixedStep() {
     // The paper's three phases around the world's one step: forces go in before it, its contact events and new
     // state come out after it (docs/architecture.md says why this reading of the paper).
+    debugRays_.clear();
     forEachEntity([](Entity& e) { e.beforeFixedUpdate(); });
     world_.step(fixedTimeStep_);
     forEachEntity([](Entity& e) { e.checkCollisions(); });
@@ -106,6 +110,32 @@ void Simulation::updateEntities() {
 
 void Simulation::renderEntities(sf::RenderWindow* window) {
     forEachEntity([window](Entity& e) { e.render(window); });
+}
+
+Object* Simulation::objectOf(BodyId body) const {
+    for (const std::unique_ptr<Entity>& e : entities_)
+        if (auto* object = dynamic_cast<Object*>(e.get()); object && object->rb.bodyId() == body) return object;
+    return nullptr;
+}
+
+std::optional<Simulation::Hit> Simulation::castRay(const Vec2& origin, const Vec2& translation,
+                                                   const QueryFilter& filter) {
+    const std::optional<RayHit> hit = world_.castRayClosest(origin, translation, filter);
+    if (debugDraw.rays && debugRays_.size() < kDebugRays) debugRays_.push_back({origin, translation, hit});
+    if (!hit) return std::nullopt;
+    return Hit{*hit, objectOf(hit->body)};
+}
+
+std::vector<Object*> Simulation::objectsAt(const Vec2& point, const QueryFilter& filter) const {
+    std::vector<BodyId> bodies;
+    for (const ShapeId s : world_.overlapPoint(point, filter)) bodies.push_back(world_.body(s));
+    std::vector<Object*> found;
+    for (const std::unique_ptr<Entity>& e : entities_) {
+        auto* object = dynamic_cast<Object*>(e.get());
+        if (object && std::find(bodies.begin(), bodies.end(), object->rb.bodyId()) != bodies.end())
+            found.push_back(object);
+    }
+    return found;
 }
 
 }  // namespace physim

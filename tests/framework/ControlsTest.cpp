@@ -230,7 +230,8 @@ TEST(Controls, KeysToggleDebugDrawingAndStatistics) {
     const std::pair<sf::Keyboard::Key, bool DebugDrawOptions::*> keys[] = {
         {sf::Keyboard::Num1, &DebugDrawOptions::contacts}, {sf::Keyboard::Num2, &DebugDrawOptions::boxes},
         {sf::Keyboard::Num3, &DebugDrawOptions::velocities}, {sf::Keyboard::Num4, &DebugDrawOptions::joints},
-        {sf::Keyboard::Num5, &DebugDrawOptions::centres}, {sf::Keyboard::Num6, &DebugDrawOptions::sleep}};
+        {sf::Keyboard::Num5, &DebugDrawOptions::centres}, {sf::Keyboard::Num6, &DebugDrawOptions::sleep},
+        {sf::Keyboard::Num7, &DebugDrawOptions::sensors}, {sf::Keyboard::Num8, &DebugDrawOptions::rays}};
     for (const auto& [code, option] : keys) {
         EXPECT_FALSE(sim.debugDraw.*option);
         runner.handleEvent(keyPress(code), nullptr);

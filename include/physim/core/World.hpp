@@ -25,12 +25,14 @@
 #include "physim/core/Gravitation.hpp"
 #include "physim/core/Joint.hpp"
 #include "physim/core/Sensor.hpp"
+#include "physim/core/Query.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -346,6 +348,39 @@ public:
     std::uint64_t stepCount() const;
     /// Bodies currently simulated (awake dynamic and kinematic bodies).
     std::size_t awakeBodyCount() const;
+
+    // --- queries (Query.hpp, docs/collision.md "Queries"): const, refused during the step -------------------
+    // They see the shapes of bodies that collide (not after setCollides(false)), through the broad phase, but not
+    // sensor shapes; `filter` hides shapes as shouldQuery (Filter.hpp) says. A ray starting inside a shape does
+    // not hit it (overlapPoint finds what it starts in). A chain piece is seen by rays and
+    // casts from its front only (the side it collides on). Bad input (a NaN or infinite origin, point, box or
+    // pose, a zero or non-finite translation, an invalid geometry) throws std::invalid_argument naming the value.
+    /// The first shape the ray origin + f * translation, f in [0, 1] (m), enters; nullopt when none.
+    std::optional<RayHit> castRayClosest(const Vec2& origin, const Vec2& translation,
+                                         const QueryFilter& filter = {}) const;
+    /// Every shape the ray enters (one hit per shape), nearest first.
+    std::vector<RayHit> castRayAll(const Vec2& origin, const Vec2& translation, const QueryFilter& filter = {}) const;
+    /// Each hit goes to `callback`, which may ignore it, clip the ray or stop (RayCallback).
+    void castRay(const Vec2& origin, const Vec2& translation, const QueryFilter& filter,
+                 const RayCallback& callback) const;
+    /// The first shape that `geometry`, placed by `pose` and moved by `translation` (m, no rotation), touches: its
+    /// fraction lies at most kToiTolerance (1e-4 m) of travel before the true contact, never past it (conservative
+    /// advancement, TimeOfImpact.hpp); point is midway between the two surfaces there, normal the target's outward
+    /// normal. A shape the cast starts touching or overlapping is hit at fraction 0 with a zero normal.
+    std::optional<RayHit> castShape(const Geometry& geometry, const Transform& pose, const Vec2& translation,
+                                    const QueryFilter& filter = {}) const;
+    /// castShape's callback form: every shape the swept shape touches, each at its first contact, clipped as
+    /// castRay's callback says.
+    void castShape(const Geometry& geometry, const Transform& pose, const Vec2& translation,
+                   const QueryFilter& filter, const RayCallback& callback) const;
+    /// Shapes whose tight bounding box (bounds(ShapeId)) overlaps `box`, touching included, in no particular order.
+    std::vector<ShapeId> overlapAabb(const Aabb& box, const QueryFilter& filter = {}) const;
+    void overlapAabb(const Aabb& box, const QueryFilter& filter, const OverlapCallback& callback) const;
+    /// Shapes that contain the point (m), boundary included; segments and chain pieces have no inside.
+    std::vector<ShapeId> overlapPoint(const Vec2& point, const QueryFilter& filter = {}) const;
+    /// Shapes that `geometry` placed by `pose` touches or overlaps (exact distance 0; chain pieces on both sides).
+    std::vector<ShapeId> overlapShape(const Geometry& geometry, const Transform& pose,
+                                      const QueryFilter& filter = {}) const;
 
 private:
     const BodyData& at(BodyId id) const;

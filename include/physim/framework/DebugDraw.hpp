@@ -3,8 +3,10 @@
 // getters only, in pixels (fixed line widths at any zoom).
 
 #include "physim/core/Contact.hpp"
+#include "physim/core/Query.hpp"
 #include "physim/framework/View.hpp"
 
+#include <optional>
 #include <vector>
 
 namespace sf {
@@ -25,12 +27,24 @@ struct DebugDrawOptions {
     bool centres = false;     ///< centres of mass (the body origin only for a shape centred on it)
     bool sleep = false;       ///< sleeping bodies dimmed
     bool sensors = false;     ///< sensor shapes outlined, not filled (amber; bright while something overlaps one)
+    /// rays cast through Simulation::castRay: the ray up to its hit (orange) and on to its end (faint), the hit
+    /// point and the surface normal there
+    bool rays = false;
 
-    bool any() const { return contacts || boxes || velocities || joints || centres || sleep || sensors; }
+    bool any() const { return contacts || boxes || velocities || joints || centres || sleep || sensors || rays; }
 };
 
-/// Draws what `options` asks for, over the scene, into a target whose current view is the pixel view.
-void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options);
+/// A ray to draw: origin + f * translation for f in [0, 1] (m), and what it hit.
+struct DebugRay {
+    Vec2 origin = Vec2::Zero();
+    Vec2 translation = Vec2::Zero();
+    std::optional<RayHit> hit;
+};
+
+/// Draws what `options` asks for, over the scene, into a target whose current view is the pixel view; `rays` are
+/// drawn when options.rays is on.
+void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options,
+               const std::vector<DebugRay>& rays = {});
 
 /// Contacts of bodies at rest, which the step no longer computes (a sleeping body against a sleeping or
 /// static one): the manifolds of every such touching pair, from the same narrow phase the step uses.

@@ -24,6 +24,8 @@ class RenderWindow;
 
 namespace physim {
 
+class Object;
+
 class Simulation {
 public:
     /// One headline figure of a lesson beside its analytic prediction, as summary.json's "results" lists it.
@@ -39,7 +41,7 @@ public:
     bool start = false;            ///< true once onCreate has run
     bool paused = false;           ///< no fixed steps while paused (P toggles it)
     View view;                     ///< what the window shows: centre and zoom, in metres
-    /// Debug drawing over the scene (keys 1 to 6 toggle each); a simulation may switch some on in onCreate.
+    /// Debug drawing over the scene (keys 1 to 8 toggle each); a simulation may switch some on in onCreate.
     DebugDrawOptions debugDraw;
     /// Adjustable values (declare them in the constructor, read them in onCreate): the gallery's sliders and
     /// `--param name=value`. The runner carries them over when it makes the simulation again.
@@ -104,6 +106,23 @@ public:
     void setResult(std::string name, double measured, std::optional<double> predicted, std::string unit);
     const std::vector<Result>& results() const { return results_; }
 
+    // --- asking the world (docs/guide.md, "Asking the world: rays and queries"); World.hpp has every query -----
+    /// A world query's hit and the Object whose body it hit (nullptr for a body no Object owns).
+    struct Hit {
+        RayHit hit;
+        Object* object = nullptr;
+    };
+    /// The first shape along origin + f * translation, f in [0, 1] (m): World::castRayClosest (sensors unseen, no hit
+    /// from inside a shape), with its Object. With debugDraw.rays on, the ray and its hit are kept for drawing (those
+    /// cast since the last fixed step began, at most kDebugRays). Throws as castRayClosest does.
+    std::optional<Hit> castRay(const Vec2& origin, const Vec2& translation, const QueryFilter& filter = {});
+    /// The Objects whose shapes contain the point (m): World::overlapPoint, each Object once, in entity order.
+    std::vector<Object*> objectsAt(const Vec2& point, const QueryFilter& filter = {}) const;
+    /// The Object whose RigidBody is `body` (a linear search of the entities); nullptr when none owns it.
+    Object* objectOf(BodyId body) const;
+    const std::vector<DebugRay>& debugRays() const { return debugRays_; }
+    static constexpr std::size_t kDebugRays = 1024;
+
     /// Fixed physics rate in Hz (default 40, the paper's 1/40 s step). Throws for hz <= 0, NaN or > 10000.
     void setPhysicsRate(double hz);
     double physicsRate() const { return 1.0 / fixedTimeStep_; }
@@ -125,6 +144,7 @@ private:
     World world_;
     std::vector<std::unique_ptr<Entity>> entities_;
     std::vector<Result> results_;
+    std::vector<DebugRay> debugRays_;  // castRay's rays since the last fixed step began, for debug drawing
     int nextId_ = 1;
     int iterating_ = 0;  // > 0 while a phase walks the entity list
     double fixedTimeStep_ = 1.0 / 40.0;

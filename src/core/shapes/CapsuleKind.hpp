@@ -39,6 +39,9 @@ struct ShapeKind<Capsule> {
         return {xf.apply(c.center1), xf.apply(c.center2), c.radius};
     }
 
+    static LocalRayHit rayCast(const Capsule& c, const LocalRay& ray) { return rayCastRounded(coreOf(c), ray); }
+    static bool containsPoint(const Capsule& c, const Vec2& p) { return distanceToCore(coreOf(c), p) <= c.radius; }
+
     static void toKernel(const Capsule& c, kernel::Shape& k) {
         TwoPoints::toKernel(kernelKind, c.center1, c.center2, c.radius, k);
     }

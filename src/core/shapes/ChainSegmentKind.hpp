@@ -42,6 +42,15 @@ struct ShapeKind<ChainSegment> {
         return {xf.apply(c.ghost1), ShapeKind<Segment>::placed(c.segment, xf), xf.apply(c.ghost2)};
     }
 
+    // One-sided, as its collisions: a ray from in front (moving against the left normal) hits; one from behind
+    // passes through, so a ray cast out of a chain loop's inside leaves it.
+    static LocalRayHit rayCast(const ChainSegment& c, const LocalRay& ray) {
+        const Vec2 left = perp(c.segment.point2 - c.segment.point1);
+        if (!(left.dot(ray.translation) < 0.0)) return {};
+        return rayCastSegment(ray, c.segment.point1, c.segment.point2);
+    }
+    static bool containsPoint(const ChainSegment&, const Vec2&) { return false; }  // no area
+
     // The kernel sees a two-sided segment (never tunnels); the batch does not carry the ghosts.
     static void toKernel(const ChainSegment& c, kernel::Shape& k) {
         TwoPoints::toKernel(kernelKind, c.segment.point1, c.segment.point2, 0.0, k);

@@ -41,6 +41,11 @@ struct ShapeKind<Circle> {
     static std::vector<Vec2> outline(const Circle& c, const Transform& xf);
     static Circle placed(const Circle& c, const Transform& xf) { return {xf.apply(c.center), c.radius}; }
 
+    static LocalRayHit rayCast(const Circle& c, const LocalRay& ray) { return rayCastDisc(ray, c.center, c.radius); }
+    static bool containsPoint(const Circle& c, const Vec2& p) {
+        return (p - c.center).squaredNorm() <= c.radius * c.radius;
+    }
+
     // The kernel's circle: its centre is its one vertex.
     static void toKernel(const Circle& c, kernel::Shape& k) {
         k.kind = kernelKind;

@@ -63,6 +63,17 @@ struct ShapeKind<Polygon> {
         return q;
     }
 
+    static LocalRayHit rayCast(const Polygon& p, const LocalRay& ray) {
+        if (p.radius == 0.0) return rayCastConvex(ray, p.vertices.data(), p.normals.data(), p.count);
+        return rayCastRounded(coreOf(p), ray);
+    }
+    static bool containsPoint(const Polygon& p, const Vec2& q) {
+        if (p.radius > 0.0) return distanceToCore(coreOf(p), q) <= p.radius;
+        for (int i = 0; i < p.count; ++i)
+            if (p.normals[i].dot(q - p.vertices[i]) > 0.0) return false;
+        return true;
+    }
+
     static void toKernel(const Polygon& p, kernel::Shape& k) {
         k.kind = kernelKind;
         k.count = p.count;

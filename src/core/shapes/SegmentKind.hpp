@@ -64,6 +64,11 @@ struct ShapeKind<Segment> {
     static std::vector<Vec2> outline(const Segment& s, const Transform& xf);
     static Segment placed(const Segment& s, const Transform& xf) { return {xf.apply(s.point1), xf.apply(s.point2)}; }
 
+    static LocalRayHit rayCast(const Segment& s, const LocalRay& ray) {
+        return rayCastSegment(ray, s.point1, s.point2);
+    }
+    static bool containsPoint(const Segment&, const Vec2&) { return false; }  // no area
+
     static void toKernel(const Segment& s, kernel::Shape& k) {
         TwoPoints::toKernel(kernelKind, s.point1, s.point2, 0.0, k);
     }

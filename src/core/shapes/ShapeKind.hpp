@@ -29,7 +29,10 @@
 //   collide(s, xs, t, xt, margin)  the narrow phase against every kind T up to and including this one in
 //                                Geometry's order: the normal from s to t (the table in NarrowPhase.cpp reverses
 //                                it for the other order)
+//   rayCast(s, ray)              where a ray enters the shape (RayCast.hpp: no hit from inside), the shape's frame
+//   containsPoint(s, p)          whether the point (the shape's frame) lies in the shape, boundary included
 
+#include "RayCast.hpp"
 #include "../Manifolds.hpp"
 #include "../ContinuousKernel.hpp"
 

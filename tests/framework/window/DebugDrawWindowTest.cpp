@@ -276,3 +276,39 @@ TEST(DebugDrawWindow, JointKindsRevolutePrismaticWheelPulleyGearWeld) {
 
 }  // namespace
 }  // namespace physim
+
+namespace physim {
+namespace {
+
+bool orange(sf::Color c) { return c.r > 200 && c.g > 80 && c.g < 160 && c.b < 60; }
+
+// A ray (RayCast drawing): orange up to its hit, the hit point's dot there, a blue normal, faint beyond.
+TEST(DebugDrawWindow, RayCastHitPointAndNormal) {
+    World world;
+    BodyDef def;
+    def.type = BodyType::Static;
+    def.position = {1.0, 0.0};
+    def.shape = makeCircle(0.5);
+    world.createBody(def);
+    const Vec2 origin(-3.0, 0.0), translation(6.0, 0.0);
+    const std::vector<DebugRay> rays{{origin, translation, world.castRayClosest(origin, translation)}};
+    ASSERT_TRUE(rays[0].hit);
+    Canvas canvas;
+    DebugDrawOptions options;
+    options.rays = true;
+    canvas.texture.clear(sf::Color::White);
+    drawDebug(canvas.texture, canvas.view, world, options, rays);
+    canvas.texture.display();
+    canvas.image = canvas.texture.getTexture().copyToImage();
+    EXPECT_TRUE(orange(canvas.at({-2.0, 0.0}))) << "the ray before its hit";
+    EXPECT_TRUE(orange(canvas.at({0.5, 0.04}))) << "the hit point's dot (4 px above the line)";
+    const sf::Color beyond = canvas.at({2.5, 0.0});
+    EXPECT_FALSE(orange(beyond));
+    EXPECT_LT(beyond.b, 255) << "the ray past its hit, faint";
+    const sf::Color normal = canvas.at({0.2, 0.0});  // the normal points back along -x from the hit at x = 0.5
+    EXPECT_GT(normal.b, 150);
+    EXPECT_LT(normal.r, 120);
+}
+
+}  // namespace
+}  // namespace physim
