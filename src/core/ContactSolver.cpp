@@ -230,6 +230,17 @@ template <bool Two>
     markBlock(block, cold);
 }
 
+// A block's surface-material terms from its `lanes` rows' contacts' (the other lanes' are zero) and its prepared
+// masses.
+inline void prepareMaterial(ContactBlockMaterial& m, const ContactBlockCold& cold, int lanes,
+                            const ContactSurface* surfaces, const ContactBlock& block) {
+    auto surface = [&](int k) { return k < lanes ? surfaces[cold.lanes[k].contact] : ContactSurface{}; };
+    m.tangentSpeed = lanesOf([&](int k) { return surface(k).tangentSpeed; });
+    m.rolling = lanesOf([&](int k) { return surface(k).rolling; });
+    m.rollingMass = inverseOrZero(block.invIA + block.invIB);
+    m.rollingImpulse = splat(0.0);
+}
+
 // What an empty lane is prepared from: no points, no bodies (immovable sides that do not turn).
 const ContactData kEmptyContact{};
 const SolverBodySim kNoBody{};
@@ -244,7 +255,8 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
 [[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
                                                        const BlockRows* rows, std::size_t count, const RowRef* refs,
                                                        const ContactData* contacts, const SolverBodySim* sims,
-                                                       const BodyData* bodies) {
+                                                       const BodyData* bodies, ContactBlockMaterial* material,
+                                                       const ContactSurface* surfaces) {
     PreparedRows prepared;
     SolverBodySim still[2][kLanes];  // the lanes' static or sleeping sides, A and B (rowBody)
     for (std::size_t j = 0; j < count; ++j) {
@@ -281,6 +293,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         prepared.turning += static_cast<std::size_t>(gatherLanes(in, block, cold[j], contact, A, B));
         if (block.twoPoints) prepareLanes<true>(in, block, cold[j]);
         else prepareLanes<false>(in, block, cold[j]);
+        if (material) prepareMaterial(material[j], cold[j], lanes, surfaces, block);  // a pointer fixed for the step
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
     return prepared;
@@ -647,9 +660,10 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
 // immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
 // pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
-template <bool V, bool Turns, bool Bias, bool Two>
+// Material: the relax pass adds the block's surface-material terms (ContactBlockMaterial, at `material`).
+template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
-                                              const ContactPass& pass) {
+                                              const ContactPass& pass, ContactBlockMaterial* material = nullptr) {
     if constexpr (!Bias)
         if (c.holdsPush) releasePushes(c, cold, states, pass);
     WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
@@ -756,10 +770,22 @@ template <bool V, bool Turns, bool Bias, bool Two>
     // word, also decides which it is for the next substep: sliding when even the bound leaves the faces moving
     // against each other faster than slipSpeed (a transient of one pass does not break a face loose). A frictionless
     // lane has a zero bound: no impulse.
+    if constexpr (!Bias && Material && Turns) {
+        // Rolling resistance: before friction, so that friction, the pass's last word, leaves a rolling body's face
+        // rolling without slip on what the rolling row left it. The bound is clamped like friction's (0 - bound).
+        const Wide bound = material->rolling * totalNormal;
+        const Wide old = material->rollingImpulse;
+        const Wide next = clamp(mulAdd<V>(-material->rollingMass, B.w - A.w, old), zero - bound, bound);
+        const Wide d = next - old;
+        A.w = mulAdd<V>(d, -c.invIA, A.w);
+        B.w = mulAdd<V>(d, c.invIB, B.w);
+        material->rollingImpulse = next;
+    }
     if constexpr (!Bias) {
         if (c.friction) {
             const Wide tx = -ny, ty = nx;
-            const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            if constexpr (Material) vt = vt + material->tangentSpeed;  // the belt's: rest is vt = -tangentSpeed
             const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
             // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
             // lane's bits do not depend on whether a neighbour's friction made the block run this path.
@@ -767,7 +793,8 @@ template <bool V, bool Turns, bool Bias, bool Two>
             applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.negRtA, c.rtB);
             c.tangentImpulse = tangent;
             // The faces' speed against each other once the bound is applied, measured (no division in the loop).
-            const Wide after = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            Wide after = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            if constexpr (Material) after = after + material->tangentSpeed;
             const WideMask slides = (c.tangentMass > 0.0) & (abs(after) > pass.slipSpeed);
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
@@ -799,50 +826,71 @@ template <bool V, bool Bias>
     }
 }
 
+// The relax pass with the blocks' surface-material terms (material[i] belongs to begin[i]).
+template <bool V>
+[[gnu::always_inline]] inline void relaxLoopMaterial(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                                     SolverBody* states, const ContactPass& pass,
+                                                     ContactBlockMaterial* material) {
+    for (ContactBlock* c = begin; c != end; ++c, ++cold, ++material) {
+        if (c->twoPoints) {
+            if (c->turns) solveBlock<V, true, false, true, true>(*c, *cold, states, pass, material);
+            else solveBlock<V, false, false, true, true>(*c, *cold, states, pass, material);
+        } else {
+            if (c->turns) solveBlock<V, true, false, false, true>(*c, *cold, states, pass, material);
+            else solveBlock<V, false, false, false, true>(*c, *cold, states, pass, material);
+        }
+    }
+}
+
+// The material terms act in the relax pass only (friction's pass): the solve pass is the same with or without them.
 template <bool V>
 [[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                             SolverBody* states, const ContactPass& pass) {
+                                             SolverBody* states, const ContactPass& pass,
+                                             ContactBlockMaterial* material) {
     if (pass.useBias) solveLoopWith<V, true>(begin, end, cold, states, pass);
+    else if (material) relaxLoopMaterial<V>(begin, end, cold, states, pass, material);
     else solveLoopWith<V, false>(begin, end, cold, states, pass);
 }
 
 // The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
 PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                             const BodyData* bodies, ContactBlockMaterial* material, const ContactSurface* surfaces) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
 }
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<false>(begin, end, states);
 }
 void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass) {
-    solveLoop<false>(begin, end, cold, states, pass);
+                   const ContactPass& pass, ContactBlockMaterial* material) {
+    solveLoop<false>(begin, end, cold, states, pass, material);
 }
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                           std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                          const SolverBodySim* sims, const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                                          const SolverBodySim* sims, const BodyData* bodies,
+                                          ContactBlockMaterial* material, const ContactSurface* surfaces) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
 }
 PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                               std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                              const SolverBodySim* sims, const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                                              const SolverBodySim* sims, const BodyData* bodies,
+                                          ContactBlockMaterial* material, const ContactSurface* surfaces) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
 }
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                                const ContactPass& pass) {
-    solveLoop<true>(begin, end, cold, states, pass);
+                                const ContactPass& pass, ContactBlockMaterial* material) {
+    solveLoop<true>(begin, end, cold, states, pass, material);
 }
 PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                    SolverBody* states, const ContactPass& pass) {
-    solveLoop<true>(begin, end, cold, states, pass);
+                                    SolverBody* states, const ContactPass& pass, ContactBlockMaterial* material) {
+    solveLoop<true>(begin, end, cold, states, pass, material);
 }
 #endif
 
@@ -850,13 +898,15 @@ PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, Cont
 
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, WideCode code) {
+                             const BodyData* bodies, WideCode code, ContactBlockMaterial* material,
+                             const ContactSurface* surfaces) {
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies);
-    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    case WideCode::Avx512:
+        return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
 #endif
-    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
     }
 }
 
@@ -871,14 +921,25 @@ void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* state
 }
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, WideCode code) {
+                   const ContactPass& pass, WideCode code, ContactBlockMaterial* material) {
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
-    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass);
+    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass, material);
+    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass, material);
 #endif
-    default: return solveBaseline(begin, end, cold, states, pass);
+    default: return solveBaseline(begin, end, cold, states, pass, material);
     }
+}
+
+void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,
+                      SolverBody* states) {
+    for (const ContactBlock* c = begin; c != end; ++c, ++material)
+        for (int k = 0; k < kLanes; ++k) {
+            const double impulse = material->rollingImpulse[k];
+            if (impulse == 0.0) continue;
+            if (c->writes & (1u << k)) states[c->indexA[k]].w -= c->invIA[k] * impulse;
+            if (c->writes & (1u << (k + kLanes))) states[c->indexB[k]].w += c->invIB[k] * impulse;
+        }
 }
 
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
