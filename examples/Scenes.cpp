@@ -12,6 +12,7 @@ const std::vector<Scene>& scenes() {
         {"ramp", makeRamp},              {"tipping", makeTipping},
         {"atwood", makeAtwood},          {"gears", makeGears},
         {"car", makeCar},
+        {"conveyor", makeConveyor},
     };
     return all;
 }

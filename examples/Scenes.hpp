@@ -29,6 +29,7 @@ std::unique_ptr<Simulation> makeTipping();
 std::unique_ptr<Simulation> makeAtwood();
 std::unique_ptr<Simulation> makeGears();
 std::unique_ptr<Simulation> makeCar();
+std::unique_ptr<Simulation> makeConveyor();
 
 struct Scene {
     std::string name;  ///< the example's program name

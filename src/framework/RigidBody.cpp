@@ -200,6 +200,21 @@ void RigidBody::setDynamicFriction(double mu) {
     else def_.dynamicFriction = mu;
 }
 
+double RigidBody::rollingResistance() const {
+    return world_ ? world_->rollingResistance(id_) : def_.rollingResistance;
+}
+double RigidBody::tangentSpeed() const { return world_ ? world_->tangentSpeed(id_) : def_.tangentSpeed; }
+void RigidBody::setRollingResistance(double coefficient) {
+    requireNonNegative("rigid body rolling resistance", coefficient);
+    if (world_) world_->setRollingResistance(id_, coefficient);
+    else def_.rollingResistance = coefficient;
+}
+void RigidBody::setTangentSpeed(double speed) {
+    requireWithin("rigid body tangent speed", speed, kMaxSpeed);
+    if (world_) world_->setTangentSpeed(id_, speed);
+    else def_.tangentSpeed = speed;
+}
+
 void RigidBody::addForce(const Vec2& value, ForceMode mode) {
     requireFinite("addForce value", value);
     if (!world_) throw std::logic_error("physim: addForce needs the entity to be added to a simulation first");
