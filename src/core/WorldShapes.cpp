@@ -225,6 +225,8 @@ std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
     requireInRange("chain restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("chain static friction", def.staticFriction);
     requireNonNegative("chain dynamic friction", def.dynamicFriction);
+    requireNonNegative("chain rolling resistance", def.rollingResistance);
+    requireWithin("chain tangent speed", def.tangentSpeed, kMaxSpeed);
     std::vector<ShapeDef> pieces;
     for (const ChainSegment& piece : makeChain(def.points, def.loop)) {
         requireWithin("chain point", piece.segment.point1, kMaxCoordinate);
@@ -234,6 +236,8 @@ std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
         d.restitution = def.restitution;
         d.staticFriction = def.staticFriction;
         d.dynamicFriction = def.dynamicFriction;
+        d.rollingResistance = def.rollingResistance;
+        d.tangentSpeed = def.tangentSpeed;
         pieces.push_back(d);
     }
     return addShapes(id, pieces, "createChain");

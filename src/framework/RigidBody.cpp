@@ -128,6 +128,8 @@ void RigidBody::createMoreShapes() {
         c.restitution = def_.restitution;
         c.staticFriction = def_.staticFriction;
         c.dynamicFriction = def_.dynamicFriction;
+        c.rollingResistance = def_.rollingResistance;
+        c.tangentSpeed = def_.tangentSpeed;
         world_->createChain(id_, c);
     }
     for (const auto& m : more_) {

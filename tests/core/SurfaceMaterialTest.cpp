@@ -9,6 +9,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace physim {
 namespace {
@@ -174,6 +175,63 @@ TEST(TangentSpeed, NegativeSpeedCarriesTheOtherWayAndASecondBeltAdds) {
     world.setTangentSpeed(box, 0.5);
     for (int i = 0; i < 120; ++i) world.step(kDt);
     EXPECT_NEAR(world.velocity(box).x(), -1.0, 1e-6);
+}
+
+TEST(TangentSpeed, ChainBeltRunsTheWayItsPointsAreListed) {
+    World world(awake());
+    BodyDef groundDef;
+    groundDef.type = BodyType::Static;
+    groundDef.withShape = false;
+    const BodyId floor = world.createBody(groundDef);
+    ChainDef chain;
+    chain.points = {{-20.0, 0.0}, {0.0, 0.0}, {20.0, 0.0}};  // left to right: solid below
+    chain.tangentSpeed = 1.25;
+    world.createChain(floor, chain);
+    BodyDef def;
+    def.shape = makeBox(0.25, 0.25);
+    def.position = {-1.0, 0.25};
+    const BodyId box = world.createBody(def);
+    for (int i = 0; i < 120; ++i) world.step(kDt);
+    // Over the joint between the pieces and on: riding at the belt's speed (1e-6 m/s: rounding).
+    EXPECT_NEAR(world.velocity(box).x(), 1.25, 1e-6);
+    EXPECT_GT(world.position(box).x(), 0.5);
+}
+
+// Material rows in parallel give the same bits as on one thread: balls rolling to rest and boxes on a belt, enough
+// rows for several blocks and colours.
+TEST(RollingResistanceTangentSpeed, ThreadsGiveTheSameBits) {
+    auto run = [](int threads) {
+        WorldSettings settings = awake();
+        settings.threads = threads;
+        World world(settings);
+        BodyDef beltDef;
+        beltDef.type = BodyType::Static;
+        beltDef.shape = makeBox(40.0, 0.5);
+        beltDef.position = {0.0, -0.5};
+        beltDef.tangentSpeed = 1.0;
+        beltDef.rollingResistance = 0.05;
+        world.createBody(beltDef);
+        std::vector<BodyId> bodies;
+        for (int i = 0; i < 60; ++i) {
+            BodyDef def;
+            def.position = {-30.0 + i, 0.3 + 0.6 * (i % 3)};
+            if (i % 2) def.shape = makeCircle(0.3);
+            else def.shape = makeBox(0.3, 0.3);
+            def.velocity = {0.5 * (i % 5) - 1.0, 0.0};
+            bodies.push_back(world.createBody(def));
+        }
+        for (int i = 0; i < 120; ++i) world.step(kDt);
+        std::vector<double> state;
+        for (const BodyId b : bodies) {
+            state.push_back(world.position(b).x());
+            state.push_back(world.position(b).y());
+            state.push_back(world.angularVelocity(b));
+        }
+        return state;
+    };
+    const std::vector<double> one = run(1), two = run(2);
+    ASSERT_EQ(one.size(), two.size());
+    for (std::size_t i = 0; i < one.size(); ++i) EXPECT_EQ(one[i], two[i]) << i;  // bit for bit
 }
 
 // A box sliding from v0 on flat ground stops after d = v0^2 / (2 mu g), mu the pair's mixed dynamic friction.

@@ -51,6 +51,8 @@ struct ChainDef {
     double restitution = 0.0;          ///< in [0, 1]
     double staticFriction = 0.6;       ///< >= 0
     double dynamicFriction = 0.4;      ///< >= 0
+    double rollingResistance = 0.0;    ///< >= 0 (ShapeDef)
+    double tangentSpeed = 0.0;         ///< m/s (ShapeDef): positive runs the way the points are listed
 };
 
 }  // namespace physim
