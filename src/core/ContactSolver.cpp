@@ -764,12 +764,6 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
             totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);
         }
     }
-    // Friction in the relax pass only, after the normal rows, so its bound sees the load without the solve pass's
-    // push-out (friction bounded by a push the relax pass then takes back would hold faces the load does not). A
-    // sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's last
-    // word, also decides which it is for the next substep: sliding when even the bound leaves the faces moving
-    // against each other faster than slipSpeed (a transient of one pass does not break a face loose). A frictionless
-    // lane has a zero bound: no impulse.
     if constexpr (!Bias && Material && Turns) {
         // Rolling resistance: before friction, so that friction, the pass's last word, leaves a rolling body's face
         // rolling without slip on what the rolling row left it. The bound is clamped like friction's (0 - bound).
@@ -781,6 +775,12 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
         B.w = mulAdd<V>(d, c.invIB, B.w);
         material->rollingImpulse = next;
     }
+    // Friction in the relax pass only, after the normal rows, so its bound sees the load without the solve pass's
+    // push-out (friction bounded by a push the relax pass then takes back would hold faces the load does not). A
+    // sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's last
+    // word, also decides which it is for the next substep: sliding when even the bound leaves the faces moving
+    // against each other faster than slipSpeed (a transient of one pass does not break a face loose). A frictionless
+    // lane has a zero bound: no impulse.
     if constexpr (!Bias) {
         if (c.friction) {
             const Wide tx = -ny, ty = nx;
@@ -875,7 +875,7 @@ PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold
 PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                               std::size_t count, const RowRef* refs, const ContactData* contacts,
                                               const SolverBodySim* sims, const BodyData* bodies,
-                                          ContactBlockMaterial* material, const ContactSurface* surfaces) {
+                                              ContactBlockMaterial* material, const ContactSurface* surfaces) {
     return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
 }
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
