@@ -12,6 +12,8 @@
 #include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
 
+#include <SFML/Graphics/RenderWindow.hpp>
+#include <SFML/Graphics/VertexArray.hpp>
 #include <SFML/Window/Event.hpp>
 
 #include <algorithm>
@@ -116,6 +118,20 @@ public:
             measured_ = true;
             restart();
         }
+    }
+
+    // The belt's surface: marks on its face moving at u (the body itself stays put).
+    void onRender(sf::RenderWindow* window) override {
+        const sf::Transform toPixels = view.worldToPixels(window->getSize());
+        constexpr double kSpacing = 0.5;  // m between marks
+        const double shift = std::fmod(u_ * time, kSpacing);
+        sf::VertexArray marks(sf::Lines);
+        const sf::Color color(200, 200, 210);
+        for (double x = -kBeltHalfLength + 0.1 + shift; x < kBeltHalfLength; x += kSpacing) {
+            marks.append(sf::Vertex({float(x), -0.05f}, color));
+            marks.append(sf::Vertex({float(x - 0.1), float(-2.0 * kBeltHalfHeight + 0.05)}, color));
+        }
+        window->draw(marks, toPixels);
     }
 
 private:
