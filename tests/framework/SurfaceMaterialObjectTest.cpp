@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace physim {
 namespace {
@@ -33,6 +34,23 @@ TEST(RigidBodyRollingResistanceTangentSpeed, KeptBeforeAttachAndSetOnTheWorldAft
     EXPECT_EQ(belt.rb.tangentSpeed(), 1.5);
     b.rb.setTangentSpeed(-0.5);
     EXPECT_EQ(sim.world().tangentSpeed(sim.world().shapes(b.rb.bodyId())[0]), -0.5);
+}
+
+TEST(RigidBodyRollingResistanceTangentSpeed, PartsKeepTheirOwnMaterial) {
+    Simulation sim;
+    auto body = std::make_unique<Object>(RectangleShape({1.0, 0.2}), sf::Color::White);
+    Material tread;
+    tread.rollingResistance = 0.3;
+    tread.tangentSpeed = 0.7;
+    body->addShape(CircleShape(0.2), tread, {0.6, 0.0});
+    tread.tangentSpeed = NAN;
+    EXPECT_THROW(body->addShape(CircleShape(0.2), tread, {-0.6, 0.0}), std::invalid_argument);
+    Object& o = sim.addEntity(std::move(body));
+    const std::vector<ShapeId> ids = o.rb.shapeIds();
+    ASSERT_EQ(ids.size(), 2u);
+    EXPECT_EQ(sim.world().rollingResistance(ids[0]), 0.0);  // the first shape: the body's own
+    EXPECT_EQ(sim.world().rollingResistance(ids[1]), 0.3);
+    EXPECT_EQ(sim.world().tangentSpeed(ids[1]), 0.7);
 }
 
 }  // namespace
