@@ -842,13 +842,10 @@ template <bool V>
     }
 }
 
-// The material terms act in the relax pass only (friction's pass): the solve pass is the same with or without them.
 template <bool V>
 [[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                             SolverBody* states, const ContactPass& pass,
-                                             ContactBlockMaterial* material) {
+                                             SolverBody* states, const ContactPass& pass) {
     if (pass.useBias) solveLoopWith<V, true>(begin, end, cold, states, pass);
-    else if (material) relaxLoopMaterial<V>(begin, end, cold, states, pass, material);
     else solveLoopWith<V, false>(begin, end, cold, states, pass);
 }
 
@@ -862,8 +859,13 @@ void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* state
     warmStartLoop<false>(begin, end, states);
 }
 void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, ContactBlockMaterial* material) {
-    solveLoop<false>(begin, end, cold, states, pass, material);
+                   const ContactPass& pass) {
+    solveLoop<false>(begin, end, cold, states, pass);
+}
+// The relax pass with surface-material terms: functions of their own, so the loops above stay as they were.
+void relaxMaterialBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                           const ContactPass& pass, ContactBlockMaterial* material) {
+    relaxLoopMaterial<false>(begin, end, cold, states, pass, material);
 }
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
@@ -882,15 +884,24 @@ PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, Solv
     warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                                const ContactPass& pass, ContactBlockMaterial* material) {
-    solveLoop<true>(begin, end, cold, states, pass, material);
+                                const ContactPass& pass) {
+    solveLoop<true>(begin, end, cold, states, pass);
+}
+PHYSIM_AVX2_CODE void relaxMaterialAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                        SolverBody* states, const ContactPass& pass, ContactBlockMaterial* material) {
+    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
 }
 PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                    SolverBody* states, const ContactPass& pass, ContactBlockMaterial* material) {
-    solveLoop<true>(begin, end, cold, states, pass, material);
+                                    SolverBody* states, const ContactPass& pass) {
+    solveLoop<true>(begin, end, cold, states, pass);
+}
+PHYSIM_AVX512_CODE void relaxMaterialAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                            SolverBody* states, const ContactPass& pass,
+                                            ContactBlockMaterial* material) {
+    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
 }
 #endif
 
@@ -922,12 +933,22 @@ void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* state
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code, ContactBlockMaterial* material) {
+    // The material terms act in the relax pass only (friction's pass): the solve pass is the same without them.
+    if (material && !pass.useBias) {
+        switch (pickWideCode(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+        case WideCode::Avx512: return relaxMaterialAvx512(begin, end, cold, states, pass, material);
+        case WideCode::Avx2: return relaxMaterialAvx2(begin, end, cold, states, pass, material);
+#endif
+        default: return relaxMaterialBaseline(begin, end, cold, states, pass, material);
+        }
+    }
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass, material);
-    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass, material);
+    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
+    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass);
 #endif
-    default: return solveBaseline(begin, end, cold, states, pass, material);
+    default: return solveBaseline(begin, end, cold, states, pass);
     }
 }
 
