@@ -255,8 +255,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
 [[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
                                                        const BlockRows* rows, std::size_t count, const RowRef* refs,
                                                        const ContactData* contacts, const SolverBodySim* sims,
-                                                       const BodyData* bodies, ContactBlockMaterial* material,
-                                                       const ContactSurface* surfaces) {
+                                                       const BodyData* bodies) {
     PreparedRows prepared;
     SolverBodySim still[2][kLanes];  // the lanes' static or sleeping sides, A and B (rowBody)
     for (std::size_t j = 0; j < count; ++j) {
@@ -293,7 +292,6 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         prepared.turning += static_cast<std::size_t>(gatherLanes(in, block, cold[j], contact, A, B));
         if (block.twoPoints) prepareLanes<true>(in, block, cold[j]);
         else prepareLanes<false>(in, block, cold[j]);
-        if (material) prepareMaterial(material[j], cold[j], lanes, surfaces, block);  // a pointer fixed for the step
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
     return prepared;
@@ -852,8 +850,8 @@ template <bool V>
 // The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
 PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, ContactBlockMaterial* material, const ContactSurface* surfaces) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+                             const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
 }
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<false>(begin, end, states);
@@ -870,15 +868,13 @@ void relaxMaterialBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockC
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                           std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                          const SolverBodySim* sims, const BodyData* bodies,
-                                          ContactBlockMaterial* material, const ContactSurface* surfaces) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+                                          const SolverBodySim* sims, const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
 }
 PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                               std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                              const SolverBodySim* sims, const BodyData* bodies,
-                                              ContactBlockMaterial* material, const ContactSurface* surfaces) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+                                              const SolverBodySim* sims, const BodyData* bodies) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
 }
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
@@ -909,16 +905,20 @@ PHYSIM_AVX512_CODE void relaxMaterialAvx512(ContactBlock* begin, ContactBlock* e
 
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, WideCode code, ContactBlockMaterial* material,
-                             const ContactSurface* surfaces) {
+                             const BodyData* bodies, WideCode code) {
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512:
-        return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
-    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+    case WideCode::Avx512: return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies);
 #endif
-    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies, material, surfaces);
+    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies);
     }
+}
+
+void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,
+                      const BlockRows* rows, std::size_t count, const ContactSurface* surfaces) {
+    for (std::size_t j = 0; j < count; ++j)
+        prepareMaterial(material[j], cold[j], static_cast<int>(rows[j].count), surfaces, blocks[j]);
 }
 
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {

@@ -150,12 +150,13 @@ struct PreparedRows {
 /// lanes empty rows), each from its contact's manifold and its bodies (lever arms at the centres of mass): an awake
 /// side (index >= 0) from the solver's copy in sims, a static or sleeping one (kNullIndex) from its record in
 /// bodies. Four lanes at once; a lane's bits never depend on the others or on `code` (as for the passes below).
-/// With `material` (block j's at material[j]), fills the blocks' surface-material terms too, from surfaces[i] for
-/// contact i (ContactSurface).
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, WideCode code = WideCode::Best,
-                             ContactBlockMaterial* material = nullptr, const ContactSurface* surfaces = nullptr);
+                             const BodyData* bodies, WideCode code = WideCode::Best);
+/// After prepareContacts, in a world that uses surface materials: blocks [0, count)'s terms (material[j] block j's),
+/// from surfaces[i] for contact i (ContactSurface). A pass of its own, so preparation without them is as it was.
+void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,
+                      const BlockRows* rows, std::size_t count, const ContactSurface* surfaces);
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");

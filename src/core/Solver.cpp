@@ -504,8 +504,11 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                          const PreparedRows prepared = prepareContacts(
                                              blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
                                              graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
-                                             w.bodies.data(), WideCode::Best, materialAt(b),
-                                             w.contactSurfaces.data());
+                                             w.bodies.data());
+                                         if (materials)
+                                             prepareMaterials(blockAt(b), coldAt(b), materialAt(b),
+                                                              graph_.blockRows.data() + b, e - b,
+                                                              w.contactSurfaces.data());
                                          turningRows += prepared.turning;  // one add per chunk
                                          if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
                                      }
