@@ -14,6 +14,7 @@ const std::vector<Scene>& scenes() {
         {"car", makeCar},
         {"one_way", makeOneWay},
         {"photogate", makePhotogate},
+        {"conveyor", makeConveyor},
     };
     return all;
 }

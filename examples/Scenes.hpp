@@ -31,6 +31,7 @@ std::unique_ptr<Simulation> makeGears();
 std::unique_ptr<Simulation> makeCar();
 std::unique_ptr<Simulation> makeOneWay();
 std::unique_ptr<Simulation> makePhotogate();
+std::unique_ptr<Simulation> makeConveyor();
 
 struct Scene {
     std::string name;  ///< the example's program name

@@ -11,8 +11,11 @@
 #include "ShapeData.hpp"
 
 #include "physim/core/Contact.hpp"
+#include "physim/core/WorldSettings.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 namespace physim {
@@ -34,12 +37,21 @@ struct ManifoldCache {
     std::array<Point, 2> points{};
 };
 
-/// The pair's material, mixed from its shapes' by the paper's rules (restitution min, friction coefficients averaged)
-/// when the contact is made, and again when either shape's material changes.
+/// The pair's material, mixed from its shapes' by WorldSettings' rules (by default the paper's: restitution min,
+/// friction coefficients averaged) when the contact is made, and again when either shape's material or a rule
+/// changes.
 struct ContactMaterial {
     double staticFriction = 0.0;
     double dynamicFriction = 0.0;
     double restitution = 0.0;
+};
+
+/// The pair's surface terms (rolling resistance, belt speed), mixed like ContactMaterial. Kept beside the contacts
+/// (WorldImpl::contactSurfaces) rather than in them: a contact is six cache lines, full, and only a world that uses
+/// these reads them.
+struct ContactSurface {
+    double rolling = 0.0;       // m: the rolling row's angular bound per unit normal impulse (coefficient x radius)
+    double tangentSpeed = 0.0;  // m/s: the friction row holds the bodies' tangential speed at -tangentSpeed
 };
 
 /// Line-aligned: the solver's preparation reads a record up to `cache`, in colour order (at random), and that part
@@ -73,12 +85,44 @@ struct alignas(64) ContactData {
 
 static_assert(sizeof(ContactData) == 6 * 64, "six lines: see the field order");
 
-/// The contact's material from its shapes'.
-inline void mixMaterials(ContactData& c, const ShapeData& a, const ShapeData& b) {
-    c.material.staticFriction = 0.5 * (a.staticFriction + b.staticFriction);
-    c.material.dynamicFriction = 0.5 * (a.dynamicFriction + b.dynamicFriction);
-    c.material.restitution = b.restitution < a.restitution ? b.restitution : a.restitution;  // std::min's rule
+/// Two shapes' coefficients combined by `rule` (validated: WorldSettings). Average and Min are the expressions
+/// the default rules have always used, so their bits do not change.
+inline double mixCoefficients(MixingRule rule, double a, double b) {
+    switch (rule) {
+        case MixingRule::GeometricMean: return std::sqrt(a * b);
+        case MixingRule::Min: return b < a ? b : a;  // std::min's rule
+        case MixingRule::Max: return a < b ? b : a;  // std::max's rule
+        case MixingRule::Multiply: return a * b;
+        case MixingRule::Average: break;
+    }
+    return 0.5 * (a + b);
+}
+
+/// The radius a shape rolls on, m: a circle's or a capsule's, a rounded polygon's rounding; 0 for what has no
+/// round part (a sharp polygon, a segment), which tips or slides rather than rolls.
+inline double rollingRadius(const Geometry& g) {
+    if (const auto* c = std::get_if<Circle>(&g)) return c->radius;
+    if (const auto* c = std::get_if<Capsule>(&g)) return c->radius;
+    if (const auto* p = std::get_if<Polygon>(&g)) return p->radius;
+    return 0.0;
+}
+
+/// The contact's material from its shapes' (a the contact's shape a), by the world's mixing rules.
+inline void mixMaterials(ContactData& c, const ShapeData& a, const ShapeData& b, const WorldSettings& settings) {
+    c.material.staticFriction = mixCoefficients(settings.frictionMixing, a.staticFriction, b.staticFriction);
+    c.material.dynamicFriction = mixCoefficients(settings.frictionMixing, a.dynamicFriction, b.dynamicFriction);
+    c.material.restitution = mixCoefficients(settings.restitutionMixing, a.restitution, b.restitution);
     c.keepsPush = a.restitution > 0.0 || b.restitution > 0.0;
+}
+
+/// The pair's surface terms. Rolling resistance takes the larger coefficient (either surface that deforms resists)
+/// on the rounder shape's radius. Tangent speeds add, each shape's surface running clockwise around it: along the
+/// pair's tangent t = perp(n) (n from a to b), a's surface moves at -sA and b's at +sB, so the faces rest on each
+/// other when b's material point moves at -(sA + sB) along t relative to a's.
+inline ContactSurface mixSurfaces(const ShapeData& a, const ShapeData& b) {
+    const double radiusA = rollingRadius(a.geometry), radiusB = rollingRadius(b.geometry);
+    return {std::max(a.rollingResistance, b.rollingResistance) * std::max(radiusA, radiusB),
+            a.tangentSpeed + b.tangentSpeed};
 }
 
 

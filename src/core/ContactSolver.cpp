@@ -230,6 +230,17 @@ template <bool Two>
     markBlock(block, cold);
 }
 
+// A block's surface-material terms from its `lanes` rows' contacts' (the other lanes' are zero) and its prepared
+// masses.
+inline void prepareMaterial(ContactBlockMaterial& m, const ContactBlockCold& cold, int lanes,
+                            const ContactSurface* surfaces, const ContactBlock& block) {
+    auto surface = [&](int k) { return k < lanes ? surfaces[cold.lanes[k].contact] : ContactSurface{}; };
+    m.tangentSpeed = lanesOf([&](int k) { return surface(k).tangentSpeed; });
+    m.rolling = lanesOf([&](int k) { return surface(k).rolling; });
+    m.rollingMass = inverseOrZero(block.invIA + block.invIB);
+    m.rollingImpulse = splat(0.0);
+}
+
 // What an empty lane is prepared from: no points, no bodies (immovable sides that do not turn).
 const ContactData kEmptyContact{};
 const SolverBodySim kNoBody{};
@@ -647,9 +658,10 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
 // immovable and not spinning; the preparation decides once per step): the same rule with its angular terms left
 // out, so a scene whose bodies all have rotation locked does no rotation work in its hottest loop. Bias is the
 // pass's useBias: the relax pass (false) has no soft scaling to apply, and compiles without it.
-template <bool V, bool Turns, bool Bias, bool Two>
+// Material: the relax pass adds the block's surface-material terms (ContactBlockMaterial, at `material`).
+template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
 [[gnu::always_inline]] inline void solveBlock(ContactBlock& c, ContactBlockCold& cold, SolverBody* states,
-                                              const ContactPass& pass) {
+                                              const ContactPass& pass, ContactBlockMaterial* material = nullptr) {
     if constexpr (!Bias)
         if (c.holdsPush) releasePushes(c, cold, states, pass);
     WideSide A = gather<true>(c.indexA, states), B = gather<true>(c.indexB, states);
@@ -750,6 +762,17 @@ template <bool V, bool Turns, bool Bias, bool Two>
             totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);
         }
     }
+    if constexpr (!Bias && Material && Turns) {
+        // Rolling resistance: before friction, so that friction, the pass's last word, leaves a rolling body's face
+        // rolling without slip on what the rolling row left it. The bound is clamped like friction's (0 - bound).
+        const Wide bound = material->rolling * totalNormal;
+        const Wide old = material->rollingImpulse;
+        const Wide next = clamp(mulAdd<V>(-material->rollingMass, B.w - A.w, old), zero - bound, bound);
+        const Wide d = next - old;
+        A.w = mulAdd<V>(d, -c.invIA, A.w);
+        B.w = mulAdd<V>(d, c.invIB, B.w);
+        material->rollingImpulse = next;
+    }
     // Friction in the relax pass only, after the normal rows, so its bound sees the load without the solve pass's
     // push-out (friction bounded by a push the relax pass then takes back would hold faces the load does not). A
     // sticking face holds up to mu_s times its load, a sliding one mu_d times. The relax pass, the substep's last
@@ -759,7 +782,8 @@ template <bool V, bool Turns, bool Bias, bool Two>
     if constexpr (!Bias) {
         if (c.friction) {
             const Wide tx = -ny, ty = nx;
-            const Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            if constexpr (Material) vt = vt + material->tangentSpeed;  // the belt's: rest is vt = -tangentSpeed
             const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
             // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
             // lane's bits do not depend on whether a neighbour's friction made the block run this path.
@@ -767,7 +791,8 @@ template <bool V, bool Turns, bool Bias, bool Two>
             applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, tx, ty, c.negRtA, c.rtB);
             c.tangentImpulse = tangent;
             // The faces' speed against each other once the bound is applied, measured (no division in the loop).
-            const Wide after = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            Wide after = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
+            if constexpr (Material) after = after + material->tangentSpeed;
             const WideMask slides = (c.tangentMass > 0.0) & (abs(after) > pass.slipSpeed);
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
@@ -799,6 +824,22 @@ template <bool V, bool Bias>
     }
 }
 
+// The relax pass with the blocks' surface-material terms (material[i] belongs to begin[i]).
+template <bool V>
+[[gnu::always_inline]] inline void relaxLoopMaterial(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                                     SolverBody* states, const ContactPass& pass,
+                                                     ContactBlockMaterial* material) {
+    for (ContactBlock* c = begin; c != end; ++c, ++cold, ++material) {
+        if (c->twoPoints) {
+            if (c->turns) solveBlock<V, true, false, true, true>(*c, *cold, states, pass, material);
+            else solveBlock<V, false, false, true, true>(*c, *cold, states, pass, material);
+        } else {
+            if (c->turns) solveBlock<V, true, false, false, true>(*c, *cold, states, pass, material);
+            else solveBlock<V, false, false, false, true>(*c, *cold, states, pass, material);
+        }
+    }
+}
+
 template <bool V>
 [[gnu::always_inline]] inline void solveLoop(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                              SolverBody* states, const ContactPass& pass) {
@@ -819,6 +860,11 @@ void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* col
                    const ContactPass& pass) {
     solveLoop<false>(begin, end, cold, states, pass);
 }
+// The relax pass with surface-material terms: functions of their own, so the loops above stay as they were.
+void relaxMaterialBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
+                           const ContactPass& pass, ContactBlockMaterial* material) {
+    relaxLoopMaterial<false>(begin, end, cold, states, pass, material);
+}
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                           std::size_t count, const RowRef* refs, const ContactData* contacts,
@@ -837,12 +883,21 @@ PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactB
                                 const ContactPass& pass) {
     solveLoop<true>(begin, end, cold, states, pass);
 }
+PHYSIM_AVX2_CODE void relaxMaterialAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                        SolverBody* states, const ContactPass& pass, ContactBlockMaterial* material) {
+    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
+}
 PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
 }
 PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
                                     SolverBody* states, const ContactPass& pass) {
     solveLoop<true>(begin, end, cold, states, pass);
+}
+PHYSIM_AVX512_CODE void relaxMaterialAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                            SolverBody* states, const ContactPass& pass,
+                                            ContactBlockMaterial* material) {
+    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
 }
 #endif
 
@@ -860,6 +915,12 @@ PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const
     }
 }
 
+void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,
+                      const BlockRows* rows, std::size_t count, const ContactSurface* surfaces) {
+    for (std::size_t j = 0; j < count; ++j)
+        prepareMaterial(material[j], cold[j], static_cast<int>(rows[j].count), surfaces, blocks[j]);
+}
+
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
@@ -871,7 +932,17 @@ void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* state
 }
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, WideCode code) {
+                   const ContactPass& pass, WideCode code, ContactBlockMaterial* material) {
+    // The material terms act in the relax pass only (friction's pass): the solve pass is the same without them.
+    if (material && !pass.useBias) {
+        switch (pickWideCode(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+        case WideCode::Avx512: return relaxMaterialAvx512(begin, end, cold, states, pass, material);
+        case WideCode::Avx2: return relaxMaterialAvx2(begin, end, cold, states, pass, material);
+#endif
+        default: return relaxMaterialBaseline(begin, end, cold, states, pass, material);
+        }
+    }
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
     case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
@@ -879,6 +950,17 @@ void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* col
 #endif
     default: return solveBaseline(begin, end, cold, states, pass);
     }
+}
+
+void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,
+                      SolverBody* states) {
+    for (const ContactBlock* c = begin; c != end; ++c, ++material)
+        for (int k = 0; k < kLanes; ++k) {
+            const double impulse = material->rollingImpulse[k];
+            if (impulse == 0.0) continue;
+            if (c->writes & (1u << k)) states[c->indexA[k]].w -= c->invIA[k] * impulse;
+            if (c->writes & (1u << (k + kLanes))) states[c->indexB[k]].w += c->invIB[k] * impulse;
+        }
 }
 
 void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {

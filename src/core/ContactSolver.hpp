@@ -39,6 +39,7 @@
 namespace physim {
 
 struct ContactData;
+struct ContactSurface;
 
 struct ContactConstraintPoint {
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // lever arms from the centres of mass at the start, m
@@ -115,6 +116,19 @@ struct alignas(64) ContactBlockCold {
     } lanes[kLanes];
 };
 
+/// A block's surface-material terms, kept in an array of their own that only a world using rolling resistance or
+/// belt speeds has (WorldImpl::surfaceMaterials): a world without them runs the passes it always has. In the relax
+/// pass, after the normal rows, a rolling row drives the bodies' relative angular velocity wB - wA to zero with an
+/// angular impulse of at most `rolling` times the row's normal impulse (so a torque of at most C_rr r N), opposing
+/// the rolling and never reversing it; then the friction row drives the faces' tangential speed to -tangentSpeed
+/// instead of zero (a belt). A lane without them has zeros there, and moves as it would without the array.
+struct alignas(64) ContactBlockMaterial {
+    Wide tangentSpeed;    // m/s, ContactMaterial's
+    Wide rolling;         // m, ContactMaterial's: angular bound per unit normal impulse
+    Wide rollingMass;     // kg m^2: 1 / (IA^-1 + IB^-1); 0 where neither side turns
+    Wide rollingImpulse;  // N m s, accumulated over the step (from zero: the bodies' warm start carries it on)
+};
+
 /// Which rows a block holds: [first, first + count) of the rows in colour order.
 struct BlockRows {
     std::uint32_t first = 0, count = 0;
@@ -139,6 +153,10 @@ struct PreparedRows {
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
                              const BodyData* bodies, WideCode code = WideCode::Best);
+/// After prepareContacts, in a world that uses surface materials: blocks [0, count)'s terms (material[j] block j's),
+/// from surfaces[i] for contact i (ContactSurface). A pass of its own, so preparation without them is as it was.
+void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,
+                      const BlockRows* rows, std::size_t count, const ContactSurface* surfaces);
 /// The passes over blocks [begin, end); cold[i] belongs to begin[i]. states[i] is awake body i, and states[-1]
 /// (kNullIndex) a still body that the rows read for an immovable side and never write.
 static_assert(kNullIndex == -1, "the rows read an immovable side at states[kNullIndex]");
@@ -159,8 +177,12 @@ struct ContactPass {
                                                     // only by rows that can bounce (restitution > 0)
     bool holdPushes = false;  // rows that keep their push-out apart do (needs a relax pass: it takes the push back)
 };
+/// With `material` (material[i] belongs to begin[i]), the relax pass adds the blocks' surface-material terms.
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass, WideCode code = WideCode::Best);
+                   const ContactPass& pass, WideCode code = WideCode::Best, ContactBlockMaterial* material = nullptr);
+/// Where the rows warm start a substep after the step's first (warmStartContacts), their rolling impulses too.
+void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,
+                      SolverBody* states);
 /// Writes a lane's impulses back into its manifold (warm start for the next step, and what contacts() reports).
 void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact);
 

@@ -450,7 +450,7 @@ void WorldImpl::createContact(std::uint32_t shapeA, std::uint32_t shapeB) {
     c.manifold.bodyB = BodyId{b, bodies[b].generation};
     c.manifold.shapeA = ShapeId{shapeA, shapes[shapeA].generation};
     c.manifold.shapeB = ShapeId{shapeB, shapes[shapeB].generation};
-    mixMaterials(c, shapes[shapeA], shapes[shapeB]);
+    mixContact(index);
     c.proxyA = shapes[shapeA].proxy;
     c.proxyB = shapes[shapeB].proxy;
     const std::uint32_t ends[2] = {a, b};

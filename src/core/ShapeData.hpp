@@ -28,6 +28,8 @@ struct ShapeData {
     MassProperties unitMass;               // per unit density
     Filter filter;                         // which shapes it may pair with
     bool sensor = false;                   // reports overlaps, never collides
+    double rollingResistance = 0.0;        // dimensionless (ShapeDef)
+    double tangentSpeed = 0.0;             // m/s, clockwise around the shape (ShapeDef)
 
     std::int32_t next = kNullIndex;        // the body's next shape
     std::uint32_t generation = 0;
@@ -45,6 +47,8 @@ inline void assignShape(ShapeData& s, std::uint32_t body, const ShapeDef& def, c
     s.dynamicFriction = def.dynamicFriction;
     s.filter = def.filter;
     s.sensor = def.isSensor;
+    s.rollingResistance = def.rollingResistance;
+    s.tangentSpeed = def.tangentSpeed;
 }
 
 }  // namespace physim

@@ -159,6 +159,11 @@ void Solver::solve(WorldImpl& w) {
             rowImpactSpeed_.resize(graph_.blockRows.size() * kLanes);
         }
     }
+    // Surface materials: their terms' array beside the cold blocks, from the first step of a world that uses them.
+    if (w.surfaceMaterials) {
+        if (contactMaterial_.size() < contactCold_.size()) contactMaterial_.resize(contactCold_.size());
+        if (w.contactSurfaces.size() < w.contacts.size()) w.contactSurfaces.resize(w.contacts.size());
+    }
     graph_.stale = false;
     graph_.laidOutByIsland = byIsland;
     w.profile.rowsLaidOut = !keep && (rowCount > 0 || !graph_.jointConstraints.empty());
@@ -303,6 +308,11 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     const std::size_t region = static_cast<std::size_t>(worker) * graph_.regionBlocks;
     auto blockAt = [&](std::size_t b) { return contactBlocks_.data() + region + (b - firstBlock); };
     auto coldAt = [&](std::size_t b) { return contactCold_.data() + region + (b - firstBlock); };
+    // Block b's surface-material terms; null (the loops without them) in a world that has never used them.
+    const bool materials = w.surfaceMaterials;
+    auto materialAt = [&](std::size_t b) {
+        return materials ? contactMaterial_.data() + region + (b - firstBlock) : nullptr;
+    };
     // On the calling thread's share of the step: a stage's time counts only where one group runs at a time.
     auto stage = [&](Stage s) { return timed ? std::optional<StageTimer>(std::in_place, w.profile, s) : std::nullopt; };
     auto forBodies = [&](auto&& f) {
@@ -421,7 +431,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     auto solvePass = [&](bool useBias, bool store) {
         contactPass.useBias = useBias;
         pass([&](std::size_t b, std::size_t e) {
-                 solveContacts(blockAt(b), blockAt(e), coldAt(b), st, contactPass);
+                 solveContacts(blockAt(b), blockAt(e), coldAt(b), st, contactPass, WideCode::Best, materialAt(b));
                  if (store) storeBlocks(b, e);
              },
              [&](std::size_t b, std::size_t e) {
@@ -477,7 +487,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             ContactPass rows = contactPass;
             rows.substep = sub;
             rows.useBias = !relax;
-            solveContacts(blockAt(begin), blockAt(end), coldAt(begin), st, rows);
+            solveContacts(blockAt(begin), blockAt(end), coldAt(begin), st, rows, WideCode::Best, materialAt(begin));
             if (relax && sub + 1 == substeps && at.lastPass) storeBlocks(begin, end);
         });
     };
@@ -510,10 +520,15 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                              blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
                                              graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
                                              w.bodies.data());
+                                         if (materials)
+                                             prepareMaterials(blockAt(b), coldAt(b), materialAt(b),
+                                                              graph_.blockRows.data() + b, e - b,
+                                                              w.contactSurfaces.data());
                                          turningRows += prepared.turning;  // one add per chunk
                                          if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
                                      }
                                      warmStartContacts(blockAt(b), blockAt(e), st);
+                                     if (materials && sub > 0) warmStartRolling(blockAt(b), blockAt(e), materialAt(b), st);
                                  },
                                  [&](std::size_t b, std::size_t e) {
                                      if (sub == 0)

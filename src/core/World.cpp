@@ -42,6 +42,8 @@ ShapeDef firstShapeDef(const BodyDef& def) {
     shape.dynamicFriction = def.dynamicFriction;
     shape.filter = def.filter;
     shape.isSensor = def.isSensor;
+    shape.rollingResistance = def.rollingResistance;
+    shape.tangentSpeed = def.tangentSpeed;
     return shape;
 }
 
@@ -70,6 +72,8 @@ void validate(const BodyDef& def) {
     requireInRange("body restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("body static friction", def.staticFriction);
     requireNonNegative("body dynamic friction", def.dynamicFriction);
+    requireNonNegative("body rolling resistance", def.rollingResistance);
+    requireWithin("body tangent speed", def.tangentSpeed, kMaxSpeed);
     requireFinite("body gravity scale", def.gravityScale);
     validate(def.drag);
     if (def.withShape) validate(def.shape);
@@ -120,6 +124,15 @@ void validate(const WorldSettings& s) {
     requireNonNegative("sleepLinearTolerance", s.sleepLinearTolerance);
     requireNonNegative("sleepAngularTolerance", s.sleepAngularTolerance);
     requirePositive("timeToSleep", s.timeToSleep);
+    auto requireMixing = [](const char* name, MixingRule rule) {
+        if (rule != MixingRule::Average && rule != MixingRule::GeometricMean && rule != MixingRule::Min &&
+            rule != MixingRule::Max && rule != MixingRule::Multiply)
+            throw std::invalid_argument(std::string("physim: ") + name +
+                                        " must be Average, GeometricMean, Min, Max or Multiply, got " +
+                                        std::to_string(static_cast<int>(rule)));
+    };
+    requireMixing("frictionMixing", s.frictionMixing);
+    requireMixing("restitutionMixing", s.restitutionMixing);
 }
 
 // --- WorldImpl helpers ---------------------------------------------------------------------------------
@@ -169,7 +182,10 @@ void World::setSettings(const WorldSettings& settings) {
     physim::validate(settings);
     impl_->requireNotStepping("setSettings");
     const bool sleepWasOn = impl_->settings.enableSleep;
+    const bool remix = settings.frictionMixing != impl_->settings.frictionMixing ||
+                       settings.restitutionMixing != impl_->settings.restitutionMixing;
     impl_->settings = settings;
+    if (remix) impl_->remixContacts();
     impl_->executor.setThreads(settings.threads);
     impl_->solver.layoutChanged();  // the rows' groups depend on the thread count
     if (!settings.enableSleep) {

@@ -69,6 +69,9 @@ struct WorldImpl {
     std::vector<std::uint32_t> freeContacts;
     std::vector<std::uint32_t> awakeContacts;  // contacts with an awake body: the narrow phase's work list
     PairSet contactPairs;                      // shape slots (a, b) of every contact, a < b
+    // Per contact slot, its surface terms: empty until some contact has one (surfaceMaterials), then kept for every
+    // contact mixed since (those mixed before had none: a slot past the end reads as zero terms).
+    std::vector<ContactSurface> contactSurfaces;
 
     // Joints and islands.
     std::vector<JointData> joints;
@@ -114,6 +117,9 @@ struct WorldImpl {
     double dt = 0.0;
     bool stepping = false;
     std::uint64_t stepCount = 0;
+    // Some contact has had rolling resistance or a belt speed: from then on the solver runs its material terms
+    // (ContactBlockMaterial); a world that never uses them runs the loops it always has.
+    bool surfaceMaterials = false;
 
     // --- helpers shared by the stages (defined in the file of their concern) ----------------------------
     BodyData& body(std::uint32_t slot) { return bodies[slot]; }
@@ -175,6 +181,12 @@ struct WorldImpl {
     double meanWidth(std::uint32_t body) const;
     /// Sets a shape's material and mixes it again into its contacts.
     void setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction, double dynamicFriction);
+    /// Sets a shape's rolling resistance and tangent speed (validated) and mixes them again into its contacts.
+    void setShapeSurface(std::uint32_t shape, double rollingResistance, double tangentSpeed);
+    /// Mixes every contact's material again from its shapes' (a mixing rule changed).
+    void remixContacts();
+    /// Mixes contact c's material from its shapes' (mixMaterials), noting whether it needs the material terms.
+    void mixContact(std::uint32_t c);
 
     // Contacts.cpp
     void createContact(std::uint32_t shapeA, std::uint32_t shapeB);

@@ -32,6 +32,8 @@ void validate(const ShapeDef& def) {
     requireInRange("shape restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("shape static friction", def.staticFriction);
     requireNonNegative("shape dynamic friction", def.dynamicFriction);
+    requireNonNegative("shape rolling resistance", def.rollingResistance);
+    requireWithin("shape tangent speed", def.tangentSpeed, kMaxSpeed);
 }
 
 // The body's mass properties per unit of its reference density (BodyData::density): each shape's weighted by its
@@ -172,9 +174,30 @@ void WorldImpl::setShapeMaterial(std::uint32_t shape, double restitution, double
     s.restitution = restitution;
     s.staticFriction = staticFriction;
     s.dynamicFriction = dynamicFriction;
-    forEachContactOfShape(shape, [&](std::uint32_t c) {
-        mixMaterials(contacts[c], shapes[contacts[c].shapeA()], shapes[contacts[c].shapeB()]);
-    });
+    forEachContactOfShape(shape, [&](std::uint32_t c) { mixContact(c); });
+}
+
+void WorldImpl::setShapeSurface(std::uint32_t shape, double rollingResistance, double tangentSpeed) {
+    ShapeData& s = shapes[shape];
+    s.rollingResistance = rollingResistance;
+    s.tangentSpeed = tangentSpeed;
+    forEachContactOfShape(shape, [&](std::uint32_t c) { mixContact(c); });
+}
+
+void WorldImpl::mixContact(std::uint32_t c) {
+    ContactData& contact = contacts[c];
+    const ShapeData &a = shapes[contact.shapeA()], &b = shapes[contact.shapeB()];
+    mixMaterials(contact, a, b, settings);
+    const ContactSurface surface = mixSurfaces(a, b);
+    surfaceMaterials = surfaceMaterials || surface.rolling != 0.0 || surface.tangentSpeed != 0.0;
+    if (!surfaceMaterials) return;
+    if (contactSurfaces.size() <= c) contactSurfaces.resize(contacts.size());
+    contactSurfaces[c] = surface;
+}
+
+void WorldImpl::remixContacts() {
+    for (std::uint32_t c = 0; c < contacts.size(); ++c)
+        if (contacts[c].alive) mixContact(c);
 }
 
 // --- World -------------------------------------------------------------------------------------------
@@ -202,6 +225,8 @@ std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
     requireInRange("chain restitution", def.restitution, 0.0, 1.0);
     requireNonNegative("chain static friction", def.staticFriction);
     requireNonNegative("chain dynamic friction", def.dynamicFriction);
+    requireNonNegative("chain rolling resistance", def.rollingResistance);
+    requireWithin("chain tangent speed", def.tangentSpeed, kMaxSpeed);
     std::vector<ShapeDef> pieces;
     for (const ChainSegment& piece : makeChain(def.points, def.loop)) {
         requireWithin("chain point", piece.segment.point1, kMaxCoordinate);
@@ -212,6 +237,8 @@ std::vector<ShapeId> World::createChain(BodyId id, const ChainDef& def) {
         d.staticFriction = def.staticFriction;
         d.dynamicFriction = def.dynamicFriction;
         d.filter = def.filter;
+        d.rollingResistance = def.rollingResistance;
+        d.tangentSpeed = def.tangentSpeed;
         pieces.push_back(d);
     }
     return addShapes(id, pieces, "createChain");
@@ -351,6 +378,44 @@ void World::setMaterial(ShapeId id, double restitution, double staticFriction, d
     const std::uint32_t body = impl_->shapes[slot].body;
     wake(BodyId{body, impl_->bodies[body].generation}, "setMaterial");
     impl_->setShapeMaterial(slot, restitution, staticFriction, dynamicFriction);
+}
+
+double World::rollingResistance(ShapeId id) const { return impl_->shapes[shapeSlot(id)].rollingResistance; }
+double World::tangentSpeed(ShapeId id) const { return impl_->shapes[shapeSlot(id)].tangentSpeed; }
+
+void World::setRollingResistance(ShapeId id, double coefficient) {
+    requireNonNegative("shape rolling resistance", coefficient);
+    const std::uint32_t slot = shapeSlot(id);
+    const std::uint32_t body = impl_->shapes[slot].body;
+    wake(BodyId{body, impl_->bodies[body].generation}, "setRollingResistance");
+    impl_->setShapeSurface(slot, coefficient, impl_->shapes[slot].tangentSpeed);
+}
+
+void World::setTangentSpeed(ShapeId id, double speed) {
+    requireWithin("shape tangent speed", speed, kMaxSpeed);
+    const std::uint32_t slot = shapeSlot(id);
+    const std::uint32_t body = impl_->shapes[slot].body;
+    wake(BodyId{body, impl_->bodies[body].generation}, "setTangentSpeed");
+    impl_->setShapeSurface(slot, impl_->shapes[slot].rollingResistance, speed);
+}
+
+double World::rollingResistance(BodyId id) const { return impl_->shapes[firstShape(id)].rollingResistance; }
+double World::tangentSpeed(BodyId id) const { return impl_->shapes[firstShape(id)].tangentSpeed; }
+
+void World::setRollingResistance(BodyId id, double coefficient) {
+    requireNonNegative("body rolling resistance", coefficient);
+    const BodyData& b = wake(id, "setRollingResistance");
+    impl_->forEachShape(b, [&](std::uint32_t slot, const ShapeData& shape) {
+        impl_->setShapeSurface(slot, coefficient, shape.tangentSpeed);
+    });
+}
+
+void World::setTangentSpeed(BodyId id, double speed) {
+    requireWithin("body tangent speed", speed, kMaxSpeed);
+    const BodyData& b = wake(id, "setTangentSpeed");
+    impl_->forEachShape(b, [&](std::uint32_t slot, const ShapeData& shape) {
+        impl_->setShapeSurface(slot, shape.rollingResistance, speed);
+    });
 }
 
 }  // namespace physim

@@ -21,6 +21,8 @@ void validate(const Material& m) {
     requireInRange("material restitution", m.restitution, 0.0, 1.0);
     requireNonNegative("material static friction", m.staticFriction);
     requireNonNegative("material dynamic friction", m.dynamicFriction);
+    requireNonNegative("material rolling resistance", m.rollingResistance);
+    requireWithin("material tangent speed", m.tangentSpeed, kMaxSpeed);
 }
 }  // namespace
 
@@ -59,6 +61,8 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         def.staticFriction = material.staticFriction;
         def.dynamicFriction = material.dynamicFriction;
         def.filter = s->filter();
+        def.rollingResistance = material.rollingResistance;
+        def.tangentSpeed = material.tangentSpeed;
         rb.addChain(def);
     } else {
         ShapeDef def;
@@ -69,6 +73,8 @@ Object::Part& Object::addShape(std::unique_ptr<CollisionShape> s, const Material
         def.dynamicFriction = material.dynamicFriction;
         def.filter = s->filter();
         def.isSensor = s->isSensor();
+        def.rollingResistance = material.rollingResistance;
+        def.tangentSpeed = material.tangentSpeed;
         rb.addShape(def);
     }
     Mesh drawn = partMesh ? *partMesh : Mesh::ShapeMesh(*s, mesh.shape().getFillColor());

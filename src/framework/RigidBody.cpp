@@ -145,6 +145,8 @@ void RigidBody::createMoreShapes() {
         c.staticFriction = def_.staticFriction;
         c.dynamicFriction = def_.dynamicFriction;
         c.filter = def_.filter;
+        c.rollingResistance = def_.rollingResistance;
+        c.tangentSpeed = def_.tangentSpeed;
         world_->createChain(id_, c);
     }
     for (const auto& m : more_) {
@@ -215,6 +217,21 @@ void RigidBody::setDynamicFriction(double mu) {
     requireNonNegative("rigid body dynamic friction", mu);
     if (world_) world_->setMaterial(id_, restitution(), staticFriction(), mu);
     else def_.dynamicFriction = mu;
+}
+
+double RigidBody::rollingResistance() const {
+    return world_ ? world_->rollingResistance(id_) : def_.rollingResistance;
+}
+double RigidBody::tangentSpeed() const { return world_ ? world_->tangentSpeed(id_) : def_.tangentSpeed; }
+void RigidBody::setRollingResistance(double coefficient) {
+    requireNonNegative("rigid body rolling resistance", coefficient);
+    if (world_) world_->setRollingResistance(id_, coefficient);
+    else def_.rollingResistance = coefficient;
+}
+void RigidBody::setTangentSpeed(double speed) {
+    requireWithin("rigid body tangent speed", speed, kMaxSpeed);
+    if (world_) world_->setTangentSpeed(id_, speed);
+    else def_.tangentSpeed = speed;
 }
 
 void RigidBody::addForce(const Vec2& value, ForceMode mode) {

@@ -40,9 +40,9 @@ struct BodyDef {
     /// made of a chain); only static and kinematic bodies may have none. shape is then unused.
     bool withShape = true;
     double density = 1.0;              ///< kg/m^2, > 0 for dynamic bodies; mass = density * area
-    double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
-    double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
-    double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+    double restitution = 0.0;          ///< in [0, 1]; a pair mixes them (WorldSettings::restitutionMixing: min)
+    double staticFriction = 0.6;       ///< >= 0; a pair mixes them (WorldSettings::frictionMixing: average)
+    double dynamicFriction = 0.4;      ///< >= 0; a pair mixes them (WorldSettings::frictionMixing: average)
     Filter filter{};                   ///< the first shape's collision filter (Filter.hpp)
     bool isSensor = false;             ///< true: the first shape collides with nothing, reports overlaps instead
     bool useGravity = true;
@@ -57,6 +57,8 @@ struct BodyDef {
     /// true: the body takes part in Newtonian gravitation between bodies (GravitationSettings, World.hpp).
     bool attracting = false;
     DragDef drag{};                    ///< air drag (none by default)
+    double rollingResistance = 0.0;    ///< the first shape's rolling resistance, >= 0 (ShapeDef)
+    double tangentSpeed = 0.0;         ///< the first shape's surface speed, m/s (ShapeDef: a conveyor belt)
 };
 
 }  // namespace physim

@@ -29,11 +29,17 @@ struct ShapeId {
 struct ShapeDef {
     Geometry geometry = Circle{Vec2::Zero(), 0.5};
     double density = 1.0;              ///< kg/m^2, >= 0; the shape's mass is density * area
-    double restitution = 0.0;          ///< in [0, 1]; a pair uses min(eA, eB)
-    double staticFriction = 0.6;       ///< >= 0; a pair uses the average of the two
-    double dynamicFriction = 0.4;      ///< >= 0; a pair uses the average of the two
+    double restitution = 0.0;          ///< in [0, 1]; a pair mixes them (WorldSettings::restitutionMixing: min)
+    double staticFriction = 0.6;       ///< >= 0; a pair mixes them (WorldSettings::frictionMixing: average)
+    double dynamicFriction = 0.4;      ///< >= 0; a pair mixes them (WorldSettings::frictionMixing: average)
     Filter filter{};                   ///< which shapes it may collide with (Filter.hpp)
     bool isSensor = false;             ///< true: collides with nothing, reports overlaps instead
+    /// Rolling resistance coefficient, >= 0 (dimensionless): a pair resists rolling with a torque of at most the
+    /// larger coefficient times the normal force times the rounder shape's radius (docs/collision.md).
+    double rollingResistance = 0.0;
+    /// m/s, finite: the surface runs along itself at this speed (a conveyor belt); positive runs clockwise around
+    /// the shape, so a belt's top face carries things towards +x.
+    double tangentSpeed = 0.0;
 };
 
 /// A chain (World::createChain): ground or walls as a polyline of many pieces (makeChain, Geometry.hpp), smooth
@@ -46,6 +52,8 @@ struct ChainDef {
     double staticFriction = 0.6;       ///< >= 0
     double dynamicFriction = 0.4;      ///< >= 0
     Filter filter{};                   ///< every piece's collision filter (Filter.hpp)
+    double rollingResistance = 0.0;    ///< >= 0 (ShapeDef)
+    double tangentSpeed = 0.0;         ///< m/s (ShapeDef): positive runs the way the points are listed
 };
 
 }  // namespace physim

@@ -169,6 +169,17 @@ public:
     double dynamicFriction(ShapeId id) const;
     /// As setMaterial(BodyId, ...), for one shape. Wakes its body.
     void setMaterial(ShapeId id, double restitution, double staticFriction, double dynamicFriction);
+    /// Surface materials (ShapeDef, docs/collision.md): rolling resistance >= 0, tangent speed finite (m/s). A set
+    /// call wakes the shape's body and takes effect at the next step; the BodyId forms set every shape of the body
+    /// and read its first.
+    double rollingResistance(ShapeId id) const;
+    double tangentSpeed(ShapeId id) const;
+    void setRollingResistance(ShapeId id, double coefficient);
+    void setTangentSpeed(ShapeId id, double speed);
+    double rollingResistance(BodyId id) const;
+    double tangentSpeed(BodyId id) const;
+    void setRollingResistance(BodyId id, double coefficient);
+    void setTangentSpeed(BodyId id, double speed);
 
     // --- collision filtering (Filter.hpp, ContactHooks.hpp): each costs nothing while unused -----------------
     /// The shape's filter. A change takes effect at the next step: its contacts the new filter refuses end (with

@@ -4,6 +4,11 @@
 
 namespace physim {
 
+/// How a contact combines its two shapes' coefficients a and b (friction or restitution): the arithmetic mean
+/// (a + b) / 2, the geometric mean sqrt(a b), the smaller, the larger, or the product a b (docs/collision.md,
+/// "Surface materials").
+enum class MixingRule { Average, GeometricMean, Min, Max, Multiply };
+
 struct WorldSettings {
     /// Bounds validate() holds: substeps in [1, maxSubsteps]; velocityIterations in [1, maxIterations] and
     /// relaxIterations in [0, maxIterations].
@@ -39,6 +44,10 @@ struct WorldSettings {
     /// Worker threads for the step: 1 runs everything on the calling thread; 0 uses every hardware thread.
     /// Results are bit-identical for any value (docs/architecture.md).
     int threads = 1;
+    /// How a contact mixes its shapes' friction coefficients (static and dynamic alike), and their restitutions.
+    /// A change re-mixes the existing contacts.
+    MixingRule frictionMixing = MixingRule::Average;
+    MixingRule restitutionMixing = MixingRule::Min;
 };
 
 /// Throws std::invalid_argument naming the first bad field.

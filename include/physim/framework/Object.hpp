@@ -17,9 +17,11 @@ namespace physim {
 /// What a shape of a compound object is made of: its density and its surface (ShapeDef's meanings).
 struct Material {
     double density = 1.0;          ///< kg/m^2, >= 0
-    double restitution = 0.0;      ///< in [0, 1]; a pair uses min(eA, eB)
-    double staticFriction = 0.6;   ///< >= 0; a pair uses the average
-    double dynamicFriction = 0.4;  ///< >= 0; a pair uses the average
+    double restitution = 0.0;      ///< in [0, 1]; a pair mixes them (WorldSettings: min)
+    double staticFriction = 0.6;   ///< >= 0; a pair mixes them (WorldSettings: average)
+    double dynamicFriction = 0.4;  ///< >= 0; a pair mixes them (WorldSettings: average)
+    double rollingResistance = 0.0;  ///< >= 0 (ShapeDef::rollingResistance)
+    double tangentSpeed = 0.0;       ///< m/s, a belt's surface speed (ShapeDef::tangentSpeed)
 };
 
 class Object : public Entity {

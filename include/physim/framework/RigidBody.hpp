@@ -60,11 +60,17 @@ public:
     bool useGravity() const;
     void setUseGravity(bool useGravity);
     double restitution() const;
-    void setRestitution(double restitution);  ///< [0, 1]; a pair uses min(eA, eB)
+    void setRestitution(double restitution);  ///< [0, 1]; a pair mixes them (WorldSettings: min)
     double staticFriction() const;
-    void setStaticFriction(double mu);        ///< >= 0; a pair uses the average
+    void setStaticFriction(double mu);        ///< >= 0; a pair mixes them (WorldSettings: average)
     double dynamicFriction() const;
-    void setDynamicFriction(double mu);       ///< >= 0; a pair uses the average
+    void setDynamicFriction(double mu);       ///< >= 0; a pair mixes them (WorldSettings: average)
+    /// Surface materials (docs/guide.md, "Surface materials"): set on every shape of the body once attached (on
+    /// its first shape before), read from its first shape.
+    double rollingResistance() const;
+    void setRollingResistance(double coefficient);  ///< >= 0: rolling is resisted by C_rr N r (docs/collision.md)
+    double tangentSpeed() const;
+    void setTangentSpeed(double speed);  ///< m/s: a conveyor belt; positive runs clockwise (a top face towards +x)
 
     void addForce(const Vec2& value, ForceMode mode = ForceMode::FORCE);
 
