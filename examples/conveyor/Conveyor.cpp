@@ -81,7 +81,7 @@ public:
 
         speeds_ = graphsManager.addGraph("Speeds;t (s);v (m/s)", "box", {}, physim::GraphMode::WITH_LINES);
         boxPredicted_ = graphsManager.addSeries(speeds_, "box: min(#mu g t, u)");
-        ballSpeed_ = graphsManager.addSeries(speeds_, "ball");
+        ballSpeed_ = graphsManager.addSeries(speeds_, "ball", {}, physim::GraphMode::WITH_LINES);  // markers: measured
         ballPredicted_ = graphsManager.addSeries(speeds_, "ball: v_{0} - (2/3) C_{rr} g t");
         graphsManager.build();
     }
