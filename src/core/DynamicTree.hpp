@@ -108,6 +108,26 @@ public:
 private:
     friend struct DynamicTreeTestAccess;  // tests break invariants on purpose to check validate()
 
+    // The node ids a query or ray cast has yet to visit: `entries` of them, in place for trees of height below
+    // kQueryStack, on the heap only for deeper ones. Not copyable (it points into itself).
+    class TraversalStack {
+    public:
+        explicit TraversalStack(std::size_t entries) {
+            if (entries > kQueryStack) {
+                deep_.resize(entries);
+                data_ = deep_.data();
+            }
+        }
+        TraversalStack(const TraversalStack&) = delete;
+        TraversalStack& operator=(const TraversalStack&) = delete;
+        std::int32_t* data() { return data_; }
+
+    private:
+        std::int32_t fixed_[kQueryStack];
+        std::vector<std::int32_t> deep_;
+        std::int32_t* data_ = fixed_;
+    };
+
     // An internal node on insertion's branch-and-bound frontier, waiting to have its children looked at.
     struct Candidate {
         double bound;          // least cost of pairing the new leaf with anything below this node
@@ -173,14 +193,8 @@ void DynamicTree::query(const Aabb& box, Callback&& callback) const {
     // Depth-first, child1's subtree before child2's (the order callbacks come in). A child is tested before it is
     // pushed, and a leaf that meets the box is reported at once unless child1's subtree must come first: the stack
     // holds at most one pending sibling per level plus two children, so height + 1 entries suffice.
-    std::int32_t fixed[kQueryStack];
-    std::vector<std::int32_t> deep;  // used only for trees too deep for `fixed`
-    std::int32_t* stack = fixed;
-    const std::size_t needed = static_cast<std::size_t>(root.height) + 1;
-    if (needed > kQueryStack) {
-        deep.resize(needed);
-        stack = deep.data();
-    }
+    TraversalStack traversal(static_cast<std::size_t>(root.height) + 1);
+    std::int32_t* const stack = traversal.data();
     std::size_t top = 0;
     stack[top++] = root_;
     while (top > 0) {
@@ -230,14 +244,8 @@ double DynamicTree::rayCast(const Vec2& origin, const Vec2& translation, double 
     double ex = ox + maxFraction * dx, ey = oy + maxFraction * dy;
     double lowX = std::min(ox, ex), lowY = std::min(oy, ey), highX = std::max(ox, ex), highY = std::max(oy, ey);
 
-    std::int32_t fixed[kQueryStack];
-    std::vector<std::int32_t> deep;
-    std::int32_t* stack = fixed;
-    const std::size_t needed = static_cast<std::size_t>(at(root_).height) + 1;
-    if (needed > kQueryStack) {
-        deep.resize(needed);
-        stack = deep.data();
-    }
+    TraversalStack traversal(static_cast<std::size_t>(at(root_).height) + 1);
+    std::int32_t* const stack = traversal.data();
     std::size_t top = 0;
     stack[top++] = root_;
     while (top > 0) {
