@@ -26,9 +26,7 @@ std::string describe(const Vec2& v) {
 }
 
 void requireFiniteVector(const char* call, const char* name, const Vec2& v) {
-    if (!std::isfinite(v.x()) || !std::isfinite(v.y()))
-        throw std::invalid_argument(std::string("physim: World::") + call + ": " + name + " must be finite, got " +
-                                    describe(v));
+    requireFinite(std::string("World::") + call + ": " + name, v);
 }
 
 void requireTranslation(const char* call, const Vec2& translation) {

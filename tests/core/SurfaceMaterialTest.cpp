@@ -2,6 +2,7 @@
 // restitution, each against its analytic answer at 60 Hz with default substeps.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,12 +18,6 @@ namespace {
 constexpr double kDt = 1.0 / 60.0;
 constexpr double kG = 9.81;
 
-WorldSettings awake() {
-    WorldSettings s;
-    s.enableSleep = false;  // sleep would hide creep
-    return s;
-}
-
 BodyId ground(World& world, double halfWidth = 50.0) {
     BodyDef def;
     def.type = BodyType::Static;
@@ -35,7 +30,7 @@ BodyId ground(World& world, double halfWidth = 50.0) {
 // m a = f (friction at the contact, along x) and I alpha = r f + C_rr m g r with alpha = -a / r give
 // a = -C_rr g / (1 + I / (m r^2)) = -(2/3) C_rr g, so from v0 it stops after d = v0^2 / (2 |a|) = 3 v0^2 / (4 C_rr g).
 TEST(RollingResistance, BallRollsToTheAnalyticDistanceAndStays) {
-    World world(awake());
+    World world(test::awakeSettings());
     ground(world);
     const double r = 0.5, v0 = 2.0, crr = 0.05;
     BodyDef def;
@@ -80,7 +75,7 @@ TEST(RollingResistance, BallRollsToTheAnalyticDistanceAndStays) {
 }
 
 TEST(RollingResistance, ZeroCoefficientKeepsRolling) {
-    World world(awake());
+    World world(test::awakeSettings());
     ground(world);
     BodyDef def;
     def.shape = makeCircle(0.5);
@@ -94,7 +89,7 @@ TEST(RollingResistance, ZeroCoefficientKeepsRolling) {
 }
 
 TEST(RollingResistance, SetAtRuntimeStopsARollingBall) {
-    World world(awake());
+    World world(test::awakeSettings());
     ground(world);
     BodyDef def;
     def.shape = makeCircle(0.5);
@@ -114,7 +109,7 @@ TEST(RollingResistance, SetAtRuntimeStopsARollingBall) {
 // A box put at rest on a belt whose surface runs at u slides under kinetic friction, a = mu_d g, until it moves
 // with the belt at t* = u / (mu_d g), then rides along at u.
 TEST(TangentSpeed, BoxReachesBeltSpeedAtTheAnalyticTime) {
-    World world(awake());
+    World world(test::awakeSettings());
     BodyDef beltDef;
     beltDef.type = BodyType::Static;
     beltDef.shape = makeBox(20.0, 0.5);
@@ -156,7 +151,7 @@ TEST(TangentSpeed, BoxReachesBeltSpeedAtTheAnalyticTime) {
 }
 
 TEST(TangentSpeed, NegativeSpeedCarriesTheOtherWayAndASecondBeltAdds) {
-    World world(awake());
+    World world(test::awakeSettings());
     BodyDef beltDef;
     beltDef.type = BodyType::Static;
     beltDef.shape = makeBox(20.0, 0.5);
@@ -178,7 +173,7 @@ TEST(TangentSpeed, NegativeSpeedCarriesTheOtherWayAndASecondBeltAdds) {
 }
 
 TEST(TangentSpeed, ChainBeltRunsTheWayItsPointsAreListed) {
-    World world(awake());
+    World world(test::awakeSettings());
     BodyDef groundDef;
     groundDef.type = BodyType::Static;
     groundDef.withShape = false;
@@ -201,7 +196,7 @@ TEST(TangentSpeed, ChainBeltRunsTheWayItsPointsAreListed) {
 // rows for several blocks and colours.
 TEST(RollingResistanceTangentSpeed, ThreadsGiveTheSameBits) {
     auto run = [](int threads) {
-        WorldSettings settings = awake();
+        WorldSettings settings = test::awakeSettings();
         settings.threads = threads;
         World world(settings);
         BodyDef beltDef;
@@ -236,7 +231,7 @@ TEST(RollingResistanceTangentSpeed, ThreadsGiveTheSameBits) {
 
 // A box sliding from v0 on flat ground stops after d = v0^2 / (2 mu g), mu the pair's mixed dynamic friction.
 double slidingDistance(MixingRule rule) {
-    WorldSettings settings = awake();
+    WorldSettings settings = test::awakeSettings();
     settings.frictionMixing = rule;
     World world(settings);
     BodyDef floor;
@@ -281,7 +276,7 @@ TEST(FrictionMixing, EachRuleGivesItsAnalyticSlidingDistance) {
 // A ball dropped from rest h above the ground (no friction, so no spin) leaves at e sqrt(2 g h) and rises to e^2 h,
 // e the pair's mixed restitution.
 double bounceHeight(MixingRule rule, double h) {
-    WorldSettings settings = awake();
+    WorldSettings settings = test::awakeSettings();
     settings.restitutionMixing = rule;
     World world(settings);
     BodyDef floor;
@@ -337,7 +332,7 @@ TEST(RestitutionMixing, EachRuleGivesItsAnalyticBounceHeight) {
 }
 
 TEST(FrictionMixing, ChangingTheRuleRemixesExistingContacts) {
-    World world(awake());
+    World world(test::awakeSettings());
     ground(world);
     BodyDef def;
     def.shape = makeBox(0.25, 0.25);
@@ -357,7 +352,7 @@ TEST(FrictionMixing, ChangingTheRuleRemixesExistingContacts) {
 
 TEST(SurfaceMaterialBadInput, RollingResistanceTangentSpeedAndMixingRejectedWorldUnchanged) {
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    World world(awake());
+    World world(test::awakeSettings());
     const BodyId floor = ground(world);
     BodyDef def;
     def.shape = makeCircle(0.5);

@@ -13,12 +13,10 @@ namespace {
 
 constexpr std::uint32_t kNone = 0xffffffffu;
 
-bool sideMoves(std::int32_t index, double invMass) { return rowMoves(index, invMass); }
-
 // The pin's neighbour through one of its bodies: the body's other pin, if it has two.
 std::uint32_t neighbour(std::uint32_t pin, std::int32_t index, double invMass, const std::vector<std::uint32_t>& count,
                         const std::vector<std::uint32_t>& pinOf) {
-    if (!sideMoves(index, invMass)) return kNone;
+    if (!rowMoves(index, invMass)) return kNone;
     const std::size_t b = static_cast<std::size_t>(index);
     if (count[b] != 2) return kNone;
     return pinOf[2 * b] == pin ? pinOf[2 * b + 1] : pinOf[2 * b];
@@ -59,7 +57,7 @@ void PinChains::find(std::vector<JointConstraint>& jointRows, std::size_t bodies
     auto count = [&](std::uint32_t k, bool store) {
         const JointConstraint& r = jointRows[k];
         for (const auto& [index, invMass] : {std::make_pair(r.indexA, r.invMassA), std::make_pair(r.indexB, r.invMassB)}) {
-            if (!sideMoves(index, invMass)) continue;
+            if (!rowMoves(index, invMass)) continue;
             const std::size_t b = static_cast<std::size_t>(index);
             if (store && pinCount_[b] < 2) pinOf_[2 * b + pinCount_[b]] = k;
             ++pinCount_[b];
@@ -68,15 +66,15 @@ void PinChains::find(std::vector<JointConstraint>& jointRows, std::size_t bodies
     // Pins, then those of a body pinned three times or more are left to the colours (a tree's fork).
     for (std::uint32_t k = 0; k < n; ++k) {
         const JointConstraint& r = jointRows[k];
-        if (!r.inLanes || !(sideMoves(r.indexA, r.invMassA) || sideMoves(r.indexB, r.invMassB))) continue;
+        if (!r.inLanes || !(rowMoves(r.indexA, r.invMassA) || rowMoves(r.indexB, r.invMassB))) continue;
         state_[k] = 1;
         count(k, false);
     }
     for (std::uint32_t k = 0; k < n; ++k) {
         if (state_[k] != 1) continue;
         const JointConstraint& r = jointRows[k];
-        const bool forkA = sideMoves(r.indexA, r.invMassA) && pinCount_[static_cast<std::size_t>(r.indexA)] > 2;
-        const bool forkB = sideMoves(r.indexB, r.invMassB) && pinCount_[static_cast<std::size_t>(r.indexB)] > 2;
+        const bool forkA = rowMoves(r.indexA, r.invMassA) && pinCount_[static_cast<std::size_t>(r.indexA)] > 2;
+        const bool forkB = rowMoves(r.indexB, r.invMassB) && pinCount_[static_cast<std::size_t>(r.indexB)] > 2;
         if (forkA || forkB) state_[k] = 2;
     }
     std::fill(pinCount_.begin(), pinCount_.end(), 0u);
