@@ -9,7 +9,7 @@ std::int32_t BroadPhase::createProxy(const Aabb& fatBox, std::uint32_t shape, bo
     const std::int32_t id = tree_[isStatic ? 1 : 0].createProxy(fatBox, shape);
     const std::int32_t k = key(id, isStatic);
     markMoved(k);
-    ++boxRevision_;
+    boxesChanged();
     return k;
 }
 
@@ -21,13 +21,13 @@ void BroadPhase::destroyProxy(std::int32_t k) {
         flags[id] = 0;
     }
     treeOf(k).destroyProxy(id);
-    ++boxRevision_;
+    boxesChanged();
 }
 
 void BroadPhase::moveProxy(std::int32_t k, const Aabb& fatBox) {
     treeOf(k).moveProxy(k >> 1, fatBox);
     markMoved(k);
-    ++boxRevision_;
+    boxesChanged();
 }
 
 void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes) {
@@ -38,7 +38,32 @@ void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::v
     }
     tree_[0].moveProxies(movedIds_, fatBoxes);
     for (const std::int32_t k : keys) markMoved(k);
-    if (!keys.empty()) ++boxRevision_;
+    if (!keys.empty()) boxesChanged();
+}
+
+void BroadPhase::boxesChanged() {
+    ++boxRevision_;
+    wide_.queries.store(0, std::memory_order_relaxed);
+}
+
+const WideBoxTree* BroadPhase::wideTree() const {
+    if (wide_.revision.load(std::memory_order_acquire) == boxRevision_) return &wide_.tree;
+    // Building costs about as much as a query per proxy over four (measured on piles of boxes): waiting that many
+    // queries bounds the cost of a build that is never used to what the queries took anyway.
+    const std::size_t proxies = tree_[0].proxyCount() + tree_[1].proxyCount();
+    if (wide_.queries.fetch_add(1, std::memory_order_relaxed) < 64 + proxies / 4) return nullptr;
+    const std::unique_lock<std::mutex> lock(wide_.building, std::try_to_lock);
+    if (!lock.owns_lock()) return nullptr;
+    if (wide_.revision.load(std::memory_order_acquire) == boxRevision_) return &wide_.tree;
+    wide_.tree.clear();
+    for (const DynamicTree& tree : tree_)
+        for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
+            const auto id = static_cast<std::int32_t>(i);
+            if (tree.isProxy(id)) wide_.tree.addLeaf(tree.fatAabb(id), tree.userData(id));
+        }
+    wide_.tree.build();
+    wide_.revision.store(boxRevision_, std::memory_order_release);
+    return &wide_.tree;
 }
 
 const Aabb& BroadPhase::fatBox(std::int32_t k) const { return treeOf(k).fatAabb(k >> 1); }

@@ -7,11 +7,14 @@
 #include "DynamicTree.hpp"
 #include "Executor.hpp"
 #include "PairSet.hpp"
+#include "WideBoxTree.hpp"
 
 #include "physim/core/Aabb.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -57,6 +60,15 @@ public:
         tree_[1].query(box, forward);
     }
 
+    /// Shapes whose boxes overlap `box`, for the world's public queries: as query, until many of them have met the
+    /// same boxes; from then on through a four-wide tree built once over both trees' boxes (WideBoxTree), which
+    /// takes about a third less time per query, in that tree's order. Steps use query, whose order is fixed.
+    template <class Callback>
+    void queryOften(const Aabb& box, Callback&& callback) const {
+        if (const WideBoxTree* wide = wideTree()) wide->query(box, callback);
+        else query(box, callback);
+    }
+
     /// Both trees' proxies along a ray (DynamicTree::rayCast), the movable tree first, the clip carried from one to
     /// the other: callback(shape, maxFraction) returns the new maxFraction (<= 0 stops).
     template <class Callback>
@@ -70,12 +82,26 @@ private:
     DynamicTree& treeOf(std::int32_t key) { return tree_[key & 1]; }
     const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }
     void markMoved(std::int32_t key);
+    void boxesChanged();
+    const WideBoxTree* wideTree() const;  // null until queryOften has been asked often enough since boxesChanged
     void beginFind(int workerSlots);
     void endFind(std::vector<ShapePair>& pairs);  // merges, sorts, empties the move buffer, re-queues declined
 
     DynamicTree tree_[2];                 // [0] shapes of movable bodies, [1] of static bodies
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
     std::uint64_t boxRevision_ = 0;
+    // queryOften's tree and what decides when to build it. Const queries may run on several threads at once: the
+    // one that builds holds `building`, the others go on through the two trees meanwhile. A copy starts empty.
+    struct WideCache {
+        WideCache() = default;
+        WideCache(const WideCache&) {}
+        WideCache& operator=(const WideCache&) { return *this; }
+        WideBoxTree tree;
+        std::atomic<std::uint64_t> revision{~std::uint64_t{0}};  // the boxRevision_ it was built for
+        std::atomic<std::uint64_t> queries{0};                    // queryOften calls since boxesChanged
+        std::mutex building;
+    };
+    mutable WideCache wide_;
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
     std::vector<std::vector<ShapePair>> perTask_;

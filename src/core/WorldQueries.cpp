@@ -142,7 +142,7 @@ void castShapeImpl(const WorldImpl& w, const Geometry& geometry, const Transform
     const kernel::Shape cast = toKernel(geometry);
     const double angle = pose.q.angle();
     double maxFraction = 1.0;
-    w.broadPhase.query(swept, [&](std::uint32_t slot) {
+    w.broadPhase.queryOften(swept, [&](std::uint32_t slot) {
         const ShapeData& shape = w.shapes[slot];
         if (!seen(shape, filter) || !shape.aabb.overlaps(swept)) return true;
         const BodyData& body = w.bodies[shape.body];
@@ -215,7 +215,7 @@ void overlapAabbImpl(const WorldImpl& w, const Aabb& box, const QueryFilter& fil
         return true;
     };
     bool go = true;
-    w.broadPhase.query(box, [&](std::uint32_t slot) {
+    w.broadPhase.queryOften(box, [&](std::uint32_t slot) {
         __builtin_prefetch(&w.shapes[slot].aabb);
         __builtin_prefetch(&w.shapes[slot].filter);
         batch[count++] = slot;
@@ -253,7 +253,7 @@ std::vector<ShapeId> World::overlapPoint(const Vec2& point, const QueryFilter& f
     requireFiniteVector("overlapPoint", "point", point);
     const WorldImpl& w = *impl_;
     std::vector<ShapeId> found;
-    w.broadPhase.query(Aabb{point, point}, [&](std::uint32_t slot) {
+    w.broadPhase.queryOften(Aabb{point, point}, [&](std::uint32_t slot) {
         const ShapeData& shape = w.shapes[slot];
         if (!seen(shape, filter) || !shape.aabb.overlaps(Aabb{point, point})) return true;
         const Vec2 local = w.bodies[shape.body].xf.applyInverse(point);
@@ -274,7 +274,7 @@ std::vector<ShapeId> World::overlapShape(const Geometry& geometry, const Transfo
     const kernel::Shape query = toKernel(geometry);
     const kernel::Xf queryXf = toKernel(pose);
     std::vector<ShapeId> found;
-    w.broadPhase.query(box, [&](std::uint32_t slot) {
+    w.broadPhase.queryOften(box, [&](std::uint32_t slot) {
         const ShapeData& shape = w.shapes[slot];
         if (!seen(shape, filter) || !shape.aabb.overlaps(box)) return true;
         const kernel::Distance d =

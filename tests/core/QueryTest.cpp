@@ -510,6 +510,44 @@ TEST(Overlap, TightBoxesNotFatOnes) {
     EXPECT_TRUE(world.overlapAabb(Aabb{Vec2(1.05, -0.1), Vec2(2.0, 0.1)}).empty());  // inside the fat box only
 }
 
+// Many box queries on unchanged boxes go through a tree built for them (BroadPhase::queryOften): after thousands,
+// moving, creating and destroying bodies must still show at once in every kind of overlap query.
+TEST(Overlap, ManyQueriesFollowChangedBoxes) {
+    World world;
+    BodyDef def;
+    def.shape = makeBox(0.5, 0.5);
+    std::vector<BodyId> bodies;
+    for (int i = 0; i < 40; ++i) {
+        def.position = Vec2(2.0 * (i % 8), 2.0 * (i / 8));
+        bodies.push_back(world.createBody(def));
+    }
+    const Aabb far{Vec2(100.0, 100.0), Vec2(101.0, 101.0)};
+    const auto hammer = [&](std::size_t inGrid) {  // more queries than any threshold for 40 bodies
+        std::size_t seen = 0;
+        for (int q = 0; q < 3000; ++q) seen += world.overlapAabb(Aabb{Vec2(-1.0, -1.0), Vec2(15.0, 9.0)}).size();
+        EXPECT_EQ(seen, 3000u * inGrid);
+    };
+    hammer(40);
+    EXPECT_TRUE(world.overlapAabb(far).empty());
+    world.setTransform(bodies[3], Vec2(100.5, 100.5), 0.0);
+    ASSERT_EQ(world.overlapAabb(far).size(), 1u);
+    EXPECT_EQ(world.overlapPoint(Vec2(100.5, 100.5)).size(), 1u);
+    EXPECT_EQ(world.overlapShape(makeCircle(0.2), Transform{Vec2(100.5, 100.5), Rotation{}}).size(), 1u);
+    EXPECT_TRUE(world.overlapPoint(Vec2(6.0, 0.0)).empty());  // where it was
+
+    hammer(39);
+    world.destroyBody(bodies[3]);
+    EXPECT_TRUE(world.overlapAabb(far).empty());
+    hammer(39);
+    def.position = Vec2(100.5, 100.2);
+    world.createBody(def);
+    EXPECT_EQ(world.overlapAabb(far).size(), 1u);
+    hammer(39);
+    world.setVelocity(bodies[0], Vec2(0.0, -40.0));  // falls 1 m in one step: its proxy moves
+    world.step(1.0 / 40.0);
+    EXPECT_EQ(world.overlapAabb(Aabb{Vec2(-0.4, -1.2), Vec2(0.4, -1.1)}).size(), 1u);  // below where it was
+}
+
 // --- shape casts ------------------------------------------------------------------------------------------------
 
 // A circle of radius 0.5 cast down onto a box whose top is at y = 0 from y = 3: contact after 2.5 m of 5, fraction
