@@ -10,6 +10,7 @@
 // Box2D 2.4 rounds polygons by a 1 cm skin and casts rays against the core: its boxes are made one skin smaller (as
 // peer_bench does, so the pyramid stands the same), so its ray hits lie about 1 cm farther than physim's.
 
+#include "../peers/PhysimScene.hpp"
 #include "../peers/Scenes.hpp"
 
 #include "physim/core/World.hpp"
@@ -136,22 +137,8 @@ Agreement agree(const physim::World& world, const std::vector<Ray>& rays, const 
 }
 
 physim::World buildPhysim(const peers::Scene& scene) {
-    physim::WorldSettings s;  // as peer_bench's physim: defaults, no sleep, one thread
-    s.gravity = {0.0, peers::kGravity};
-    s.enableSleep = false;
-    s.threads = 1;
-    physim::World world(s);
-    auto add = [&](const peers::ShapeSpec& spec, physim::BodyType type) {
-        physim::BodyDef d;
-        d.type = type;
-        d.position = {spec.x, spec.y};
-        d.shape = physim::makeBox(spec.halfWidth, spec.halfHeight);
-        d.density = peers::kDensity;
-        d.staticFriction = d.dynamicFriction = peers::kFriction;
-        world.createBody(d);
-    };
-    for (const peers::ShapeSpec& spec : scene.statics) add(spec, physim::BodyType::Static);
-    for (const peers::ShapeSpec& spec : scene.dynamics) add(spec, physim::BodyType::Dynamic);
+    physim::World world(peers::physimSettings(1));  // as peer_bench's physim: defaults, no sleep, one thread
+    peers::buildPhysim(world, scene);
     return world;
 }
 

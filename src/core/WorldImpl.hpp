@@ -13,6 +13,7 @@
 //   ContinuousStage.cpp time of impact for fast bodies
 //   Sensors.cpp        sensors' overlaps and events
 //   WorldEffects.cpp   the public API of the effects
+//   WorldSnapshots.cpp snapshots, restores and the state hash: copies of WorldState
 //   WorldFilters.cpp   collision filters and the contact hooks (pair filter, pre-solve): their API and step work
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
@@ -46,9 +47,11 @@ class ContinuousSolver;
 /// Margin (m) by which a proxy's box exceeds its body's box, so small motions never touch the broad phase.
 constexpr double kAabbMargin = 0.1;
 
-struct WorldImpl {
+// The world's state: everything a snapshot copies (World::snapshot) and a restore puts back, so that stepping on
+// gives bit for bit what the original run gave. Values only, so that a copy is a snapshot; the few pointers in it
+// (the solver's into its own scratch) are set again by every step before they are read.
+struct WorldState {
     WorldSettings settings;
-    Executor executor;
 
     // Bodies: one slot per id; freed slots are reused (their generation makes old ids stale).
     std::vector<BodyData> bodies;
@@ -120,6 +123,10 @@ struct WorldImpl {
     // Some contact has had rolling resistance or a belt speed: from then on the solver runs its material terms
     // (ContactBlockMaterial); a world that never uses them runs the loops it always has.
     bool surfaceMaterials = false;
+};
+
+struct WorldImpl : WorldState {
+    Executor executor;  // the threads: the machine's, not the state's
 
     // --- helpers shared by the stages (defined in the file of their concern) ----------------------------
     BodyData& body(std::uint32_t slot) { return bodies[slot]; }

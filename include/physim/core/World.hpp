@@ -25,6 +25,7 @@
 #include "physim/core/Gravitation.hpp"
 #include "physim/core/Joint.hpp"
 #include "physim/core/Sensor.hpp"
+#include "physim/core/Snapshot.hpp"
 #include "physim/core/Query.hpp"
 #include "physim/core/StepProfile.hpp"
 #include "physim/core/WorldSettings.hpp"
@@ -359,6 +360,18 @@ public:
     std::uint64_t stepCount() const;
     /// Bodies currently simulated (awake dynamic and kinematic bodies).
     std::size_t awakeBodyCount() const;
+
+    // --- time travel (Snapshot.hpp) -----------------------------------------------------------------
+    /// The whole state now (not during the step, nor from a force callback: std::logic_error).
+    WorldSnapshot snapshot() const;
+    /// Puts back a snapshot's state, this world's or another's: stepping on gives bit for bit what followed it
+    /// there. The thread count stays this world's (results do not depend on it). Throws std::invalid_argument for an
+    /// empty snapshot and std::logic_error during the step or from a force callback, the world unchanged.
+    void restore(const WorldSnapshot& snapshot);
+    /// A 64-bit hash (FNV-1a) of the bits of the step count and, in slot order, of every live body's position,
+    /// rotation (cosine, sine), angle, velocity, angular velocity and whether it is awake. Equal hashes mean the
+    /// bodies are in bit-identical states (up to a 2^-64 chance); it does not cover contacts' or joints' impulses.
+    std::uint64_t stateHash() const;
 
     // --- queries (Query.hpp, docs/collision.md "Queries"): const, refused during the step -------------------
     // They see the shapes of bodies that collide (not after setCollides(false)), through the broad phase, but not
