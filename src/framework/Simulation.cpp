@@ -101,6 +101,30 @@ void Simulation::fixedStep() {
     time += fixedTimeStep_;
 }
 
+Simulation::Snapshot Simulation::snapshot() const {
+    Snapshot s;
+    s.world = world_.snapshot();
+    s.time = time;
+    s.results = results_;
+    s.state = saveState();
+    for (const std::unique_ptr<Entity>& e : entities_) s.entityIds.push_back(e->id());
+    return s;
+}
+
+void Simulation::restore(const Snapshot& snapshot) {
+    if (snapshot.world.empty()) throw std::invalid_argument("physim: Simulation::restore: the snapshot is empty");
+    std::vector<int> ids;
+    for (const std::unique_ptr<Entity>& e : entities_) ids.push_back(e->id());
+    if (ids != snapshot.entityIds)
+        throw std::logic_error("physim: Simulation::restore: the entities changed since the snapshot (" +
+                               std::to_string(snapshot.entityIds.size()) + " then, " + std::to_string(ids.size()) +
+                               " now, or other ids)");
+    world_.restore(snapshot.world);
+    time = snapshot.time;
+    results_ = snapshot.results;
+    restoreState(snapshot.state);
+}
+
 void Simulation::updateEntities() {
     forEachEntity([](Entity& e) {
         e.update();

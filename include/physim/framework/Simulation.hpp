@@ -9,6 +9,7 @@
 #include "physim/framework/View.hpp"
 #include "physim/graphs/GraphsManager.hpp"
 
+#include <any>
 #include <memory>
 #include <optional>
 #include <string>
@@ -122,6 +123,28 @@ public:
     Object* objectOf(BodyId body) const;
     const std::vector<DebugRay>& debugRays() const { return debugRays_; }
     static constexpr std::size_t kDebugRays = 1024;
+
+    // --- going back in time (docs/guide.md, "Going back in time") ---------------------------------------------
+    /// The simulation at one moment: its world's snapshot (World::snapshot), its time and results, and what the
+    /// subclass saved (saveState). Immutable once taken; cheap to copy.
+    struct Snapshot {
+        WorldSnapshot world;
+        double time = 0.0;
+        std::vector<Result> results;
+        std::any state;             ///< saveState()'s answer
+        std::vector<int> entityIds;  ///< the entities then, in order: restore needs the same
+    };
+    /// Between fixed steps (std::logic_error inside one, as World::snapshot).
+    Snapshot snapshot() const;
+    /// Puts the simulation back where the snapshot was taken: the world's state, `time`, the results and, through
+    /// restoreState, the subclass's members; fixed steps from there repeat what followed bit for bit. Throws
+    /// std::invalid_argument for an empty snapshot and std::logic_error when the entities are no longer the ones
+    /// it was taken with (one was added or removed since), the simulation unchanged.
+    void restore(const Snapshot& snapshot);
+    /// A subclass with members that steer its physics (a state machine, a counter that triggers a kick) returns
+    /// them here, and restoreState puts them back. Members that only measure may stay out: they measure again.
+    virtual std::any saveState() const { return {}; }
+    virtual void restoreState(const std::any& /*state*/) {}
 
     /// Fixed physics rate in Hz (default 40, the paper's 1/40 s step). Throws for hz <= 0, NaN or > 10000.
     void setPhysicsRate(double hz);
