@@ -115,7 +115,9 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres, sleep, sensors, rays),\n"
        << "  left drag moves a body, right drag pans, the wheel zooms about the cursor, Esc quits;\n"
        << "  the simulation may add its own keys.\n"
-       << "exit codes: 0 success, 1 error while running, 2 bad arguments.\n";
+       << "Ctrl-C (SIGINT) or SIGTERM stops the run at the end of its step and writes --out; a second one stops\n"
+       << "  it at once.\n"
+       << "exit codes: 0 success, 1 error while running, 2 bad arguments, 130 stopped by SIGINT, 143 by SIGTERM.\n";
     return os.str();
 }
 

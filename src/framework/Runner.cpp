@@ -11,6 +11,7 @@
 #endif
 
 #include "Display.hpp"
+#include "Interrupts.hpp"
 #include "Overlay.hpp"
 
 #include <SFML/Graphics/RenderWindow.hpp>
@@ -239,12 +240,30 @@ std::vector<std::string> Runner::writeOutputs(const std::string& directory) cons
     return written;
 }
 
+bool Runner::stopRequested() {
+    if (!interrupts_) return false;
+    interrupts_->reassert();
+    return interrupts_->signal() != 0;
+}
+
 int Runner::run() {
     if (options_.outDir) prepareOutputFolder(*options_.outDir);  // before any simulated time is spent
+    InterruptWatch interrupts;  // the loops stop at the end of the step a signal comes in
+    interrupts_ = &interrupts;
+    struct Unwatch {
+        Runner& runner;
+        ~Unwatch() { runner.interrupts_ = nullptr; }
+    } unwatch{*this};
     const int code = options_.headless ? runHeadless() : runWindow();
     if (options_.outDir) {
         const auto written = writeOutputs(*options_.outDir);
         if (!options_.quiet) std::cout << writtenLine(*options_.outDir, written) << std::endl;
+    }
+    if (const int number = interrupts.signal()) {
+        std::cerr << "physim: stopped by " << (number == SIGINT ? "SIGINT" : "SIGTERM") << " at t = " << simulation().time
+                  << " s" << (options_.outDir ? ", after writing what was recorded to " + *options_.outDir : "")
+                  << "; exit status " << interruptedStatus(number) << std::endl;
+        return interruptedStatus(number);
     }
     return code;
 }
@@ -257,7 +276,7 @@ int Runner::runHeadless() {
     const double dt = simulation().fixedTimeStep();
     const auto frames = static_cast<long long>(std::ceil(seconds / dt - 1e-9));
     Progress progress(seconds, !options_.quiet);
-    for (long long i = 0; i < frames && !quit_; ++i) {
+    for (long long i = 0; i < frames && !quit_ && !stopRequested(); ++i) {
         frame(simulation().fixedTimeStep(), nullptr);
         progress.update(simulation().time, i + 1);
     }
@@ -301,7 +320,7 @@ int Runner::runWindow() {
     if (simulation().graphsManager.canvasOpen()) window.setPosition({layout.window.x, layout.window.y});
     sf::Clock frameClock, titleClock;
     int framesSinceTitle = 0;
-    while (window.isOpen() && !quit_) {
+    while (window.isOpen() && !quit_ && !stopRequested()) {
         sf::Event event;
         while (window.pollEvent(event)) handleEvent(event, &window);
         if (quit_) break;

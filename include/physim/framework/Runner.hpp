@@ -24,6 +24,7 @@ class RenderWindow;
 namespace physim {
 
 class Overlay;  // the runner's internal (src/framework), not part of the installed API
+class InterruptWatch;  // likewise: Ctrl-C and SIGTERM during run()
 class Runner;
 
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
@@ -112,6 +113,8 @@ private:
                                   // controls, pace, step times
     std::unique_ptr<Loop> loop_;  // never null
     bool quit_ = false;
+    InterruptWatch* interrupts_ = nullptr;  // run()'s, while it runs
+    bool stopRequested();                   // a signal came (run() then writes its outputs and exits 128 + it)
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
     bool factoryChanged_ = false;  // setFactory since the last restart: start from the new scene's defaults
     bool viewSetByScene_ = false;  // onCreate set the view: the runner does not refit it on resize
