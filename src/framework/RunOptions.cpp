@@ -21,6 +21,7 @@ std::string bound(double v) {
 
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
+    o.arguments = args;
     for (std::size_t i = 0; i < args.size(); ++i) {
         // --name=value is --name value.
         const std::size_t equals = args[i].rfind("--", 0) == 0 ? args[i].find('=') : std::string::npos;
@@ -72,6 +73,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                 throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
             const double v = parseNumberOption("--param " + text.substr(0, eq), text.substr(eq + 1));
             o.parameters.emplace_back(text.substr(0, eq), v);
+        } else if (a == "--replay") {
+            const std::string& text = value();
+            if (text.empty()) throw UsageError("--replay needs a run.json file, got ''");
+            o.replay = text;
         } else if (a == "--max-steps-per-frame") {
             o.maxStepsPerFrame = parseCountOption(a, value(), 1, 1000);
         } else if (a == "--size") {
@@ -85,6 +90,13 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         }
     }
     checkAccuracyOptions(o);
+    if (o.replay) {  // the run comes from the file: only --quiet may join it
+        for (const std::string& arg : args) {
+            const std::string name = arg.substr(0, arg.find('='));
+            if (name.rfind("--", 0) == 0 && name != "--replay" && name != "--quiet")
+                throw UsageError("--replay runs what the file records: " + name + " cannot join it");
+        }
+    }
     if (o.headless && o.screenshot)
         throw UsageError("--screenshot needs a window: a --headless run draws nothing to save");
     return o;
@@ -97,8 +109,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --headless               run without a window (no display needed)\n"
        << "  --seconds S              simulated seconds to run (headless default "
        << RunOptions::defaultHeadlessSeconds << "; in a window: until closed)\n"
-       << "  --out DIR                write summary.json (final state, SI units) and the graphs\n"
-       << "                           (graph_<i>.csv, graphs.png, graphs.root) to DIR at the end;\n"
+       << "  --out DIR                write summary.json (final state, SI units), run.json (how to replay the run)\n"
+       << "                           and the graphs (graph_<i>.csv, graphs.png, graphs.root) to DIR at the end;\n"
        << "                           DIR is created and checked before the run\n"
        << "  --quiet                  no progress on stderr for long headless runs, no closing line\n"
        << "  --hz H                   physics rate in Hz, " << bound(RunOptions::minHz) << " to "
@@ -106,6 +118,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << "                           the paper)\n"
        << "  --param NAME=VALUE       set one of the simulation's parameters (listed below, if it has any)\n"
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
+       << "  --replay RUN.json        run again the run that RUN.json records (written by --out) and say whether\n"
+       << "                           it ends in the same state (exit 0) or not (exit 1)\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
        << accuracyUsage()

@@ -4,6 +4,7 @@
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
+#include "RunRecord.hpp"
 #include "RunnerAccess.hpp"
 #include "Summary.hpp"
 #ifdef PHYSIM_WITH_CUDA
@@ -236,6 +237,12 @@ std::vector<std::string> Runner::writeOutputs(const std::string& directory) cons
     out << summaryJson(*simulation_);
     if (!out) throw std::runtime_error("physim: cannot write " + path.string());
     std::vector<std::string> written{path.string()};
+    const std::filesystem::path record = std::filesystem::path(directory) / "run.json";
+    std::ofstream recordOut(record);
+    recordOut << runRecordJson(options_.program.empty() ? "physim" : options_.program, options_.arguments,
+                               *simulation_);
+    if (!recordOut) throw std::runtime_error("physim: cannot write " + record.string());
+    written.push_back(record.string());
     for (std::string& file : simulation_->graphsManager.writeFiles(directory)) written.push_back(std::move(file));
     return written;
 }
@@ -350,6 +357,51 @@ int Runner::runWindow() {
     return 0;
 }
 
+namespace {
+
+// --replay: the recorded run again, headless and for the recorded number of steps; 0 when it ends in the recorded
+// state, 1 when not (or on an error while running), 2 for a run.json that cannot be replayed.
+int replayRun(const std::string& program, const std::string& path, bool quiet, const SimulationFactory& factory,
+              const std::function<void(Runner&)>& setup) {
+    RecordedRun recorded;
+    RunOptions options;
+    try {
+        recorded = readRunRecord(path, program);
+        options = parseRunOptions(recorded.arguments);
+    } catch (const UsageError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return 2;
+    }
+    options.program = program;
+    options.headless = true;
+    options.quiet = quiet;
+    options.outDir.reset();
+    options.screenshot.reset();
+    options.seconds = static_cast<double>(recorded.steps) * recorded.timeStep;
+    try {
+        Runner runner(factory, options);
+        if (setup) setup(runner);
+        runner.run();
+        const Simulation& sim = runner.simulation();
+        const std::uint64_t steps = sim.world().stepCount(), hash = sim.world().stateHash();
+        if (steps == recorded.steps && hash == recorded.stateHash) {
+            std::cout << program << ": replayed " << steps << " steps of " << path << ": the final state hash "
+                      << hashText(hash) << " matches" << std::endl;
+            return 0;
+        }
+        std::cout << program << ": replayed " << path << ": it ended differently: " << steps << " steps (recorded "
+                  << recorded.steps << "), final state hash " << hashText(hash) << " (recorded "
+                  << hashText(recorded.stateHash) << "); recorded with " << recorded.build << ", replayed with "
+                  << buildDescription() << std::endl;
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << program << ": error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace
+
 int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
             const std::function<void(Runner&)>& setup) {
     const std::string program = argc > 0 ? std::filesystem::path(argv[0]).filename().string() : "physim";
@@ -361,6 +413,8 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
         std::cerr << program << ": " << e.what() << "\n";
         return 2;
     }
+    options.program = program;
+    if (options.replay) return replayRun(program, *options.replay, options.quiet, factory, setup);
     try {
         if (options.help) {
             const std::unique_ptr<Simulation> sim = factory();

@@ -100,11 +100,11 @@ TEST(FallingBoxCli, TheFolderHoldsThisRunsFilesAndOneLineSaysWhich) {
     std::vector<std::string> names;
     for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"graph_0.csv", "graphs.png", "graphs.root", "summary.json"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"graph_0.csv", "graphs.png", "graphs.root", "run.json", "summary.json"}));
     // A CUDA build on a machine without a usable GPU says so first; the run's own output is its closing line.
     std::string output = r.output;
     if (output.rfind("physim: no usable CUDA device", 0) == 0) output.erase(0, output.find('\n') + 1);
-    EXPECT_EQ(output, "wrote summary.json, graph_0.csv, graphs.png, graphs.root (4 files) to " + dir.string() + "\n");
+    EXPECT_EQ(output, "wrote summary.json, run.json, graph_0.csv, graphs.png, graphs.root (5 files) to " + dir.string() + "\n");
     const Result quiet = run("--headless --seconds 2 --quiet --out " + dir.string());
     EXPECT_EQ(quiet.exitCode, 0);
     EXPECT_EQ(quiet.output, "") << "--quiet";

@@ -30,6 +30,12 @@ struct RunOptions {
     std::optional<int> iterations;          ///< solver velocity iterations per substep
     std::optional<CollisionDetection> ccd;  ///< every dynamic body's collision detection
     std::optional<double> precision;        ///< sampled detection's spacing, fraction of the step, (0, 1]
+    /// --replay FILE: run the run that FILE (a run.json) records, and say whether it ends in the same state.
+    std::optional<std::string> replay;
+    /// The arguments as given (after the program's name), which --out's run.json records; and the program's name,
+    /// which runMain sets.
+    std::vector<std::string> arguments;
+    std::string program;
 
     static constexpr double defaultHeadlessSeconds = 10.0;
     /// Longest --seconds: 10^7 s (116 days) is 10^11 steps at the highest rate, still counted exactly.
