@@ -15,6 +15,7 @@ const std::vector<Scene>& scenes() {
         {"one_way", makeOneWay},
         {"photogate", makePhotogate},
         {"conveyor", makeConveyor},
+        {"double_pendulum", makeDoublePendulum},
     };
     return all;
 }

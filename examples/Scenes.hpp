@@ -32,6 +32,7 @@ std::unique_ptr<Simulation> makeCar();
 std::unique_ptr<Simulation> makeOneWay();
 std::unique_ptr<Simulation> makePhotogate();
 std::unique_ptr<Simulation> makeConveyor();
+std::unique_ptr<Simulation> makeDoublePendulum();
 
 struct Scene {
     std::string name;  ///< the example's program name

@@ -31,6 +31,7 @@ constexpr double kVelocitySeconds = 0.1;  // a velocity arrow shows the distance
 const sf::Color kPoint(220, 30, 30), kNormal(30, 60, 220), kBox(190, 0, 190), kVelocity(0, 140, 0),
     kJoint(20, 120, 120), kMouse(0, 170, 0), kCentre(20, 20, 20), kSensor(230, 150, 0), kRay(230, 120, 0);
 const sf::Color kSleepVeil(235, 235, 235, 160);  // the window's background, half see-through
+const sf::Color kGhost(70, 90, 220, 110);          // a branch's bodies: blue, see-through
 
 sf::Color faded(sf::Color c) {
     c.a = 140;
@@ -255,6 +256,16 @@ std::vector<Manifold> restingContacts(const World& world) {
         }
     }
     return found;
+}
+
+void drawGhosts(sf::RenderTarget& target, const View& view, const World& world) {
+    const sf::Transform toPixels = view.worldToPixels(target.getSize());
+    Lines lines;
+    for (const BodyId id : world.bodies())
+        if (world.type(id) != BodyType::Static)
+            for (const ShapeId s : world.shapes(id))
+                drawShape(target, toPixels, world.geometry(s), world.transform(id), kGhost, lines);
+    lines.draw(target);
 }
 
 void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options,

@@ -197,6 +197,7 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
         sim.onRender(window);
+        if (const World* branch = sim.branch()) drawGhosts(*window, sim.view, *branch);
         drawDebug(*window, sim.view, sim.world(), sim.debugDraw, sim.debugRays());
         drawOverlay(*window);
         if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it

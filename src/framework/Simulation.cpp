@@ -5,6 +5,7 @@
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -94,6 +95,7 @@ void Simulation::fixedStep() {
     debugRays_.clear();
     forEachEntity([](Entity& e) { e.beforeFixedUpdate(); });
     world_.step(fixedTimeStep_);
+    if (branch_) branch_->step(fixedTimeStep_);
     forEachEntity([](Entity& e) { e.checkCollisions(); });
     forEachEntity([](Entity& e) { e.fixedUpdate(); });
     for (const SensorEvent& e : world_.sensorEvents().begin) onSensor(e, true, time + e.time);
@@ -104,6 +106,7 @@ void Simulation::fixedStep() {
 Simulation::Snapshot Simulation::snapshot() const {
     Snapshot s;
     s.world = world_.snapshot();
+    if (branch_) s.branch = branch_->snapshot();
     s.time = time;
     s.results = results_;
     s.state = saveState();
@@ -120,9 +123,31 @@ void Simulation::restore(const Snapshot& snapshot) {
                                std::to_string(snapshot.entityIds.size()) + " then, " + std::to_string(ids.size()) +
                                " now, or other ids)");
     world_.restore(snapshot.world);
+    if (snapshot.branch.empty()) {
+        branch_.reset();
+    } else {
+        if (!branch_) branch_ = std::make_unique<World>(world_.settings());
+        branch_->restore(snapshot.branch);
+    }
     time = snapshot.time;
     results_ = snapshot.results;
     restoreState(snapshot.state);
+}
+
+void Simulation::startBranch(const Snapshot& from, const std::function<void(World&)>& change) {
+    if (from.world.empty()) throw std::invalid_argument("physim: Simulation::startBranch: the snapshot is empty");
+    auto branch = std::make_unique<World>(world_.settings());
+    branch->restore(from.world);
+    if (change) change(*branch);
+    branch_ = std::move(branch);
+}
+
+double Simulation::branchDistance() const {
+    if (!branch_) return 0.0;
+    double sum = 0.0;
+    for (const BodyId id : world_.bodies())
+        if (branch_->contains(id)) sum += (world_.centerOfMass(id) - branch_->centerOfMass(id)).squaredNorm();
+    return std::sqrt(sum);
 }
 
 void Simulation::updateEntities() {

@@ -1,6 +1,6 @@
 // Every example, snapshot and restore (Simulation::snapshot, World::stateHash): run 2 s through the runner's own
 // frame loop (headless: one fixed step per frame, every hook as in a window), take a snapshot, run 2 s, restore, run
-// the same 2 s again: the world's state hash must be the same both times. Exact: the step is deterministic, so a
+// the same 2 s again: the world's state hash (and its branch's, where it has one) must be the same both times. Exact: the step is deterministic, so a
 // difference is state the snapshot (or an example's saveState) missed. The hash must also have changed over the
 // 2 s, or the example stood still and the check proved nothing about it.
 
@@ -34,12 +34,15 @@ TEST_P(ExampleSnapshot, RestoreReplaysTheSameTwoSeconds) {
     const std::uint64_t then = runner.simulation().world().stateHash();
     runFor(runner, 2.0);
     const std::uint64_t first = runner.simulation().world().stateHash();
+    const physim::World* branch = runner.simulation().branch();  // double_pendulum's second future
+    const std::uint64_t firstBranch = branch ? branch->stateHash() : 0;
     const double firstTime = runner.simulation().time;
     runner.simulation().restore(snapshot);
     EXPECT_EQ(runner.simulation().world().stateHash(), then);
     runFor(runner, 2.0);
     EXPECT_EQ(runner.simulation().world().stateHash(), first) << GetParam().name << " did not replay bit for bit";
     EXPECT_EQ(runner.simulation().time, firstTime);
+    if (branch) EXPECT_EQ(runner.simulation().branch()->stateHash(), firstBranch) << "its branch";
     EXPECT_NE(first, then) << GetParam().name << " stood still: nothing was checked";
 }
 

@@ -3,6 +3,7 @@
 // snapshot whose entities are gone or an empty one, leaving the simulation as it was.
 
 #include <physim/core/CircleShape.hpp>
+#include <physim/core/RectangleShape.hpp>
 #include <physim/framework/Object.hpp>
 #include <physim/framework/Simulation.hpp>
 
@@ -82,6 +83,42 @@ TEST(SnapshotFace, RestoreRefusesChangedEntitiesAndEmptySnapshots) {
     sim.removeEntity(extra.id());
     EXPECT_NO_THROW(sim.restore(s));
     EXPECT_EQ(sim.world().stepCount(), 5u);
+}
+
+}  // namespace
+}  // namespace physim
+
+namespace physim {
+namespace {
+
+// A branch with nothing changed is the same run: bit-identical states all along (distance exactly 0, equal hashes),
+// since the step is deterministic. One whose ball is 1 mm/s faster sideways drifts apart by what that velocity
+// says: 1 mm/s for 2 s is 2 mm (within 1e-9 m: the ball flies freely, only gravity acts).
+TEST(BranchFace, AnUnchangedBranchIsTheSameRunAndAChangedOneDrifts) {
+    Simulation sim;
+    Object& ball = sim.spawn<Object>(CircleShape(0.2), sf::Color::Black);
+    ball.setPosition({0.0, 200.0});  // falls 82 m in the run: never lands
+    Object& bouncer = sim.spawn<Object>(CircleShape(0.2), sf::Color::Black);
+    bouncer.setPosition({3.0, 0.5});
+    Object& ground = sim.spawn<Object>(RectangleShape({10.0, 0.2}), sf::Color::Black);
+    ground.rb.setMass(0.0);
+    sim.world().setVelocity(bouncer.rb.bodyId(), Vec2(0.0, -4.0));  // bounces on the ground within the run
+    for (int i = 0; i < 5; ++i) sim.fixedStep();
+    sim.startBranch(sim.snapshot());
+    for (int i = 0; i < 80; ++i) {
+        sim.fixedStep();
+        ASSERT_EQ(sim.branchDistance(), 0.0) << "step " << i;
+    }
+    EXPECT_EQ(sim.branch()->stateHash(), sim.world().stateHash());
+
+    const BodyId id = ball.rb.bodyId();
+    sim.startBranch(sim.snapshot(), [&](World& w) { w.setVelocity(id, w.velocity(id) + Vec2(0.001, 0.0)); });
+    for (int i = 0; i < 80; ++i) sim.fixedStep();  // 2 s at 40 Hz
+    EXPECT_NEAR(sim.branchDistance(), 0.002, 1e-9);
+    sim.endBranch();
+    EXPECT_EQ(sim.branch(), nullptr);
+    EXPECT_EQ(sim.branchDistance(), 0.0);
+    EXPECT_THROW(sim.startBranch(Simulation::Snapshot{}), std::invalid_argument);
 }
 
 }  // namespace

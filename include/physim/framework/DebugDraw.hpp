@@ -46,6 +46,9 @@ struct DebugRay {
 void drawDebug(sf::RenderTarget& target, const View& view, const World& world, const DebugDrawOptions& options,
                const std::vector<DebugRay>& rays = {});
 
+/// Every movable body of `world` (a branch's: Simulation::startBranch) as a translucent ghost, over the scene.
+void drawGhosts(sf::RenderTarget& target, const View& view, const World& world);
+
 /// Contacts of bodies at rest, which the step no longer computes (a sleeping body against a sleeping or
 /// static one): the manifolds of every such touching pair, from the same narrow phase the step uses.
 std::vector<Manifold> restingContacts(const World& world);

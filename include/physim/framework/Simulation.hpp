@@ -10,6 +10,7 @@
 #include "physim/graphs/GraphsManager.hpp"
 
 #include <any>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -125,10 +126,11 @@ public:
     static constexpr std::size_t kDebugRays = 1024;
 
     // --- going back in time (docs/guide.md, "Going back in time") ---------------------------------------------
-    /// The simulation at one moment: its world's snapshot (World::snapshot), its time and results, and what the
-    /// subclass saved (saveState). Immutable once taken; cheap to copy.
+    /// The simulation at one moment: its world's snapshot (World::snapshot) and its branch's, its time and results,
+    /// and what the subclass saved (saveState). Immutable once taken; cheap to copy.
     struct Snapshot {
         WorldSnapshot world;
+        WorldSnapshot branch;       ///< the branch's world (startBranch), empty when there was none
         double time = 0.0;
         std::vector<Result> results;
         std::any state;             ///< saveState()'s answer
@@ -145,6 +147,20 @@ public:
     /// them here, and restoreState puts them back. Members that only measure may stay out: they measure again.
     virtual std::any saveState() const { return {}; }
     virtual void restoreState(const std::any& /*state*/) {}
+
+    /// A branch: a second run from a snapshot with one thing changed, stepped beside this one. Its world is the
+    /// snapshot's world changed by `change` (a restitution, a velocity, the settings...), and every fixedStep steps
+    /// it right after this one's, with the same time step. What lives in the world acts in both (joints and their
+    /// motors, effects, force callbacks); forces that entities add in their hooks act on this world only. The window
+    /// draws the branch's bodies as ghosts over the scene. Replaces any branch there was; throws as World::restore.
+    void startBranch(const Snapshot& from, const std::function<void(World&)>& change = {});
+    void endBranch() { branch_.reset(); }
+    /// The branch's world, or nullptr.
+    const World* branch() const { return branch_.get(); }
+    World* branch() { return branch_.get(); }
+    /// How far the branch has gone from this run: the root-sum-square, over the bodies alive in both, of the
+    /// distance between their centres of mass (m); 0 without a branch.
+    double branchDistance() const;
 
     /// Fixed physics rate in Hz (default 40, the paper's 1/40 s step). Throws for hz <= 0, NaN or > 10000.
     void setPhysicsRate(double hz);
@@ -165,6 +181,7 @@ private:
     void forEachEntity(Phase&& phase);
 
     World world_;
+    std::unique_ptr<World> branch_;  // startBranch's, stepped after world_
     std::vector<std::unique_ptr<Entity>> entities_;
     std::vector<Result> results_;
     std::vector<DebugRay> debugRays_;  // castRay's rays since the last fixed step began, for debug drawing
