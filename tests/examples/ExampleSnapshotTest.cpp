@@ -1,7 +1,7 @@
 // Every example, snapshot and restore (Simulation::snapshot, World::stateHash): run 2 s through the runner's own
 // frame loop (headless: one fixed step per frame, every hook as in a window), take a snapshot, run 2 s, restore, run
-// the same 2 s again: the world's state hash (and its branch's, where it has one) must be the same both times. Exact: the step is deterministic, so a
-// difference is state the snapshot (or an example's saveState) missed. The hash must also have changed over the
+// the same 2 s again: the world's state hash (and its branch's, where it has one) must be the same both times.
+// Exact: the step is deterministic, so a difference is state the snapshot (or an example's saveState) missed. The hash must also have changed over the
 // 2 s, or the example stood still and the check proved nothing about it.
 
 #include "Scenes.hpp"
