@@ -121,6 +121,15 @@ void Gallery::drawRunControls(Runner& runner) {
     if (ImGui::Button("Restart")) runner.restart();
     ImGui::SameLine();
     if (ImGui::Button("Fit view")) runner.requestFit();
+    // The run's record: drag to go back to any moment of it (the run pauses there; Paused off runs on from it).
+    const Timeline& timeline = runner.timeline();
+    double at = sim.time;
+    const double from = timeline.start(), to = std::max(timeline.end(), sim.time);
+    ImGui::TextUnformatted("Time (drag to go back)");
+    ImGui::SetNextItemWidth(-1.f);
+    if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &at, &from, &to, "t = %.2f s") && at != sim.time)
+        runner.scrubTo(at);
+    itemRects_.emplace_back("time", lastItemRect());
     float scale = static_cast<float>(runner.timeScale());
     ImGui::TextUnformatted("Time scale (simulated s per real s)");
     ImGui::SetNextItemWidth(-1.f);

@@ -125,7 +125,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << accuracyUsage()
        << "  --help                   this text\n"
        << "  --name=value is the same as --name value.\n\n"
-       << "in a window: " << "Space restart, P pause, O one step, [ ] slower / faster, F fit the view,\n"
+       << "in a window: " << "Space restart, P pause, O one step, Left / Right back / forward 1 s (pauses; the\n"
+       << "  run is recorded as it goes), Home back to the start, [ ] slower / faster, F fit the view,\n"
        << "  Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres, sleep, sensors, rays),\n"
        << "  left drag moves a body, right drag pans, the wheel zooms about the cursor, Esc quits;\n"
        << "  the simulation may add its own keys.\n"

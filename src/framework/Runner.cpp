@@ -144,6 +144,30 @@ void Runner::restart() {
     loop_->pace.clear();
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
+    timeline_.clear();
+    if (recording_) timeline_.record(sim);
+}
+
+void Runner::oneStepFrame(bool record) {
+    Simulation& sim = simulation();
+    sim.onUpdate();
+    sim.updateEntities();
+    sim.fixedStep();
+    sim.onDrawGraphs();
+    if (record) timeline_.record(sim);
+}
+
+double Runner::scrubTo(double time) {
+    Simulation& sim = simulation();
+    sim.paused = true;
+    if (timeline_.empty()) timeline_.record(sim);
+    const double dt = sim.fixedTimeStep();
+    if (time > sim.time + 0.5 * dt) {
+        const auto steps = static_cast<long long>(std::floor((time - sim.time) / dt + 0.5));
+        for (long long i = 0; i < steps; ++i) oneStepFrame(recording_);
+        return sim.time;
+    }
+    return timeline_.scrubTo(sim, time, [this] { oneStepFrame(false); });
 }
 
 void Runner::setFactory(SimulationFactory factory) {
@@ -192,6 +216,7 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     loop_->pace.record(frameSeconds, steps * sim.fixedTimeStep(), loop_->accumulator.droppedSteps() - droppedBefore,
                        sim.paused);
     sim.onDrawGraphs();
+    if (recording_ && steps > 0) timeline_.record(sim);  // the frame's end: what a scrub lands on
     if (loop_->controls.takeFitRequest()) fitView();
     if (window) {
         window->clear(sf::Color(235, 235, 235));
@@ -223,6 +248,9 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
             sim.onEvent(event);
             if (event.key.code == sf::Keyboard::Space) restart();
             else if (event.key.code == sf::Keyboard::P) sim.paused = !sim.paused;
+            else if (event.key.code == sf::Keyboard::Left) scrubTo(sim.time - 1.0);
+            else if (event.key.code == sf::Keyboard::Right) scrubTo(sim.time + 1.0);
+            else if (event.key.code == sf::Keyboard::Home) scrubTo(0.0);
             else if (event.key.code == sf::Keyboard::Escape) quit_ = true;
             else loop_->controls.handleEvent(event, sim, window ? window->getSize() : windowSize_);
             break;
@@ -305,6 +333,7 @@ float Runner::drawOverlay(sf::RenderWindow& window) {
 }
 
 int Runner::runWindow() {
+    recording_ = true;
     sf::ContextSettings context;
     context.antialiasingLevel = 4;
     sf::RenderWindow window(sf::VideoMode(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)),

@@ -111,6 +111,9 @@ Simulation::Snapshot Simulation::snapshot() const {
     s.results = results_;
     s.state = saveState();
     for (const std::unique_ptr<Entity>& e : entities_) s.entityIds.push_back(e->id());
+    if (graphsManager.built())
+        for (std::size_t i = 0; i < graphsManager.graphCount(); ++i)
+            s.graphPoints.push_back(graphsManager.points(static_cast<int>(i)).size());
     return s;
 }
 
@@ -131,6 +134,12 @@ void Simulation::restore(const Snapshot& snapshot) {
     }
     time = snapshot.time;
     results_ = snapshot.results;
+    if (graphsManager.built())
+        for (std::size_t i = 0; i < std::min(snapshot.graphPoints.size(), graphsManager.graphCount()); ++i) {
+            const auto& points = graphsManager.points(static_cast<int>(i));
+            if (points.size() > snapshot.graphPoints[i])
+                graphsManager.setPoints(static_cast<int>(i), {points.begin(), points.begin() + static_cast<std::ptrdiff_t>(snapshot.graphPoints[i])});
+        }
     restoreState(snapshot.state);
 }
 

@@ -42,7 +42,9 @@ TEST_P(ExampleSnapshot, RestoreReplaysTheSameTwoSeconds) {
     runFor(runner, 2.0);
     EXPECT_EQ(runner.simulation().world().stateHash(), first) << GetParam().name << " did not replay bit for bit";
     EXPECT_EQ(runner.simulation().time, firstTime);
-    if (branch) EXPECT_EQ(runner.simulation().branch()->stateHash(), firstBranch) << "its branch";
+    if (branch) {
+        EXPECT_EQ(runner.simulation().branch()->stateHash(), firstBranch) << "its branch";
+    }
     EXPECT_NE(first, then) << GetParam().name << " stood still: nothing was checked";
 }
 

@@ -5,6 +5,7 @@
 
 #include "physim/framework/RunOptions.hpp"
 #include "physim/framework/Simulation.hpp"
+#include "physim/framework/Timeline.hpp"
 
 #include <SFML/Graphics/Rect.hpp>
 
@@ -79,6 +80,12 @@ public:
     void setTimeScale(double scale);
     /// One fixed step at the next frame, as O does (pause first: a running simulation steps anyway).
     void requestSingleStep();
+    /// The window's record of the run (Timeline.hpp): kept in a window, empty headless.
+    const Timeline& timeline() const { return timeline_; }
+    /// Goes to simulated time `time` (s) and pauses: back within the record by Timeline::scrubTo, forward by
+    /// running one-step frames. Keys Left and Right go back and forward a second, Home to the start. Returns the
+    /// simulation's time after.
+    double scrubTo(double time);
     /// Fits the view to the scene at the next frame, as F does.
     void requestFit();
     /// The statistics panel (Tab).
@@ -113,6 +120,9 @@ private:
                                   // controls, pace, step times
     std::unique_ptr<Loop> loop_;  // never null
     bool quit_ = false;
+    Timeline timeline_;
+    bool recording_ = false;  // in a window: timeline_ records each step
+    void oneStepFrame(bool record);  // a frame of exactly one fixed step (scrubbing: the hooks run as in a run)
     InterruptWatch* interrupts_ = nullptr;  // run()'s, while it runs
     bool stopRequested();                   // a signal came (run() then writes its outputs and exits 128 + it)
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless

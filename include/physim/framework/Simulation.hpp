@@ -135,10 +135,12 @@ public:
         std::vector<Result> results;
         std::any state;             ///< saveState()'s answer
         std::vector<int> entityIds;  ///< the entities then, in order: restore needs the same
+        std::vector<std::size_t> graphPoints;  ///< each graph's point count: restore drops the points added since
     };
     /// Between fixed steps (std::logic_error inside one, as World::snapshot).
     Snapshot snapshot() const;
-    /// Puts the simulation back where the snapshot was taken: the world's state, `time`, the results and, through
+    /// Puts the simulation back where the snapshot was taken: the world's state, `time`, the results, the graphs'
+    /// points (those added since go; a graph whose points were replaced or reset since keeps its own) and, through
     /// restoreState, the subclass's members; fixed steps from there repeat what followed bit for bit. Throws
     /// std::invalid_argument for an empty snapshot and std::logic_error when the entities are no longer the ones
     /// it was taken with (one was added or removed since), the simulation unchanged.

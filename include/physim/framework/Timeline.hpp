@@ -1,0 +1,65 @@
+#pragma once
+// A run's record for going back in time in the window: snapshots of the simulation (Simulation::snapshot) taken as
+// it runs, within a memory budget. When the budget is full, every other snapshot of the older half goes, so the
+// record thins out towards the past but always reaches back to its start. scrubTo puts the simulation back at any
+// recorded moment: from the nearest snapshot before it, the steps in between are run again, which (the step being
+// deterministic) lands on exactly the state the run had then. The runner keeps one in a window (keys Left, Right
+// and Home; the gallery's time slider).
+
+#include "physim/framework/Simulation.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace physim {
+
+class Timeline {
+public:
+    struct Settings {
+        std::size_t budgetBytes = std::size_t{256} << 20;  ///< memory the snapshots may hold
+        /// A snapshot may cost at most this share of the steps between two snapshots (their measured times): the
+        /// interval grows where snapshots are dear against steps (a small scene's step costs little).
+        double costShare = 0.05;
+        int minInterval = 10;  ///< steps between snapshots, at least
+    };
+
+    Timeline() = default;
+    explicit Timeline(const Settings& settings) : settings_(settings) {}
+
+    /// After each frame that stepped `sim` (and once before the first), when its hooks have run: keeps a snapshot
+    /// when one is due. A simulation whose time went back (a restart) starts the record again.
+    void record(const Simulation& sim);
+    /// Puts `sim` back at the last recorded step at or before `time` (s), within what was recorded, by restoring the
+    /// snapshot before it and calling `step` (which must advance `sim` by one fixed step: the runner's one-step
+    /// frame, so the simulation's hooks run as they did) until there; later snapshots go (they are taken again as
+    /// the run goes on). Returns the simulation's time after. Throws std::logic_error when nothing is recorded.
+    double scrubTo(Simulation& sim, double time, const std::function<void()>& step);
+    void clear();
+
+    bool empty() const { return entries_.empty(); }
+    std::size_t size() const { return entries_.size(); }
+    double start() const;  ///< s, the earliest recorded time (0 when empty)
+    double end() const;    ///< s, the latest time the run reached while recording
+    std::size_t bytes() const { return bytes_; }
+    int interval() const { return interval_; }
+
+private:
+    struct Entry {
+        Simulation::Snapshot snapshot;
+        std::size_t bytes = 0;
+    };
+    void thin();
+
+    Settings settings_;
+    std::vector<Entry> entries_;
+    std::size_t bytes_ = 0;
+    double end_ = 0.0;
+    int interval_ = 0;          // steps between snapshots now (0: not measured yet)
+    int sinceLast_ = 0;         // steps since the last snapshot
+    double stepSeconds_ = 0.0;  // wall time of those steps
+    std::uint64_t lastStep_ = 0;  // the world's step count at the last record
+};
+
+}  // namespace physim

@@ -1,0 +1,100 @@
+#include "physim/framework/Timeline.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace physim {
+namespace {
+
+// What a simulation snapshot holds, bytes (its world's and its branch's arrays, and its own results).
+std::size_t bytesOf(const Simulation::Snapshot& s) {
+    return s.world.bytes() + s.branch.bytes() + s.results.size() * sizeof(Simulation::Result) +
+           s.graphPoints.size() * sizeof(std::size_t) + sizeof(Simulation::Snapshot);
+}
+
+}  // namespace
+
+double Timeline::start() const { return entries_.empty() ? 0.0 : entries_.front().snapshot.time; }
+double Timeline::end() const { return entries_.empty() ? 0.0 : end_; }
+
+void Timeline::clear() {
+    entries_.clear();
+    bytes_ = 0;
+    end_ = 0.0;
+    interval_ = 0;
+    sinceLast_ = 0;
+    stepSeconds_ = 0.0;
+    lastStep_ = 0;
+}
+
+void Timeline::record(const Simulation& sim) {
+    if (!entries_.empty() && sim.time < entries_.back().snapshot.time) clear();  // restarted
+    if (!entries_.empty()) {
+        const std::uint64_t steps = sim.world().stepCount() - lastStep_;
+        sinceLast_ += static_cast<int>(std::min<std::uint64_t>(steps, 1 << 20));
+        stepSeconds_ += static_cast<double>(steps) * sim.world().profile().total();  // the last step's, for each
+        end_ = std::max(end_, sim.time);
+    }
+    lastStep_ = sim.world().stepCount();
+    if (!entries_.empty() && sinceLast_ < std::max(interval_, settings_.minInterval)) return;
+    const auto before = std::chrono::steady_clock::now();
+    Entry e{sim.snapshot(), 0};
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+    e.bytes = bytesOf(e.snapshot);
+    // The next interval: enough steps that this snapshot's cost is at most costShare of theirs.
+    if (sinceLast_ > 0 && stepSeconds_ > 0.0) {
+        const double perStep = stepSeconds_ / sinceLast_;
+        interval_ = static_cast<int>(std::min(1e6, std::ceil(took / (settings_.costShare * perStep))));
+    }
+    sinceLast_ = 0;
+    stepSeconds_ = 0.0;
+    end_ = std::max(end_, sim.time);
+    bytes_ += e.bytes;
+    entries_.push_back(std::move(e));
+    while (bytes_ > settings_.budgetBytes && entries_.size() > 2) thin();
+}
+
+// Drops every other snapshot of the older half (never the first): the recent past stays dense.
+void Timeline::thin() {
+    const std::size_t half = entries_.size() / 2;
+    std::vector<Entry> kept;
+    kept.reserve(entries_.size());
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+        if (i > 0 && i < half && i % 2 == 1) {
+            bytes_ -= entries_[i].bytes;
+            continue;
+        }
+        kept.push_back(std::move(entries_[i]));
+    }
+    if (kept.size() == entries_.size()) {  // too few to thin the old half: drop the second oldest
+        bytes_ -= kept[1].bytes;
+        kept.erase(kept.begin() + 1);
+    }
+    entries_ = std::move(kept);
+}
+
+double Timeline::scrubTo(Simulation& sim, double time, const std::function<void()>& step) {
+    if (entries_.empty()) throw std::logic_error("physim: Timeline::scrubTo: nothing is recorded");
+    const double target = std::clamp(time, start(), end_);
+    // The last snapshot at or before the target.
+    auto it = std::upper_bound(entries_.begin(), entries_.end(), target,
+                               [](double t, const Entry& e) { return t < e.snapshot.time; });
+    if (it != entries_.begin()) --it;
+    sim.restore(it->snapshot);
+    // Step on to the last step at or before the target (a millionth of a step's rounding allowed: `time` sums dt).
+    const double dt = sim.fixedTimeStep();
+    const auto steps = static_cast<long long>(std::floor((target - sim.time) / dt + 1e-6));
+    for (long long i = 0; i < steps; ++i) step();
+    const std::size_t keep = static_cast<std::size_t>(it - entries_.begin()) + 1;
+    for (std::size_t i = keep; i < entries_.size(); ++i) bytes_ -= entries_[i].bytes;
+    entries_.resize(keep);
+    end_ = sim.time;
+    sinceLast_ = static_cast<int>(std::min<long long>(steps, 1 << 20));
+    stepSeconds_ = 0.0;
+    lastStep_ = sim.world().stepCount();
+    return sim.time;
+}
+
+}  // namespace physim

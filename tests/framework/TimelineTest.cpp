@@ -1,0 +1,127 @@
+// The window's timeline (Timeline): a run recorded step by step, then scrubbed back to earlier moments, lands on
+// exactly the states the run had then (equal World::stateHash: the replay from the nearest snapshot repeats the
+// deterministic steps) and on the graphs' points as they were; a small memory budget thins the record but keeps its
+// start, so every moment stays reachable; going back and running on repeats the same future.
+
+#include <physim/core/CircleShape.hpp>
+#include <physim/core/RectangleShape.hpp>
+#include <physim/framework/Object.hpp>
+#include <physim/framework/Simulation.hpp>
+#include <physim/framework/Timeline.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace physim {
+namespace {
+
+// Balls bouncing in a box, and a graph of the first one's height: every step changes the state.
+class Bouncing : public Simulation {
+public:
+    Bouncing() {
+        auto& ground = spawn<Object>(RectangleShape({20.0, 0.5}), sf::Color::Black);
+        ground.rb.setMass(0.0);
+        for (int i = 0; i < 12; ++i) {
+            Object& ball = spawn<Object>(CircleShape(0.3), sf::Color::Black);
+            ball.setPosition({-5.0 + 0.9 * i, 2.0 + 0.7 * (i % 4)});
+            ball.rb.setRestitution(0.8);
+            balls.push_back(&ball);
+        }
+        height = graphsManager.addGraph("height;t (s);y (m)");
+        graphsManager.build();
+    }
+    void onDrawGraphs() override { graphsManager.addPoint(height, time, balls[0]->getPosition().y()); }
+    std::vector<Object*> balls;
+    int height = -1;
+};
+
+struct Recording {
+    Bouncing sim;
+    Timeline timeline;
+    std::map<long long, std::uint64_t> hashAtStep;  // the first run's states
+    explicit Recording(const Timeline::Settings& s) : timeline(s) { timeline.record(sim); }
+    long long step() const { return std::llround(sim.time / sim.fixedTimeStep()); }
+    void frame(bool record) {  // as the runner's one-step frame
+        sim.onUpdate();
+        sim.fixedStep();
+        sim.onDrawGraphs();
+        if (record) timeline.record(sim);
+    }
+};
+
+TEST(Timeline, ScrubbingBackLandsOnTheStatesTheRunHad) {
+    Recording run(Timeline::Settings{});
+    for (int i = 0; i < 400; ++i) {
+        run.frame(true);
+        run.hashAtStep[run.step()] = run.sim.world().stateHash();
+    }
+    EXPECT_GE(run.timeline.size(), 2u);
+    EXPECT_DOUBLE_EQ(run.timeline.end(), run.sim.time);
+    // Each scrub drops the record after its point, so the times go down.
+    for (const double t : {9.975, 7.5, 5.0125, 3.0, 0.025, 0.0}) {
+        const double at = run.timeline.scrubTo(run.sim, t, [&] { run.frame(false); });
+        const long long step = run.step();
+        EXPECT_LE(at, t + 1e-9) << "the last step at or before " << t;
+        EXPECT_GT(at, t - run.sim.fixedTimeStep()) << t;
+        if (step > 0) {
+            EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(step)) << "t = " << t;
+        }
+        // One point per step so far (the graph follows the scrub).
+        EXPECT_EQ(run.sim.graphsManager.points(run.sim.height).size(), static_cast<std::size_t>(step)) << t;
+        EXPECT_LE(run.timeline.end(), at + 1e-12) << "the future after the scrub point is dropped";
+    }
+}
+
+TEST(Timeline, GoingBackAndRunningOnRepeatsTheFuture) {
+    Recording run(Timeline::Settings{});
+    for (int i = 0; i < 200; ++i) {
+        run.frame(true);
+        run.hashAtStep[run.step()] = run.sim.world().stateHash();
+    }
+    run.timeline.scrubTo(run.sim, 2.0, [&] { run.frame(false); });
+    while (run.step() < 200) {
+        run.frame(true);
+        ASSERT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(run.step())) << "step " << run.step();
+    }
+}
+
+// A budget of a few snapshots: the record thins (every other of its older half goes) but keeps its first one, so
+// the start stays reachable, and holds no more than the budget.
+TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
+    Timeline::Settings settings;
+    Recording probe(settings);
+    probe.frame(true);
+    const std::size_t one = probe.timeline.bytes();  // a snapshot of this scene, about
+    settings.budgetBytes = 6 * one;
+    settings.minInterval = 4;
+    settings.costShare = 1e9;  // no cost limit: a snapshot every 4 steps
+    Recording run(settings);
+    for (int i = 0; i < 400; ++i) {
+        run.frame(true);
+        run.hashAtStep[run.step()] = run.sim.world().stateHash();
+        ASSERT_LE(run.timeline.bytes(), settings.budgetBytes + one) << "step " << i;
+    }
+    EXPECT_LE(run.timeline.size(), 7u);
+    EXPECT_EQ(run.timeline.start(), 0.0);
+    run.timeline.scrubTo(run.sim, 0.5, [&] { run.frame(false); });
+    EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(20));
+}
+
+// The interval adapts so that a snapshot costs at most costShare of the steps between two: never below minInterval.
+TEST(Timeline, SnapshotsAreSpacedByTheirCost) {
+    Timeline::Settings settings;
+    settings.minInterval = 3;
+    Recording run(settings);
+    for (int i = 0; i < 100; ++i) run.frame(true);
+    EXPECT_GE(run.timeline.interval(), 0);
+    EXPECT_LE(run.timeline.size(), 100u / 3u + 2u);
+    Timeline empty;
+    Bouncing sim;
+    EXPECT_THROW(empty.scrubTo(sim, 1.0, [] {}), std::logic_error);
+}
+
+}  // namespace
+}  // namespace physim
