@@ -1,12 +1,16 @@
 // snapshot_bench: what time travel costs. In one of peer_bench's scenes (default large_pyramid; physim at defaults,
 // sleep off, one thread), after --steps steps, times a step, World::snapshot and World::restore in turn (the least of
-// --repeats each), and the memory a snapshot holds. Prints a table; with --json writes
-// [{"scene": s, "step_ms": x, "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m}].
+// --repeats each), and the memory a snapshot holds; then the window's timeline (Timeline at its default settings):
+// blocks of 50 fixed steps of a Simulation holding the scene, with the timeline recording after each and without,
+// alternating, the least block of each. Prints a table; with --json writes [{"scene": s, "step_ms": x,
+// "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m, "timeline_step_ratio": r}].
 
 #include "../peers/PhysimScene.hpp"
 #include "../peers/Scenes.hpp"
 
 #include "physim/core/World.hpp"
+#include "physim/framework/Simulation.hpp"
+#include "physim/framework/Timeline.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -86,16 +90,43 @@ int main(int argc, char** argv) {
         take = std::min(take, milliseconds([&] { snapshot = world.snapshot(); }));
         put = std::min(put, milliseconds([&] { world.restore(snapshot); }));
     }
+    // The timeline's share: the same scene in a Simulation (the runner's frame: a fixed step, then the record).
+    physim::Simulation sim;
+    sim.setPhysicsRate(1.0 / peers::kTimeStep);
+    sim.world().setSettings(peers::physimSettings(1));
+    peers::buildPhysim(sim.world(), scene);
+    for (int i = 0; i < o.steps; ++i) sim.fixedStep();
+    physim::Timeline timeline;
+    timeline.record(sim);
+    double bare = 1e300, recorded = 1e300;
+    for (int r = 0; r < o.repeats; ++r) {
+        bare = std::min(bare, milliseconds([&] {
+            for (int i = 0; i < 50; ++i) sim.fixedStep();
+        }));
+        timeline.record(sim);  // catches up on the bare block's steps, outside the timing
+        recorded = std::min(recorded, milliseconds([&] {
+            for (int i = 0; i < 50; ++i) {
+                sim.fixedStep();
+                timeline.record(sim);
+            }
+        }));
+    }
+    const double ratio = recorded / bare;
     const double mb = snapshot.bytes() / 1048576.0;
     std::printf("snapshot_bench: %s, %zu bodies, least of %d\n", o.scene.c_str(), world.bodyCount(), o.repeats);
-    std::printf("| scene | step ms | snapshot ms | restore ms | snapshot MB | snapshot / step | restore / step |\n");
-    std::printf("|---|---|---|---|---|---|---|\n");
-    std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.3f | %.3f |\n", o.scene.c_str(), step, take, put, mb, take / step,
-                put / step);
+    std::printf(
+        "| scene | step ms | snapshot ms | restore ms | snapshot MB | snapshot / step | restore / step | steps with "
+        "timeline / without |\n");
+    std::printf("|---|---|---|---|---|---|---|---|\n");
+    std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.3f | %.3f | %.3f |\n", o.scene.c_str(), step, take, put, mb,
+                take / step, put / step, ratio);
+    std::printf("timeline: %zu snapshots, every %d steps, %.1f MB\n", timeline.size(), timeline.interval(),
+                timeline.bytes() / 1048576.0);
     if (!o.json.empty()) {
         std::ofstream out(o.json);
         out << "[{\"scene\": \"" << o.scene << "\", \"step_ms\": " << step << ", \"snapshot_ms\": " << take
-            << ", \"restore_ms\": " << put << ", \"snapshot_mb\": " << mb << "}]\n";
+            << ", \"restore_ms\": " << put << ", \"snapshot_mb\": " << mb << ", \"timeline_step_ratio\": " << ratio
+            << "}]\n";
         if (!out) {
             std::cerr << "snapshot_bench: cannot write " << o.json << "\n";
             return 1;
