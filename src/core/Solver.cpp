@@ -519,7 +519,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                          const PreparedRows prepared = prepareContacts(
                                              blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
                                              graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
-                                             w.bodies.data());
+                                             w.bodies.data(), WideCode::Best, w.contactCores.data(),
+                                             w.shapes.data());
                                          if (materials)
                                              prepareMaterials(blockAt(b), coldAt(b), materialAt(b),
                                                               graph_.blockRows.data() + b, e - b,
