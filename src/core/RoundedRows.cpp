@@ -70,7 +70,7 @@ bool atEnd(const CoreSide& side, const Vec2& point, const Vec2& t) {
 
 }  // namespace
 
-void prepareRounded(ContactBlock& block, ContactBlockCold& cold, int lane, const Manifold& manifold,
+void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const Manifold& manifold,
                     const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b) {
     const Vec2 n = manifold.normal, t = perp(n);
     CoreSide sideA, sideB;  // A's straight side facing B (outward n), B's facing A (outward -n)
@@ -103,21 +103,21 @@ void prepareRounded(ContactBlock& block, ContactBlockCold& cold, int lane, const
         if (!block.ends) {  // the block's first lane with ends: the others measure along the normal
             constexpr double kInfinity = std::numeric_limits<double>::infinity();
             for (int j = 0; j < 2; ++j) {
-                cold.lo[j] = splat(-kInfinity);
-                cold.hi[j] = splat(kInfinity);
-                cold.loCos[j] = cold.hiCos[j] = splat(-1.0);
-                cold.loSin[j] = cold.hiSin[j] = splat(0.0);
+                ends.lo[j] = splat(-kInfinity);
+                ends.hi[j] = splat(kInfinity);
+                ends.loCos[j] = ends.hiCos[j] = splat(-1.0);
+                ends.loSin[j] = ends.hiSin[j] = splat(0.0);
             }
-            cold.rounding = splat(0.0);
-            block.ends = true;
+            ends.rounding = splat(0.0);
+            block.ends = &ends;
         }
-        cold.lo[i][lane] = lo;
-        cold.hi[i][lane] = hi;
-        cold.loCos[i][lane] = low.c;
-        cold.loSin[i][lane] = low.s;
-        cold.hiCos[i][lane] = high.c;
-        cold.hiSin[i][lane] = high.s;
-        cold.rounding[lane] = cores.radiusA + cores.radiusB;
+        ends.lo[i][lane] = lo;
+        ends.hi[i][lane] = hi;
+        ends.loCos[i][lane] = low.c;
+        ends.loSin[i][lane] = low.s;
+        ends.hiCos[i][lane] = high.c;
+        ends.hiSin[i][lane] = high.s;
+        ends.rounding[lane] = cores.radiusA + cores.radiusB;
     }
 }
 

@@ -22,10 +22,10 @@ namespace physim {
 
 /// Lane `lane` of a prepared block, whose contact has a rounded side and a side that may be straight
 /// (cores.radiusA + cores.radiusB > 0, cores.facesA or facesB): where a core's straight side faces the other along
-/// the normal, its points' separation anchors moved onto the cores and the side's ends kept (ContactBlockCold::lo,
-/// hi), which marks the block (ContactBlock::ends); else the lane is left as prepared. The lever arms, the masses
-/// and the separation at the step's start are unchanged. a, b are the contact's bodies.
-void prepareRounded(ContactBlock& block, ContactBlockCold& cold, int lane, const Manifold& manifold,
+/// the normal, its points' separation anchors moved onto the cores and the side's ends kept in `ends` (beside the
+/// block), which marks the block (ContactBlock::ends); else the lane is left as prepared. The lever arms, the
+/// masses and the separation at the step's start are unchanged. a, b are the contact's bodies.
+void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const Manifold& manifold,
                     const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b);
 
 /// Point i's separation s (m, along the normal from its anchors), once the block's centres of curvature may
@@ -33,7 +33,7 @@ void prepareRounded(ContactBlock& block, ContactBlockCold& cold, int lane, const
 /// (the end's corner, or the next side's line), less the roundings. Lanes whose centre is within its side's ends
 /// (all lanes without ends: lo -inf, hi +inf) keep s's bits.
 template <bool V, bool Turns>
-[[gnu::always_inline]] inline Wide pastEnds(const Wide& s, const ContactBlock& c, const ContactBlockCold& cold,
+[[gnu::always_inline]] inline Wide pastEnds(const Wide& s, const ContactBlock& c, const ContactBlockEnds& ends,
                                             int i, const WideSide& A, const WideSide& B) {
     const ContactBlock::Point& cp = c.points[i];
     const Wide tx = -c.ny, ty = c.nx;
@@ -44,14 +44,14 @@ template <bool V, bool Turns>
         u = u + (mulAdd<V>(B.qs, cp.ndB, -(B.qc * cp.rnB)) + mulAdd<V>(A.qs, cp.negNdA, -(A.qc * cp.negRnA)) +
                  (cp.rnB + cp.negRnA));
     const Wide zero{};
-    const Wide beyondLow = cold.lo[i] - u, beyondHigh = u - cold.hi[i];
+    const Wide beyondLow = ends.lo[i] - u, beyondHigh = u - ends.hi[i];
     const WideMask high = beyondHigh > 0.0;
     const Wide past = max(max(beyondLow, beyondHigh), zero);  // how far past an end, m
-    const Wide c0 = high ? cold.hiCos[i] : cold.loCos[i], s0 = high ? cold.hiSin[i] : cold.loSin[i];
+    const Wide c0 = high ? ends.hiCos[i] : ends.loCos[i], s0 = high ? ends.hiSin[i] : ends.loSin[i];
     // In (past, h) about the end, h the centre's height above the side's line: within the corner's wedge (before
     // the next side's normal; always at an open end) the distance is the end's, sqrt(h^2 + past^2), written without
     // cancellation; beyond it, the distance from the next side's line, h cos - past sin (the line's, at a flat joint).
-    const Wide h = s + cold.rounding;
+    const Wide h = s + ends.rounding;
     const WideMask wedge = mulAdd<V>(past, c0, h * s0) <= 0.0;
     const Wide up = max(h, zero);
     const Wide pivot = s + past * past / (sqrtLanes<V>(mulAdd<V>(up, up, past * past)) + up);
