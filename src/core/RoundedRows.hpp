@@ -47,6 +47,7 @@ template <bool V, bool Turns>
     const Wide beyondLow = ends.lo[i] - u, beyondHigh = u - ends.hi[i];
     const WideMask high = beyondHigh > 0.0;
     const Wide past = max(max(beyondLow, beyondHigh), zero);  // how far past an end, m
+    if (!any(past > 0.0)) return s;  // most passes: every centre over its side
     const Wide c0 = high ? ends.hiCos[i] : ends.loCos[i], s0 = high ? ends.hiSin[i] : ends.loSin[i];
     // In (past, h) about the end, h the centre's height above the side's line: within the corner's wedge (before
     // the next side's normal; always at an open end) the distance is the end's, sqrt(h^2 + past^2), written without
