@@ -264,8 +264,7 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         // Rows visit contacts in colour order, which no hardware prefetcher follows, and a large scene's contacts
         // are no longer in the cache by now: ask for the part preparation reads, a few blocks ahead.
         if (j + kPrefetchBlocks < count)
-            for (std::uint32_t r = 0; r < rows[j + kPrefetchBlocks].count; ++r)
-            {
+            for (std::uint32_t r = 0; r < rows[j + kPrefetchBlocks].count; ++r) {
                 const std::uint32_t ahead = refs[rows[j + kPrefetchBlocks].first + r].contact;
                 prefetchLines(&contacts[ahead], offsetof(ContactData, cache));
                 if (cores) prefetchLines(&cores[ahead], sizeof(ContactCores));
