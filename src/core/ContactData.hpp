@@ -107,6 +107,19 @@ inline double rollingRadius(const Geometry& g) {
     return 0.0;
 }
 
+/// The pair's rounded sides, for the solver's separation (RoundedRows.hpp): each shape's rounding radius (its
+/// rollingRadius, m) and whether its core has straight sides (a polygon's, segment's, capsule's or chain piece's;
+/// a circle's core is a point). Kept beside the contacts (WorldImpl::contactCores), set when the contact is mixed.
+struct ContactCores {
+    double radiusA = 0.0, radiusB = 0.0;
+    bool facesA = false, facesB = false;
+};
+
+inline ContactCores coresOf(const ShapeData& a, const ShapeData& b) {
+    return {rollingRadius(a.geometry), rollingRadius(b.geometry), !std::holds_alternative<Circle>(a.geometry),
+            !std::holds_alternative<Circle>(b.geometry)};
+}
+
 /// The contact's material from its shapes' (a the contact's shape a), by the world's mixing rules.
 inline void mixMaterials(ContactData& c, const ShapeData& a, const ShapeData& b, const WorldSettings& settings) {
     c.material.staticFriction = mixCoefficients(settings.frictionMixing, a.staticFriction, b.staticFriction);

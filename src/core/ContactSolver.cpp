@@ -4,6 +4,7 @@
 #include "ContactData.hpp"
 #include "Impulse.hpp"
 #include "Prefetch.hpp"
+#include "RoundedRows.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -255,18 +256,22 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
 [[gnu::always_inline]] inline PreparedRows prepareLoop(ContactBlock* blocks, ContactBlockCold* cold,
                                                        const BlockRows* rows, std::size_t count, const RowRef* refs,
                                                        const ContactData* contacts, const SolverBodySim* sims,
-                                                       const BodyData* bodies) {
+                                                       const BodyData* bodies, const ContactCores* cores,
+                                                       const ShapeData* shapes, ContactBlockEnds* ends) {
     PreparedRows prepared;
     SolverBodySim still[2][kLanes];  // the lanes' static or sleeping sides, A and B (rowBody)
     for (std::size_t j = 0; j < count; ++j) {
         // Rows visit contacts in colour order, which no hardware prefetcher follows, and a large scene's contacts
         // are no longer in the cache by now: ask for the part preparation reads, a few blocks ahead.
         if (j + kPrefetchBlocks < count)
-            for (std::uint32_t r = 0; r < rows[j + kPrefetchBlocks].count; ++r)
-                prefetchLines(&contacts[refs[rows[j + kPrefetchBlocks].first + r].contact],
-                              offsetof(ContactData, cache));
+            for (std::uint32_t r = 0; r < rows[j + kPrefetchBlocks].count; ++r) {
+                const std::uint32_t ahead = refs[rows[j + kPrefetchBlocks].first + r].contact;
+                prefetchLines(&contacts[ahead], offsetof(ContactData, cache));
+                if (cores) prefetchLines(&cores[ahead], sizeof(ContactCores));
+            }
         ContactBlock& block = blocks[j];
         block.holdsPush = false;
+        block.ends = nullptr;
         const int lanes = static_cast<int>(rows[j].count);
         const ContactData* contact[kLanes];
         const SolverBodySim *A[kLanes], *B[kLanes];
@@ -292,6 +297,15 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         prepared.turning += static_cast<std::size_t>(gatherLanes(in, block, cold[j], contact, A, B));
         if (block.twoPoints) prepareLanes<true>(in, block, cold[j]);
         else prepareLanes<false>(in, block, cold[j]);
+        if (cores && ends)
+            for (int k = 0; k < lanes; ++k) {
+                const std::uint32_t index = cold[j].lanes[k].contact;
+                const ContactCores& sides = cores[index];
+                if (sides.radiusA + sides.radiusB > 0.0 && (sides.facesA || sides.facesB)) {
+                    const ContactData& c = contacts[index];
+                    prepareRounded(block, ends[j], k, c.manifold, sides, shapes, bodies[c.a()], bodies[c.b()]);
+                }
+            }
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
     }
     return prepared;
@@ -680,6 +694,7 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
                 cp.baseSeparation;
         else
             s = normalShift + cp.ndB + cp.negNdA + cp.baseSeparation;
+        if (c.ends) s = pastEnds<V, Turns>(s, c, *c.ends, i, A, B);  // a rounded side past its face's end
         separation[i] = s;
         // Speculative (apart): close the gap in this substep, no further. Overlapping: the solve pass pushes out
         // softly, the relax pass not at all.
@@ -850,8 +865,9 @@ template <bool V>
 // The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
 PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                             const BodyData* bodies, const ContactCores* cores, const ShapeData* shapes,
+                             ContactBlockEnds* ends) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
 }
 void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<false>(begin, end, states);
@@ -868,13 +884,16 @@ void relaxMaterialBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockC
 #if PHYSIM_HAS_AVX2_CODE
 PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                           std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                          const SolverBodySim* sims, const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                                          const SolverBodySim* sims, const BodyData* bodies,
+                                          const ContactCores* cores, const ShapeData* shapes, ContactBlockEnds* ends) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
 }
 PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
                                               std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                              const SolverBodySim* sims, const BodyData* bodies) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies);
+                                              const SolverBodySim* sims, const BodyData* bodies,
+                                              const ContactCores* cores, const ShapeData* shapes,
+                                              ContactBlockEnds* ends) {
+    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
 }
 PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
     warmStartLoop<true>(begin, end, states);
@@ -905,13 +924,16 @@ PHYSIM_AVX512_CODE void relaxMaterialAvx512(ContactBlock* begin, ContactBlock* e
 
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, WideCode code) {
+                             const BodyData* bodies, WideCode code, const ContactCores* cores,
+                             const ShapeData* shapes, ContactBlockEnds* ends) {
     switch (pickWideCode(code)) {
 #if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies);
-    case WideCode::Avx2: return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    case WideCode::Avx512:
+        return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
+    case WideCode::Avx2:
+        return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
 #endif
-    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies);
+    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
     }
 }
 
@@ -968,6 +990,7 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes) {
     empty.turns = false;
     for (int k = lanes; k < kLanes; ++k) setRow(block, cold, k, empty);
     block.turns = block.friction = block.keepsPushes = block.holdsPush = false;
+    block.ends = nullptr;
 }
 
 void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstraint& c) {

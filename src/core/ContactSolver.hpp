@@ -38,8 +38,10 @@
 
 namespace physim {
 
+struct ContactCores;
 struct ContactData;
 struct ContactSurface;
+struct ShapeData;
 
 struct ContactConstraintPoint {
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();  // lever arms from the centres of mass at the start, m
@@ -97,6 +99,7 @@ struct alignas(64) ContactBlock {
     bool twoPoints = false;   // some lane has a second point (else the passes skip the second point's work)
     bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
+    const struct ContactBlockEnds* ends = nullptr;  // where some lane's rounded side is on a straight side
 };
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
@@ -114,6 +117,15 @@ struct alignas(64) ContactBlockCold {
         bool engaged[2] = {false, false};
         bool keepsPush = false;  // the row's ContactConstraint::keepsPush
     } lanes[kLanes];
+};
+
+/// The ends of the straight sides a block's rounded sides rest on (RoundedRows.hpp), in an array beside the cold
+/// blocks written only for a block that has some (ContactBlock::ends): per point, the interval of the centre of
+/// curvature's travel along the tangent (m, from the step's start) within which it is over its side (-inf, +inf in
+/// a lane without one), how the surface turns past each end (cosine and sine, RoundedRows.cpp), and the lane's sum
+/// of rounding radii, m.
+struct alignas(64) ContactBlockEnds {
+    Wide lo[2], hi[2], loCos[2], loSin[2], hiCos[2], hiSin[2], rounding;
 };
 
 /// A block's surface-material terms, kept in an array of their own that only a world using rolling resistance or
@@ -150,9 +162,14 @@ struct PreparedRows {
 /// lanes empty rows), each from its contact's manifold and its bodies (lever arms at the centres of mass): an awake
 /// side (index >= 0) from the solver's copy in sims, a static or sleeping one (kNullIndex) from its record in
 /// bodies. Four lanes at once; a lane's bits never depend on the others or on `code` (as for the passes below).
+/// With `cores` (per contact, ContactCores), the shapes and `ends` (ends[j] beside block j), a rounded side's rows
+/// on a straight side are measured from its centres of curvature (RoundedRows.hpp); without, from the contact
+/// points.
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, WideCode code = WideCode::Best);
+                             const BodyData* bodies, WideCode code = WideCode::Best,
+                             const ContactCores* cores = nullptr, const ShapeData* shapes = nullptr,
+                             ContactBlockEnds* ends = nullptr);
 /// After prepareContacts, in a world that uses surface materials: blocks [0, count)'s terms (material[j] block j's),
 /// from surfaces[i] for contact i (ContactSurface). A pass of its own, so preparation without them is as it was.
 void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,

@@ -154,6 +154,7 @@ void Solver::solve(WorldImpl& w) {
             if (contactBlocks_.size() < size) {
                 contactBlocks_.resize(size);  // each group fills its own (solveGroup), every lane of them
                 contactCold_.resize(size);
+                contactEnds_.resize(size);
             }
             rowImpact_.resize(graph_.blockRows.size() * kLanes);  // each group sets its rows' lanes
             rowImpactSpeed_.resize(graph_.blockRows.size() * kLanes);
@@ -308,6 +309,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     const std::size_t region = static_cast<std::size_t>(worker) * graph_.regionBlocks;
     auto blockAt = [&](std::size_t b) { return contactBlocks_.data() + region + (b - firstBlock); };
     auto coldAt = [&](std::size_t b) { return contactCold_.data() + region + (b - firstBlock); };
+    auto endsAt = [&](std::size_t b) { return contactEnds_.data() + region + (b - firstBlock); };
     // Block b's surface-material terms; null (the loops without them) in a world that has never used them.
     const bool materials = w.surfaceMaterials;
     auto materialAt = [&](std::size_t b) {
@@ -519,7 +521,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                          const PreparedRows prepared = prepareContacts(
                                              blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
                                              graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
-                                             w.bodies.data());
+                                             w.bodies.data(), WideCode::Best, w.contactCores.data(),
+                                             w.shapes.data(), endsAt(b));
                                          if (materials)
                                              prepareMaterials(blockAt(b), coldAt(b), materialAt(b),
                                                               graph_.blockRows.data() + b, e - b,

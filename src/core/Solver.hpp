@@ -63,6 +63,7 @@ private:
     std::vector<ContactBlock> contactBlocks_;
     std::vector<ContactBlockCold> contactCold_;
     std::vector<ContactBlockMaterial> contactMaterial_;  // beside contactCold_, only once the world uses materials
+    std::vector<ContactBlockEnds> contactEnds_;  // beside contactCold_; a block's written only where it has ends
     std::vector<std::int8_t> rowImpact_;         // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed_;         // per block lane with an impact: how fast it met, m/s
     ContactPass contactPassSettings_;            // this step's pass constants

@@ -75,6 +75,7 @@ struct WorldState {
     // Per contact slot, its surface terms: empty until some contact has one (surfaceMaterials), then kept for every
     // contact mixed since (those mixed before had none: a slot past the end reads as zero terms).
     std::vector<ContactSurface> contactSurfaces;
+    std::vector<ContactCores> contactCores;  // per contact slot: its sides' rounding (ContactData.hpp)
 
     // Joints and islands.
     std::vector<JointData> joints;

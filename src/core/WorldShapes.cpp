@@ -188,6 +188,8 @@ void WorldImpl::mixContact(std::uint32_t c) {
     ContactData& contact = contacts[c];
     const ShapeData &a = shapes[contact.shapeA()], &b = shapes[contact.shapeB()];
     mixMaterials(contact, a, b, settings);
+    if (contactCores.size() <= c) contactCores.resize(contacts.size());
+    contactCores[c] = coresOf(a, b);
     const ContactSurface surface = mixSurfaces(a, b);
     surfaceMaterials = surfaceMaterials || surface.rolling != 0.0 || surface.tangentSpeed != 0.0;
     if (!surfaceMaterials) return;

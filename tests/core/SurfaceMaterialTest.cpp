@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -54,8 +55,10 @@ TEST(RollingResistance, BallRollsToTheAnalyticDistanceAndStays) {
     for (int i = 1; i < 12 * 60; ++i) {
         world.step(kDt);
         const double e = energy();
-        // Rolling resistance only takes energy: 1e-9 J is rounding.
-        EXPECT_LE(e, last + 1e-9) << "step " << i;
+        // Rolling resistance only takes energy: 1e-9 J is rounding. As the ball stops, the rows' settling (below)
+        // may leave it moving at up to 7e-4 m/s, rolling: 0.5 (m + I / r^2) v^2 = 2.9e-7 J (1.7e-8 J seen).
+        const double settling = 0.5 * (mass + inertia / (r * r)) * 7e-4 * 7e-4;
+        EXPECT_LE(e, std::max(last + 1e-9, settling)) << "step " << i;
         // Each row only opposes rolling; the substep's rows together (warm started) may carry the last substep's
         // deceleration, (2/3) C_rr g h = 7e-4 m/s at h = dt / 8, past zero for a step as the ball stops: it moves
         // back by at most that times dt, 1.1e-5 m (3e-6 m seen), once, and then settles.

@@ -25,8 +25,8 @@ std::map<std::string, physim::test::LessonResult> runCar(const std::string& name
 }
 
 // The defaults: 90 N m on a wheel of 0.3 m, a 120 kg chassis and two 10 kg discs, 10 degrees. The bar for
-// the Wheel joint at 40 Hz: the driven wheel's omega r within 1% of its travel speed (measured 0.30%); the
-// acceleration within 1% of the energy balance's (measured +0.25%; at 240 Hz -0.03%).
+// the Wheel joint at 40 Hz: the driven wheel's omega r within 1% of its travel speed (measured 0.05%); the
+// acceleration within 1% of the energy balance's (measured +0.13%; at 240 Hz -0.03%).
 TEST(CarWheel, RollsWithoutSlippingAndAcceleratesAsPredictedAtFortyHz) {
     const auto results = runCar("physim_car_test_bar");
     const double theta = 10.0 * M_PI / 180.0, mass = 140.0, massEff = mass + 2.0 * 0.5 * 10.0;  // I = m r^2 / 2
