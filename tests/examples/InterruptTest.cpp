@@ -61,14 +61,17 @@ Child startGas(const fs::path& out) {
     return c;
 }
 
-// The child's exit status, or -1 if it is still running after `limit` (then it is killed).
+// The child's exit status as a shell reports it (128 + the signal for one that a signal ended: a second Ctrl-C that
+// arrives while the program is already exiting ends it by the default action), or -1 if it is still running after
+// `limit` (then it is killed).
 int waitFor(const Child& c, std::chrono::duration<double> limit, double& took) {
     const auto start = Clock::now();
     while (Clock::now() - start < limit) {
         int status = 0;
         if (waitpid(c.pid, &status, WNOHANG) == c.pid) {
             took = std::chrono::duration<double>(Clock::now() - start).count();
-            return WIFEXITED(status) ? WEXITSTATUS(status) : -2;
+            if (WIFEXITED(status)) return WEXITSTATUS(status);
+            return WIFSIGNALED(status) ? 128 + WTERMSIG(status) : -2;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
