@@ -29,10 +29,6 @@ float up(double v) {
 constexpr int kHalvingDepth = 24;
 constexpr std::size_t kBins = 16;
 
-}  // namespace
-
-namespace {
-
 using Box = WideBoxTree::Box;
 
 const Box kEmpty = {kInf, kInf, kInf, kInf};

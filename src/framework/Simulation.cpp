@@ -137,8 +137,9 @@ void Simulation::restore(const Snapshot& snapshot) {
     if (graphsManager.built())
         for (std::size_t i = 0; i < std::min(snapshot.graphPoints.size(), graphsManager.graphCount()); ++i) {
             const auto& points = graphsManager.points(static_cast<int>(i));
-            if (points.size() > snapshot.graphPoints[i])
-                graphsManager.setPoints(static_cast<int>(i), {points.begin(), points.begin() + static_cast<std::ptrdiff_t>(snapshot.graphPoints[i])});
+            const auto kept = static_cast<std::ptrdiff_t>(snapshot.graphPoints[i]);
+            if (static_cast<std::ptrdiff_t>(points.size()) > kept)
+                graphsManager.setPoints(static_cast<int>(i), {points.begin(), points.begin() + kept});
         }
     restoreState(snapshot.state);
 }

@@ -110,14 +110,24 @@ TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
     EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(20));
 }
 
-// The interval adapts so that a snapshot costs at most costShare of the steps between two: never below minInterval.
+// The interval adapts so that a snapshot costs at most costShare of the steps between two, never below minInterval:
+// with no cost limit one comes every minInterval steps; with a limit no snapshot can meet (a share of 1e-12) the
+// first measured one sets an interval beyond the run.
 TEST(Timeline, SnapshotsAreSpacedByTheirCost) {
-    Timeline::Settings settings;
-    settings.minInterval = 3;
-    Recording run(settings);
-    for (int i = 0; i < 100; ++i) run.frame(true);
-    EXPECT_GE(run.timeline.interval(), 0);
-    EXPECT_LE(run.timeline.size(), 100u / 3u + 2u);
+    Timeline::Settings free;
+    free.minInterval = 3;
+    free.costShare = 1e9;
+    Recording often(free);
+    for (int i = 0; i < 99; ++i) often.frame(true);
+    EXPECT_EQ(often.timeline.size(), 99u / 3u + 1u);  // at steps 0, 3, ..., 99
+
+    Timeline::Settings dear = free;
+    dear.costShare = 1e-12;
+    Recording rarely(dear);
+    for (int i = 0; i < 99; ++i) rarely.frame(true);
+    EXPECT_EQ(rarely.timeline.size(), 2u);  // step 0, then step 3, whose cost spaces the next past the run
+    EXPECT_GT(rarely.timeline.interval(), 99);
+
     Timeline empty;
     Bouncing sim;
     EXPECT_THROW(empty.scrubTo(sim, 1.0, [] {}), std::logic_error);
