@@ -274,6 +274,45 @@ TEST(ChainSegment, FrontOffsetIsTheShapeCentresSignedDistanceFromThePiecesLine) 
     EXPECT_TRUE(std::isinf(frontOffset(piece, {}, Geometry{piece}, {})));
 }
 
+TEST(ChainSegment, PointsKeptRightUpToTheMarginNearAndFarFromTheOrigin) {
+    // The narrow phase rejects most pieces before any manifold work (clearlyApart, then apart): a circle whose gap
+    // to the piece is 1e-7 m under the kept margin must still get its point, and 1e-7 m over it none, in front of
+    // the piece's span and past either (open) end, and with the pair 1e6 m from the origin. 1e-7 m is far above the
+    // rounding of these distances (1e-10 m at 1e6 m) and far below the rejections' slack would need to be wrong by.
+    // A box (its bounding circle is only a bound) keeps its point under the margin too.
+    constexpr double kMargin = 0.004, kStep = 1e-7, kRadius = 0.3;
+    for (double far : {0.0, 1e6}) {
+        const Vec2 shift(far, -far);
+        const Vec2 end1 = shift + Vec2(-1.0, 0.0), end2 = shift + Vec2(1.0, 0.2);
+        const ChainSegment piece{end1, makeSegment(end1, end2), end2};  // open ends: real corners
+        const Vec2 p1 = piece.segment.point1, p2 = piece.segment.point2;
+        const Vec2 up = leftNormal(piece);
+        const Vec2 out1 = (up - (p2 - p1).normalized()).normalized();  // past point1, up and outwards
+        const Vec2 out2 = (up + (p2 - p1).normalized()).normalized();
+        const std::pair<Vec2, Vec2> nearest[] = {{p1 + 0.3 * (p2 - p1), up}, {p1, out1}, {p2, out2}};
+        for (const auto& [point, direction] : nearest)
+            for (double angle : {0.0, 0.7, -2.1}) {
+                for (int side : {-1, 1}) {
+                    const double gap = kMargin + side * kStep;
+                    const Transform xb{
+                        point + (kRadius + gap) * direction - Rotation::fromAngle(angle).apply({0.05, 0.0}),
+                        Rotation::fromAngle(angle)};
+                    const NarrowResult r =
+                        collideChainSegment(piece, Transform{}, coreOf(makeCircle(kRadius, {0.05, 0.0})), xb, kMargin);
+                    EXPECT_EQ(r.manifold.pointCount, side < 0 ? 1 : 0)
+                        << "far " << far << " angle " << angle << " gap " << gap;
+                }
+                // A box resting flat above the middle of the span, its bottom face kMargin - kStep above the piece.
+                const double tilt = std::atan2(p2.y() - p1.y(), p2.x() - p1.x());
+                const Transform xb{p1 + 0.5 * (p2 - p1) + (0.2 + kMargin - kStep) * up, Rotation::fromAngle(tilt)};
+                EXPECT_GT(
+                    collideChainSegment(piece, Transform{}, coreOf(makeBox(0.4, 0.2)), xb, kMargin).manifold.pointCount,
+                    0)
+                    << "far " << far;
+            }
+    }
+}
+
 TEST(ChainSegment, GroundAgainstGroundHasNoContact) {
     const ChainSegment piece = openChain({{-3, 0}, {-1, 0}, {1, 0}})[0];
     EXPECT_EQ(collide(piece, Transform{}, piece, Transform{}).pointCount, 0);

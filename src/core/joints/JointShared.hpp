@@ -35,6 +35,7 @@ struct JointConstraint {
     double invMassA = 0.0, invMassB = 0.0, invIA = 0.0, invIB = 0.0;
     double axialMass = 0.0;   // revolute, weld, wheel: 1 / (invIA + invIB), kg m^2; 0 when neither turns
     Softness softness;
+    Softness spring;  // revolute, prismatic, wheel: the joint's own spring over a substep (rigid: off)
     double maxImpulse = 0.0;  // mouse, prismatic motor: per substep, N s; revolute, wheel motor: N m s per substep
     double invH = 0.0;        // 1 / substep, 1/s
 };

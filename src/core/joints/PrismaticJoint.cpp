@@ -99,6 +99,7 @@ void PrismaticJoint::prepare(JointConstraint& row, const BodyData& A, const Body
     row.axis = A.xf.q.apply(localAxis);
     row.deltaAngle = B.angle - A.angle - referenceAngle;
     row.maxImpulse = maxMotorForce * h;
+    row.spring = enableSpring && hertz > 0.0 ? makeSoftness(hertz, dampingRatio, 1.0 / row.invH) : Softness{};
 }
 
 void PrismaticJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const {
@@ -116,7 +117,7 @@ void PrismaticJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide
     const double kAxial = rowInverseMass(row, f.a1, f.a2);
     // The spring: soft in both passes (it is the user's spring, not an error to remove).
     if (enableSpring && hertz > 0.0 && kAxial > 0.0) {
-        const Softness soft = makeSoftness(hertz, dampingRatio, 1.0 / row.invH);
+        const Softness& soft = row.spring;
         const double C = f.translation - targetTranslation;
         const double lambda =
             -soft.massScale * (axialRate(f, A, B) + soft.biasRate * C) / kAxial - soft.impulseScale * springImpulse;

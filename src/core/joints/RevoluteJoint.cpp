@@ -122,6 +122,8 @@ void RevoluteJoint::prepare(JointConstraint& row, const BodyData& A, const BodyD
                             const Softness& rodSoftness) const {
     preparePinned(row, referenceAngle, A, B, h, rodSoftness);
     row.maxImpulse = maxMotorTorque * h;
+    row.spring = enableSpring && springHertz > 0.0 ? makeSoftness(springHertz, springDampingRatio, 1.0 / row.invH)
+                                                   : Softness{};
 }
 
 void RevoluteJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const {
@@ -133,7 +135,7 @@ void RevoluteJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionS
 void RevoluteJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias) {
     if (enableSpring && springHertz > 0.0 && row.axialMass > 0.0) {
         // Its own spring in both passes (as a soft distance joint): the relax pass must not take its pull back.
-        const Softness spring = makeSoftness(springHertz, springDampingRatio, 1.0 / row.invH);
+        const Softness& spring = row.spring;
         const double C = row.deltaAngle + B.dAngle - A.dAngle - springTargetAngle;
         const double lambda = -row.axialMass * spring.massScale * (B.w - A.w + spring.biasRate * C) -
                               spring.impulseScale * springImpulse;

@@ -96,6 +96,7 @@ void WheelJoint::prepare(JointConstraint& row, const BodyData& A, const BodyData
     const double turning = row.invIA + row.invIB;
     row.axialMass = turning > 0.0 ? 1.0 / turning : 0.0;
     row.maxImpulse = maxMotorTorque * h;
+    row.spring = enableSpring && hertz > 0.0 ? makeSoftness(hertz, dampingRatio, 1.0 / row.invH) : Softness{};
 }
 
 void WheelJoint::warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const {
@@ -117,7 +118,7 @@ void WheelJoint::solve(const JointConstraint& row, MotionSide& A, MotionSide& B,
     const double kAxial = rowInverseMass(row, f.a1, f.a2);
     // The suspension: soft in both passes (it is the user's spring, not an error to remove). Its rest: 0.
     if (enableSpring && hertz > 0.0 && kAxial > 0.0) {
-        const Softness soft = makeSoftness(hertz, dampingRatio, 1.0 / row.invH);
+        const Softness& soft = row.spring;
         // The mass over kAxial first: the division then waits on nothing the rows before changed.
         const double lambda = -(soft.massScale / kAxial) * (axialRate(f, A, B) + soft.biasRate * f.translation) -
                               soft.impulseScale * springImpulse;

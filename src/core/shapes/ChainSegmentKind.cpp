@@ -12,12 +12,13 @@
 // So a body crossing a flat joint meets two faces with the same normal and never the corner between them.
 
 #include "ChainSegmentKind.hpp"
+#include "Faces.hpp"
 
 #include "physim/core/Validate.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-
 #include <limits>
 
 namespace physim {
@@ -31,11 +32,25 @@ constexpr double kFlatSine = 1e-9;
 // The piece's face: the 2-vertex core's face 1 (edge point2 -> point1), whose normal is the left normal.
 constexpr int kFace = 1;
 
-// The mean of a core's vertices: its centre for the one-sided test and the bounding circle.
-Vec2 centreOf(const RoundedCore& core) {
+// Where a core's vertices sit in the piece's frame, without placing the whole core: their mean (the centre for the
+// one-sided test and the bounding circle) and the greatest squared distance of one from it, m^2. The arithmetic is
+// relativeCore's, so the tests below see the same numbers as the manifold routines.
+struct Spread {
+    Vec2 centre;
+    double reachSquared;
+};
+
+Spread spreadOf(const RoundedCore& b, const Transform& relative) {
+    std::array<Vec2, Polygon::maxVertices> placed;
     Vec2 centre = Vec2::Zero();
-    for (int i = 0; i < core.count; ++i) centre += core.vertices[i];
-    return centre / core.count;
+    for (int i = 0; i < b.count; ++i) {
+        placed[i] = relative.apply(b.vertices[i]);
+        centre += placed[i];
+    }
+    centre /= b.count;
+    double reach = 0.0;
+    for (int i = 0; i < b.count; ++i) reach = std::max(reach, (placed[i] - centre).squaredNorm());
+    return {centre, reach};
 }
 
 // Signed distance (m) of p from the piece's line, positive on its open side (the left of point1 -> point2).
@@ -44,17 +59,36 @@ double offsetFromLine(const ChainSegment& a, const Vec2& p) {
     return perp(along).dot(p - a.segment.point1) / along.norm();
 }
 
-// Whether the core b (in the piece's frame) lies farther from the segment p1-p2 than any kept point may: its bounding
-// circle about its vertices' centre is apart by more than the margin (points are kept up to max(margin,
-// kSpeculativeMargin), Manifolds.hpp). Most pieces near a body are such; the routines below would find nothing.
-bool apart(const Vec2& p1, const Vec2& p2, const RoundedCore& b, double margin) {
-    const Vec2 centre = centreOf(b);
-    double reach = 0.0;
-    for (int i = 0; i < b.count; ++i) reach = std::max(reach, (b.vertices[i] - centre).squaredNorm());
+// Whether a core of this spread and radius lies farther from the segment p1-p2 than any kept point may: its bounding
+// circle is apart by more than the margin (points are kept up to max(margin, kSpeculativeMargin), Manifolds.hpp).
+// Most pieces near a body are such; the routines below would find nothing.
+bool apart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius, double margin) {
     const Vec2 e = p2 - p1;
-    const double t = std::clamp(e.dot(centre - p1) / e.squaredNorm(), 0.0, 1.0);
-    const double distance = (centre - (p1 + t * e)).norm();
-    return distance - std::sqrt(reach) - b.radius > std::max(margin, kSpeculativeMargin);
+    const double t = std::clamp(e.dot(b.centre - p1) / e.squaredNorm(), 0.0, 1.0);
+    const double distance = (b.centre - (p1 + t * e)).norm();
+    return distance - std::sqrt(b.reachSquared) - radius > std::max(margin, kSpeculativeMargin);
+}
+
+// apart's answer where it is plain, without its division and square roots: the centre's squared distance from the
+// segment beyond the squared reach by a slack (a micrometre, and 1e-12 of the coordinates) far above either
+// computation's rounding, a few units of 1e-16 of the coordinates. Near that line, apart decides.
+bool clearlyApart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius, double margin) {
+    const Vec2 e = p2 - p1, c = b.centre - p1;
+    const double along = e.dot(c), length2 = e.squaredNorm();
+    const double size = std::max({p1.cwiseAbs().maxCoeff(), p2.cwiseAbs().maxCoeff(), b.centre.cwiseAbs().maxCoeff()});
+    double squared;  // the centre's squared distance from the segment, times length2 inside its span
+    double reach = radius + std::max(margin, kSpeculativeMargin) + 1e-6 + 1e-12 * size;
+    if (b.reachSquared > 0.0) reach += std::sqrt(b.reachSquared);
+    double bound = reach * reach;
+    if (along <= 0.0) {
+        squared = c.squaredNorm();
+    } else if (along >= length2) {
+        squared = (b.centre - p2).squaredNorm();
+    } else {
+        squared = cross(e, c) * cross(e, c);
+        bound *= length2;
+    }
+    return squared > bound;
 }
 
 }  // namespace
@@ -65,8 +99,6 @@ void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
     requireFinite("chain segment ghost2", c.ghost2);
 }
 
-bool behind(const ChainSegment& a, const RoundedCore& local) { return offsetFromLine(a, centreOf(local)) < 0.0; }
-
 double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
     if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
     const RoundedCore core = std::visit(
@@ -75,19 +107,22 @@ double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b
             else return coreOf(s);
         },
         b);
-    return offsetFromLine(a, centreOf(relativeCore(core, xa, xb)));
+    return offsetFromLine(a, spreadOf(core, relativeTransform(xa, xb)).centre);
 }
 
-NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
-                                 const Transform& xb, double margin) {
+NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
+                                 double margin) {
     const Vec2& p1 = a.segment.point1;
     const Vec2& p2 = a.segment.point2;
+    // The cheap rejections first: most pieces near a body are out of its reach or behind it.
+    const Spread spread = spreadOf(b, relativeTransform(xa, xb));
+    if (clearlyApart(p1, p2, spread, b.radius, margin)) return {};
+    if (offsetFromLine(a, spread.centre) < 0.0) return {};  // behind: one-sided
+    if (apart(p1, p2, spread, b.radius, margin)) return {};
+
     const RoundedCore piece = coreOf(p1, p2, 0.0);
     const RoundedCore local = relativeCore(b, xa, xb);
     const Vec2 face = piece.normals[kFace];
-
-    if (behind(a, local)) return {};
-    if (apart(p1, p2, local, margin)) return {};
 
     const LocalManifold m = collideCores(piece, local, margin);
     if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);

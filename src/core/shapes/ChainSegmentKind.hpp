@@ -7,10 +7,8 @@
 
 namespace physim {
 
-/// Whether the core b (in a's frame) has its centre behind the piece a (right of point1 -> point2): one-sided.
-bool behind(const ChainSegment& a, const RoundedCore& local);
 /// The signed distance (m) of the centre of b's core (b placed by xb) from the line of the piece placed by xa,
-/// positive in front (< 0: behind, as above); infinite for another chain piece, which it never touches. The
+/// positive in front (< 0: behind, right of point1 -> point2; one-sided, the narrow phase gives no contact); infinite for another chain piece, which it never touches. The
 /// Continuous stage skips a piece a body starts behind, as the narrow phase does, or stays well in front of.
 double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb);
 

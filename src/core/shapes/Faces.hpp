@@ -13,13 +13,18 @@ namespace physim {
 
 /// Places b's vertices and normals (its first `count`) in a's frame: xa^-1 xb applied to them. Working there keeps b's
 /// vertices small numbers even far from the world origin. S holds `count`, `vertices` and `normals`.
+/// xa^-1 xb: b's frame seen from a's.
+inline Transform relativeTransform(const Transform& xa, const Transform& xb) {
+    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
+    return {xa.q.applyInverse(xb.p - xa.p), q};
+}
+
 template <class S>
 void placeInFrameOf(S& local, const S& b, const Transform& xa, const Transform& xb) {
-    const Rotation q{xa.q.c * xb.q.c + xa.q.s * xb.q.s, xa.q.c * xb.q.s - xa.q.s * xb.q.c};  // qa^-1 qb
-    const Transform relative{xa.q.applyInverse(xb.p - xa.p), q};
+    const Transform relative = relativeTransform(xa, xb);
     for (int i = 0; i < b.count; ++i) {
         local.vertices[i] = relative.apply(b.vertices[i]);
-        local.normals[i] = q.apply(b.normals[i]);
+        local.normals[i] = relative.q.apply(b.normals[i]);
     }
 }
 
