@@ -5,8 +5,12 @@
 #include <SFML/Graphics/RenderWindow.hpp>
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace physim::examples {
 
@@ -48,6 +52,7 @@ void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds
     drawScenes(runner);
     drawParameters(runner);
     drawRunControls(runner);
+    drawBranch(runner);
     drawDebugSwitches(runner);
     ImGui::Separator();
     ImGui::TextWrapped("Left drag moves a body, right drag pans, the wheel zooms. The keys are in the bar above "
@@ -136,6 +141,40 @@ void Gallery::drawRunControls(Runner& runner) {
     if (ImGui::SliderFloat("##timescale", &scale, static_cast<float>(Runner::minTimeScale),
                            static_cast<float>(Runner::maxTimeScale), "%.3gx", ImGuiSliderFlags_Logarithmic))
         runner.setTimeScale(std::clamp<double>(scale, Runner::minTimeScale, Runner::maxTimeScale));
+}
+
+// A second future from now with one thing changed (ghosts over the scene), and how far apart the two runs are:
+// log10 of the distance (m) against time, live. Chaos shows as a straight rising line.
+void Gallery::drawBranch(Runner& runner) {
+    ImGui::Separator();
+    ImGui::TextUnformatted("Branch (B): a second run with");
+    constexpr BranchChange kChanges[] = {BranchChange::Velocity, BranchChange::Restitution, BranchChange::Friction,
+                                         BranchChange::Substeps};
+    ImGui::SetNextItemWidth(-1.f);
+    if (ImGui::BeginCombo("##branchchange", describe(runner.branchChange()))) {
+        for (BranchChange c : kChanges)
+            if (ImGui::Selectable(describe(c), c == runner.branchChange())) runner.setBranchChange(c);
+        ImGui::EndCombo();
+    }
+    const bool branched = runner.simulation().branch() != nullptr;
+    if (ImGui::Button(branched ? "End branch" : "Start branch from now"))
+        branched ? runner.endBranch() : runner.startBranch(runner.branchChange());
+    itemRects_.emplace_back("branch", lastItemRect());
+    const auto& trace = runner.branchTrace();
+    if (trace.empty()) return;
+    std::vector<float> logs;
+    logs.reserve(trace.size());
+    for (const auto& [t, d] : trace) logs.push_back(static_cast<float>(std::log10(std::max(d, 1e-16))));
+    char caption[96];
+    std::snprintf(caption, sizeof caption, "log10 distance (m), t = %.1f to %.1f s", trace.front().first,
+                  trace.back().first);
+    ImGui::TextUnformatted(caption);
+    char now[32];
+    std::snprintf(now, sizeof now, "%.3g m now", trace.back().second);
+    ImGui::SetNextItemWidth(-1.f);  // the panel's width (ImGui 1.86's plots take no negative size)
+    ImGui::PlotLines("##branchdistance", logs.data(), static_cast<int>(logs.size()), 0, now, FLT_MAX, FLT_MAX,
+                     ImVec2(0.f, 80.f));
+    itemRects_.emplace_back("branch distance", lastItemRect());
 }
 
 void Gallery::drawDebugSwitches(Runner& runner) {

@@ -41,6 +41,7 @@ private:
     void drawScenes(Runner& runner);
     void drawParameters(Runner& runner);
     void drawRunControls(Runner& runner);
+    void drawBranch(Runner& runner);
     void drawDebugSwitches(Runner& runner);
 
     std::vector<Scene> scenes_;

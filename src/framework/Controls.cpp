@@ -141,7 +141,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
 }
 
 std::string Controls::keysHelp() {
-    return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   [ ] slower/faster   F fit   "
+    return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   B branch   [ ] slower/faster   F fit   "
            "Tab stats   "
            "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";

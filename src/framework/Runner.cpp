@@ -1,6 +1,7 @@
 #include "physim/framework/Runner.hpp"
 
 #include "AccuracyOptions.hpp"
+#include "BranchChanges.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
@@ -54,6 +55,10 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
     items.push_back({text});
     items.push_back({"speed " + showScale(controls.timeScale())});
     if (sim.paused || tallest) items.push_back({"PAUSED (O steps)", warning});
+    if (sim.branch() || tallest) {
+        std::snprintf(text, sizeof text, "branch %.3g m away (B ends it)", sim.branchDistance());
+        items.push_back({text, sf::Color(30, 90, 170)});
+    }
     if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
         std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
                       pace.pace(), maxStepsPerFrame);
@@ -145,6 +150,7 @@ void Runner::restart() {
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
     timeline_.clear();
+    branchTrace_.clear();
     if (recording_) timeline_.record(sim);
 }
 
@@ -152,9 +158,28 @@ void Runner::oneStepFrame(bool record) {
     Simulation& sim = simulation();
     sim.onUpdate();
     sim.updateEntities();
-    sim.fixedStep();
+    fixedStep();
     sim.onDrawGraphs();
     if (record) timeline_.record(sim);
+}
+
+void Runner::fixedStep() {
+    Simulation& sim = simulation();
+    sim.fixedStep();
+    if (!sim.branch()) branchTrace_.clear();
+    else if (branchTrace_.empty() || sim.time > branchTrace_.back().first + 0.5 * sim.fixedTimeStep())
+        branchTrace_.emplace_back(sim.time, sim.branchDistance());
+}
+
+void Runner::startBranch(BranchChange change) {
+    Simulation& sim = simulation();
+    sim.startBranch(sim.snapshot(), branchChangeFor(change));
+    branchTrace_.assign(1, {sim.time, sim.branchDistance()});
+}
+
+void Runner::endBranch() {
+    simulation().endBranch();
+    branchTrace_.clear();
 }
 
 double Runner::scrubTo(double time) {
@@ -167,7 +192,12 @@ double Runner::scrubTo(double time) {
         for (long long i = 0; i < steps; ++i) oneStepFrame(recording_);
         return sim.time;
     }
-    return timeline_.scrubTo(sim, time, [this] { oneStepFrame(false); });
+    // Back: the replayed steps repeat the trace's points (fixedStep adds none), and the later ones go.
+    const double restored = timeline_.scrubTo(sim, time, [this] { oneStepFrame(false); });
+    const double last = restored + 0.5 * sim.fixedTimeStep();
+    while (!branchTrace_.empty() && branchTrace_.back().first > last) branchTrace_.pop_back();
+    if (!sim.branch()) branchTrace_.clear();
+    return restored;
 }
 
 void Runner::setFactory(SimulationFactory factory) {
@@ -210,7 +240,7 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     if (!sim.paused) steps = loop_->accumulator.advance(frameSeconds * loop_->controls.timeScale());
     else if (singleStep) steps = 1;
     for (int i = 0; i < steps; ++i) {
-        sim.fixedStep();
+        fixedStep();
         loop_->stepTimes.record(sim.world().profile());
     }
     loop_->pace.record(frameSeconds, steps * sim.fixedTimeStep(), loop_->accumulator.droppedSteps() - droppedBefore,
@@ -251,6 +281,7 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
             else if (event.key.code == sf::Keyboard::Left) scrubTo(sim.time - 1.0);
             else if (event.key.code == sf::Keyboard::Right) scrubTo(sim.time + 1.0);
             else if (event.key.code == sf::Keyboard::Home) scrubTo(0.0);
+            else if (event.key.code == sf::Keyboard::B) sim.branch() ? endBranch() : startBranch(branchChange_);
             else if (event.key.code == sf::Keyboard::Escape) quit_ = true;
             else loop_->controls.handleEvent(event, sim, window ? window->getSize() : windowSize_);
             break;

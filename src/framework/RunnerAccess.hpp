@@ -25,6 +25,8 @@ struct RunnerAccess {
     static const FixedStepAccumulator& accumulator(const Runner& runner) { return runner.loop_->accumulator; }
     static Controls& controls(Runner& runner) { return runner.loop_->controls; }
     static const PaceMeter& pace(const Runner& runner) { return runner.loop_->pace; }
+    /// Records the timeline as a window run does (headless runs keep none).
+    static void recordTimeline(Runner& runner) { runner.recording_ = true; }
 };
 
 }  // namespace physim

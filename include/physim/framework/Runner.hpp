@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sf {
@@ -29,6 +30,12 @@ class InterruptWatch;  // likewise: Ctrl-C and SIGTERM during run()
 class Runner;
 
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
+
+/// What a branch started from the window changes (Runner::startBranch): one body's velocity, every shape's
+/// restitution or friction, or the accuracy (the substeps).
+enum class BranchChange { Velocity, Restitution, Friction, Substeps };
+/// A few words saying what the change does ("frictions halved").
+const char* describe(BranchChange change);
 
 /// A panel beside the scene, such as the gallery's scene list and sliders: it sees the window's events first
 /// and draws over each finished frame.
@@ -86,6 +93,15 @@ public:
     /// running one-step frames. Keys Left and Right go back and forward a second, Home to the start. Returns the
     /// simulation's time after.
     double scrubTo(double time);
+    /// Starts a branch from now (Simulation::startBranch) with `change`, drawn as ghosts, and a fresh distance
+    /// trace. Key B does it with branchChange(), or ends the branch there is; endBranch ends it.
+    void startBranch(BranchChange change);
+    void endBranch();
+    BranchChange branchChange() const { return branchChange_; }
+    void setBranchChange(BranchChange change) { branchChange_ = change; }
+    /// Simulation::branchDistance after each fixed step since the branch began, as (t s, distance m), for the
+    /// gallery's live plot: it follows a scrub back (later points go) and empties when the branch ends.
+    const std::vector<std::pair<double, double>>& branchTrace() const { return branchTrace_; }
     /// Fits the view to the scene at the next frame, as F does.
     void requestFit();
     /// The statistics panel (Tab).
@@ -123,6 +139,9 @@ private:
     Timeline timeline_;
     bool recording_ = false;  // in a window: timeline_ records each step
     void oneStepFrame(bool record);  // a frame of exactly one fixed step (scrubbing: the hooks run as in a run)
+    void fixedStep();                // the simulation's, and the branch trace's point
+    BranchChange branchChange_ = BranchChange::Velocity;
+    std::vector<std::pair<double, double>> branchTrace_;
     InterruptWatch* interrupts_ = nullptr;  // run()'s, while it runs
     bool stopRequested();                   // a signal came (run() then writes its outputs and exits 128 + it)
     std::optional<std::array<int, 4>> graphsWindow_;  // x, y, width, height beside the window; none headless
