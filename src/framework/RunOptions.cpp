@@ -3,6 +3,7 @@
 #include "AccuracyOptions.hpp"
 #include "NumberOption.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <optional>
 #include <sstream>
@@ -17,7 +18,30 @@ std::string bound(double v) {
     return text;
 }
 
+// ID:QUANTITY, the id a non-negative integer and the quantity one of RecordSpec::quantities().
+RecordSpec parseRecord(const std::string& text) {
+    const auto colon = text.find(':');
+    const std::string id = text.substr(0, colon);
+    if (colon == std::string::npos || id.empty() || id.find_first_not_of("0123456789") != std::string::npos ||
+        id.size() > 9)
+        throw UsageError("--record expects ID:QUANTITY with ID an entity's id (a whole number), got '" + text + "'");
+    RecordSpec spec{std::stoi(id), text.substr(colon + 1)};
+    const auto& known = RecordSpec::quantities();
+    if (std::find(known.begin(), known.end(), spec.quantity) == known.end()) {
+        std::string list;
+        for (const std::string& q : known) list += (list.empty() ? "" : ", ") + q;
+        throw UsageError("--record " + text + ": unknown quantity '" + spec.quantity + "' (one of " + list + ")");
+    }
+    return spec;
+}
+
 }  // namespace
+
+const std::vector<std::string>& RecordSpec::quantities() {
+    static const std::vector<std::string> names{"x",  "y",     "angle",           "vx",
+                                                "vy", "speed", "angular_velocity", "kinetic_energy"};
+    return names;
+}
 
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
@@ -73,6 +97,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                 throw UsageError("--param expects NAME=VALUE, got '" + text + "'");
             const double v = parseNumberOption("--param " + text.substr(0, eq), text.substr(eq + 1));
             o.parameters.emplace_back(text.substr(0, eq), v);
+        } else if (a == "--record") {
+            o.records.push_back(parseRecord(value()));
         } else if (a == "--replay") {
             const std::string& text = value();
             if (text.empty()) throw UsageError("--replay needs a run.json file, got ''");
@@ -90,6 +116,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         }
     }
     checkAccuracyOptions(o);
+    if (!o.records.empty() && !o.outDir && !o.help) throw UsageError("--record writes into --out DIR: give --out too");
     if (o.replay) {  // the run comes from the file: only --quiet may join it
         for (const std::string& arg : args) {
             const std::string name = arg.substr(0, arg.find('='));
@@ -118,6 +145,9 @@ std::string usage(std::string_view program, std::string_view title) {
        << "                           the paper)\n"
        << "  --param NAME=VALUE       set one of the simulation's parameters (listed below, if it has any)\n"
        << "  --screenshot FILE.png    window: save the last frame drawn when the run ends\n"
+       << "  --record ID:QUANTITY     with --out, record the quantity of the entity with that id (summary.json's\n"
+       << "                           ids) after every step into records.csv and graphs.root; repeatable. QUANTITY:\n"
+       << "                           x, y, angle, vx, vy, speed, angular_velocity, kinetic_energy (SI units)\n"
        << "  --replay RUN.json        run again the run that RUN.json records (written by --out) and say whether\n"
        << "                           it ends in the same state (exit 0) or not (exit 1)\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
@@ -126,10 +156,10 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --help                   this text\n"
        << "  --name=value is the same as --name value.\n\n"
        << "in a window: " << "Space restart, P pause, O one step, Left / Right back / forward 1 s (pauses; the\n"
-       << "  run is recorded as it goes), Home back to the start, [ ] slower / faster, F fit the view,\n"
-       << "  Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres, sleep, sensors, rays),\n"
-       << "  left drag moves a body, right drag pans, the wheel zooms about the cursor, Esc quits;\n"
-       << "  the simulation may add its own keys.\n"
+       << "  run is recorded as it goes), Home back to the start, B start or end a branch, [ ] slower / faster,\n"
+       << "  F fit the view, Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres,\n"
+       << "  sleep, sensors, rays), left drag moves a body, right drag pans, the wheel zooms about the cursor,\n"
+       << "  Esc quits; the simulation may add its own keys.\n"
        << "Ctrl-C (SIGINT) or SIGTERM stops the run at the end of its step and writes --out; a second one stops\n"
        << "  it at once.\n"
        << "exit codes: 0 success, 1 error while running, 2 bad arguments, 130 stopped by SIGINT, 143 by SIGTERM.\n";

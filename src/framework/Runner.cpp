@@ -2,6 +2,7 @@
 
 #include "AccuracyOptions.hpp"
 #include "BranchChanges.hpp"
+#include "Recorder.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
@@ -151,6 +152,15 @@ void Runner::restart() {
     if (!viewSetByScene_) fitView();
     timeline_.clear();
     branchTrace_.clear();
+    recorder_.reset();
+    if (!options_.records.empty()) {  // a bad spec is a usage error (exit 2) naming it
+        try {
+            recorder_ = std::make_unique<Recorder>(options_.records, sim);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
+        recorder_->sample(sim);
+    }
     if (recording_) timeline_.record(sim);
 }
 
@@ -166,6 +176,7 @@ void Runner::oneStepFrame(bool record) {
 void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
+    if (recorder_) recorder_->sample(sim);
     if (!sim.branch()) branchTrace_.clear();
     else if (branchTrace_.empty() || sim.time > branchTrace_.back().first + 0.5 * sim.fixedTimeStep())
         branchTrace_.emplace_back(sim.time, sim.branchDistance());
@@ -304,6 +315,9 @@ std::vector<std::string> Runner::writeOutputs(const std::string& directory) cons
     if (!recordOut) throw std::runtime_error("physim: cannot write " + record.string());
     written.push_back(record.string());
     for (std::string& file : simulation_->graphsManager.writeFiles(directory)) written.push_back(std::move(file));
+    if (recorder_)  // after the graphs: their graphs.root is written anew, and the records' tree joins it
+        for (std::string& file : recorder_->write(directory))
+            if (std::find(written.begin(), written.end(), file) == written.end()) written.push_back(std::move(file));
     return written;
 }
 
@@ -503,6 +517,9 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
         Runner runner(factory, options);
         if (setup) setup(runner);
         return runner.run();
+    } catch (const UsageError& e) {  // found once the scene exists (--record's ids)
+        std::cerr << program << ": " << e.what() << "\n";
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << program << ": error: " << e.what() << "\n";
         return 1;

@@ -80,5 +80,20 @@ TEST(RunOptions, BadArgumentsNameTheValue) {
     EXPECT_NE(errorOf({"--screenshot", ""}).find("--screenshot"), std::string::npos);
 }
 
+TEST(RunOptions, RecordTakesAnIdAndAKnownQuantityAndNeedsOut) {
+    const RunOptions o = parseRunOptions({"--out", "d", "--record", "3:kinetic_energy", "--record=12:y"});
+    ASSERT_EQ(o.records.size(), 2u);
+    EXPECT_EQ(o.records[0].entity, 3);
+    EXPECT_EQ(o.records[0].quantity, "kinetic_energy");
+    EXPECT_EQ(o.records[1].entity, 12);
+    EXPECT_EQ(o.records[1].quantity, "y");
+    EXPECT_NE(errorOf({"--out", "d", "--record", "3:mass"}).find("'mass'"), std::string::npos);
+    EXPECT_NE(errorOf({"--out", "d", "--record", "box:x"}).find("box:x"), std::string::npos);
+    EXPECT_NE(errorOf({"--out", "d", "--record", "-1:x"}).find("-1:x"), std::string::npos);
+    EXPECT_NE(errorOf({"--out", "d", "--record", "3"}).find("ID:QUANTITY"), std::string::npos);
+    EXPECT_NE(errorOf({"--record", "3:x"}).find("--out"), std::string::npos);
+    EXPECT_NE(usage("p", "t").find("--record ID:QUANTITY"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace physim

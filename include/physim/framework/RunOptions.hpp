@@ -12,6 +12,15 @@
 
 namespace physim {
 
+/// One --record ENTITY:QUANTITY: a quantity of an entity's body (by the entity's id, as summary.json lists it)
+/// sampled after every fixed step. The quantities, in SI units: x, y (m), angle (rad), vx, vy, speed (m/s),
+/// angular_velocity (rad/s), kinetic_energy (J: translation and rotation).
+struct RecordSpec {
+    int entity = 0;
+    std::string quantity;
+    static const std::vector<std::string>& quantities();
+};
+
 struct RunOptions {
     bool help = false;
     bool headless = false;             ///< no window, no display needed
@@ -32,6 +41,9 @@ struct RunOptions {
     std::optional<double> precision;        ///< sampled detection's spacing, fraction of the step, (0, 1]
     /// --replay FILE: run the run that FILE (a run.json) records, and say whether it ends in the same state.
     std::optional<std::string> replay;
+    /// --record ENTITY:QUANTITY, repeatable, in order: series written to --out (records.csv, and a TTree in
+    /// graphs.root).
+    std::vector<RecordSpec> records;
     /// The arguments as given (after the program's name), which --out's run.json records; and the program's name,
     /// which runMain sets.
     std::vector<std::string> arguments;

@@ -28,6 +28,7 @@ namespace physim {
 class Overlay;  // the runner's internal (src/framework), not part of the installed API
 class InterruptWatch;  // likewise: Ctrl-C and SIGTERM during run()
 class Runner;
+class Recorder;  // internal, src/framework/Recorder.hpp
 
 using SimulationFactory = std::function<std::unique_ptr<Simulation>()>;
 
@@ -141,6 +142,7 @@ private:
     void oneStepFrame(bool record);  // a frame of exactly one fixed step (scrubbing: the hooks run as in a run)
     void fixedStep();                // the simulation's, and the branch trace's point
     BranchChange branchChange_ = BranchChange::Velocity;
+    std::unique_ptr<Recorder> recorder_;  // --record's table, from the start of the run; null without it
     std::vector<std::pair<double, double>> branchTrace_;
     InterruptWatch* interrupts_ = nullptr;  // run()'s, while it runs
     bool stopRequested();                   // a signal came (run() then writes its outputs and exits 128 + it)
