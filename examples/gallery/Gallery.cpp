@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,6 +54,7 @@ void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds
     drawParameters(runner);
     drawRunControls(runner);
     drawBranch(runner);
+    drawLivePlots(runner);
     drawDebugSwitches(runner);
     ImGui::Separator();
     ImGui::TextWrapped("Left drag moves a body, right drag pans, the wheel zooms. The keys are in the bar above "
@@ -175,6 +177,47 @@ void Gallery::drawBranch(Runner& runner) {
     ImGui::PlotLines("##branchdistance", logs.data(), static_cast<int>(logs.size()), 0, now, FLT_MAX, FLT_MAX,
                      ImVec2(0.f, 80.f));
     itemRects_.emplace_back("branch distance", lastItemRect());
+}
+
+// Any quantity of any body, plotted live: click a body in the scene, pick the quantity, and "Plot it".
+void Gallery::drawLivePlots(Runner& runner) {
+    ImGui::Separator();
+    const std::vector<std::string>& quantities = RecordSpec::quantities();
+    const std::optional<int> picked = runner.pickedEntity();
+    char text[128];
+    if (picked) std::snprintf(text, sizeof text, "Plot entity %d's", *picked);
+    else std::snprintf(text, sizeof text, "Plot: click a body in the scene first");
+    ImGui::TextUnformatted(text);
+    ImGui::SetNextItemWidth(170.f);
+    if (ImGui::BeginCombo("##quantity", quantities[plotQuantity_].c_str())) {
+        for (std::size_t i = 0; i < quantities.size(); ++i)
+            if (ImGui::Selectable(quantities[i].c_str(), i == plotQuantity_)) plotQuantity_ = i;
+        ImGui::EndCombo();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Plot it") && picked) runner.addLivePlot({*picked, quantities[plotQuantity_]});
+    itemRects_.emplace_back("plot it", lastItemRect());
+    for (std::size_t i = 0; i < runner.livePlots().size(); ++i) {
+        const Runner::LivePlot& plot = runner.livePlots()[i];
+        ImGui::PushID(static_cast<int>(i));
+        const double now = plot.points.empty() ? 0.0 : plot.points.back().second;
+        std::snprintf(text, sizeof text, "%s of %d: %.4g %s", plot.spec.quantity.c_str(), plot.spec.entity, now,
+                      RecordSpec::unit(plot.spec.quantity));
+        ImGui::TextUnformatted(text);
+        ImGui::SameLine();
+        const bool remove = ImGui::SmallButton("x");
+        std::vector<float> values;
+        values.reserve(plot.points.size());
+        for (const auto& [t, v] : plot.points) values.push_back(static_cast<float>(v));
+        ImGui::SetNextItemWidth(-1.f);
+        ImGui::PlotLines("##live", values.data(), static_cast<int>(values.size()), 0, nullptr, FLT_MAX, FLT_MAX,
+                         ImVec2(0.f, 60.f));
+        ImGui::PopID();
+        if (remove) {
+            runner.removeLivePlot(i);
+            break;
+        }
+    }
 }
 
 void Gallery::drawDebugSwitches(Runner& runner) {

@@ -42,11 +42,13 @@ private:
     void drawParameters(Runner& runner);
     void drawRunControls(Runner& runner);
     void drawBranch(Runner& runner);
+    void drawLivePlots(Runner& runner);
     void drawDebugSwitches(Runner& runner);
 
     std::vector<Scene> scenes_;
     std::size_t current_;
     std::unique_ptr<ImGuiSfml> imgui_;
+    std::size_t plotQuantity_ = 0;  // the quantity "Plot it" adds, an index into RecordSpec::quantities()
     std::vector<double> edits_;  // slider values while the user moves them (applied when let go)
     std::vector<std::pair<std::string, sf::FloatRect>> itemRects_;  // this frame's, for itemRect
 };

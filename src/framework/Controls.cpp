@@ -62,6 +62,7 @@ void Controls::startDrag(Simulation& sim, const Vec2& point) {
     World& world = sim.world();
     const std::optional<BodyId> body = bodyAt(world, point, sim.view.pixelsPerMetre);
     if (!body) return;
+    picked_ = body;
     MouseJointDef def;
     def.body = *body;
     def.target = point;
@@ -79,6 +80,7 @@ void Controls::releaseDrag(Simulation& sim) {
 
 void Controls::forgetDrag() {
     drag_.reset();
+    picked_.reset();
     panFrom_.reset();
 }
 

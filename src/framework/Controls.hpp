@@ -57,6 +57,9 @@ public:
     bool statsShown() const { return statsShown_; }
     void setStatsShown(bool shown) { statsShown_ = shown; }
 
+    /// The body the left button last went down on, kept after the drag and through presses elsewhere (a click on
+    /// a panel beside the scene reaches the controls too).
+    std::optional<BodyId> picked() const { return picked_; }
     /// The mouse joint of the body being dragged, if any.
     std::optional<JointId> dragJoint() const { return drag_; }
     /// Lets go of the dragged body; forget (no World call) when the simulation is about to be replaced.
@@ -74,6 +77,7 @@ private:
     bool fit_ = false;
     bool statsShown_ = false;
     std::optional<JointId> drag_;
+    std::optional<BodyId> picked_;
     std::optional<sf::Vector2i> panFrom_;  // pixel where the right button went down / last moved
 };
 

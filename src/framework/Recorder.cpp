@@ -22,14 +22,6 @@ const RigidBody* bodyOf(const Simulation& sim, int id) {
     return nullptr;
 }
 
-const char* unitOf(const std::string& q) {
-    if (q == "x" || q == "y") return "m";
-    if (q == "angle") return "rad";
-    if (q == "angular_velocity") return "rad/s";
-    if (q == "kinetic_energy") return "J";
-    return "m/s";
-}
-
 double valueOf(const RigidBody& rb, const std::string& q) {
     if (q == "x") return rb.position().x();
     if (q == "y") return rb.position().y();
@@ -47,6 +39,11 @@ std::string specText(const RecordSpec& s) { return std::to_string(s.entity) + ":
 
 }  // namespace
 
+double recordValue(const Simulation& sim, const RecordSpec& spec) {
+    const RigidBody* rb = bodyOf(sim, spec.entity);
+    return rb ? valueOf(*rb, spec.quantity) : std::numeric_limits<double>::quiet_NaN();
+}
+
 Recorder::Recorder(std::vector<RecordSpec> specs, const Simulation& sim) : specs_(std::move(specs)) {
     columns_ = {"t"};
     units_ = {"s"};
@@ -60,7 +57,7 @@ Recorder::Recorder(std::vector<RecordSpec> specs, const Simulation& sim) : specs
             throw std::invalid_argument("--record " + specText(s) + ": entity " + std::to_string(s.entity) +
                                         " has no body");
         columns_.push_back(s.quantity + "_" + std::to_string(s.entity));
-        units_.push_back(unitOf(s.quantity));
+        units_.push_back(RecordSpec::unit(s.quantity));
     }
 }
 
@@ -68,10 +65,7 @@ void Recorder::sample(const Simulation& sim) {
     const double halfStep = 0.5 * sim.fixedTimeStep();
     while (!rows_.empty() && rows_.back()[0] > sim.time - halfStep) rows_.pop_back();
     std::vector<double> row{sim.time};
-    for (const RecordSpec& s : specs_) {
-        const RigidBody* rb = bodyOf(sim, s.entity);
-        row.push_back(rb ? valueOf(*rb, s.quantity) : std::numeric_limits<double>::quiet_NaN());
-    }
+    for (const RecordSpec& s : specs_) row.push_back(recordValue(sim, s));
     rows_.push_back(std::move(row));
 }
 

@@ -10,6 +10,9 @@
 
 namespace physim {
 
+/// The spec's quantity now (SI units), or NaN when its entity is gone or has no body.
+double recordValue(const Simulation& sim, const RecordSpec& spec);
+
 class Recorder {
 public:
     /// Checks every spec against the simulation's entities: std::invalid_argument naming the spec for an id no

@@ -43,6 +43,15 @@ const std::vector<std::string>& RecordSpec::quantities() {
     return names;
 }
 
+const char* RecordSpec::unit(const std::string& q) {
+    if (q == "x" || q == "y") return "m";
+    if (q == "angle") return "rad";
+    if (q == "vx" || q == "vy" || q == "speed") return "m/s";
+    if (q == "angular_velocity") return "rad/s";
+    if (q == "kinetic_energy") return "J";
+    return "";
+}
+
 RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
     o.arguments = args;

@@ -2,16 +2,17 @@
 
 #include "AccuracyOptions.hpp"
 #include "BranchChanges.hpp"
-#include "Recorder.hpp"
 #include "GraphsPlacement.hpp"
 #include "OutputFolder.hpp"
 #include "Progress.hpp"
+#include "Recorder.hpp"
 #include "RunRecord.hpp"
 #include "RunnerAccess.hpp"
 #include "Summary.hpp"
 #ifdef PHYSIM_WITH_CUDA
 #include "physim/cuda/ContinuousSolver.hpp"
 #endif
+#include "physim/framework/RigidBody.hpp"
 
 #include "Display.hpp"
 #include "Interrupts.hpp"
@@ -152,6 +153,7 @@ void Runner::restart() {
     if (!viewSetByScene_) fitView();
     timeline_.clear();
     branchTrace_.clear();
+    livePlots_.clear();
     recorder_.reset();
     if (!options_.records.empty()) {  // a bad spec is a usage error (exit 2) naming it
         try {
@@ -177,6 +179,11 @@ void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
     if (recorder_) recorder_->sample(sim);
+    for (LivePlot& plot : livePlots_) {
+        while (!plot.points.empty() && plot.points.back().first > sim.time - 0.5 * sim.fixedTimeStep())
+            plot.points.pop_back();
+        plot.points.emplace_back(sim.time, recordValue(sim, plot.spec));
+    }
     if (!sim.branch()) branchTrace_.clear();
     else if (branchTrace_.empty() || sim.time > branchTrace_.back().first + 0.5 * sim.fixedTimeStep())
         branchTrace_.emplace_back(sim.time, sim.branchDistance());
@@ -186,6 +193,29 @@ void Runner::startBranch(BranchChange change) {
     Simulation& sim = simulation();
     sim.startBranch(sim.snapshot(), branchChangeFor(change));
     branchTrace_.assign(1, {sim.time, sim.branchDistance()});
+}
+
+std::optional<int> Runner::pickedEntity() {
+    const std::optional<BodyId> body = loop_->controls.picked();
+    if (!body || !simulation().world().contains(*body)) return std::nullopt;
+    for (const auto& e : simulation().entities())  // any entity with that body (an Object, or a RigidBody's owner)
+        if (const auto* rb = e->TryGetBehavior<RigidBody>(); rb && rb->attached() && rb->bodyId() == *body)
+            return e->id();
+    return std::nullopt;
+}
+
+void Runner::addLivePlot(const RecordSpec& spec) {
+    const auto& known = RecordSpec::quantities();
+    if (std::find(known.begin(), known.end(), spec.quantity) == known.end())
+        throw std::invalid_argument("physim: addLivePlot: unknown quantity '" + spec.quantity + "'");
+    const Recorder check({spec}, simulation());  // throws for an id no entity has, or one without a body
+    livePlots_.push_back({spec, {{simulation().time, recordValue(simulation(), spec)}}});
+}
+
+void Runner::removeLivePlot(std::size_t index) {
+    if (index >= livePlots_.size())
+        throw std::out_of_range("physim: removeLivePlot: no live plot " + std::to_string(index));
+    livePlots_.erase(livePlots_.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
 void Runner::endBranch() {
@@ -207,6 +237,8 @@ double Runner::scrubTo(double time) {
     const double restored = timeline_.scrubTo(sim, time, [this] { oneStepFrame(false); });
     const double last = restored + 0.5 * sim.fixedTimeStep();
     while (!branchTrace_.empty() && branchTrace_.back().first > last) branchTrace_.pop_back();
+    for (LivePlot& plot : livePlots_)
+        while (!plot.points.empty() && plot.points.back().first > last) plot.points.pop_back();
     if (!sim.branch()) branchTrace_.clear();
     return restored;
 }

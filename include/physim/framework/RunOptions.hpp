@@ -19,6 +19,8 @@ struct RecordSpec {
     int entity = 0;
     std::string quantity;
     static const std::vector<std::string>& quantities();
+    /// The quantity's SI unit ("m", "rad", "m/s", "rad/s", "J"); "" for an unknown one.
+    static const char* unit(const std::string& quantity);
 };
 
 struct RunOptions {

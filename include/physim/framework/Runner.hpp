@@ -103,6 +103,19 @@ public:
     /// Simulation::branchDistance after each fixed step since the branch began, as (t s, distance m), for the
     /// gallery's live plot: it follows a scrub back (later points go) and empties when the branch ends.
     const std::vector<std::pair<double, double>>& branchTrace() const { return branchTrace_; }
+    /// A live plot of one quantity of an entity's body (RecordSpec: x, y, angle, vx, vy, speed, angular_velocity,
+    /// kinetic_energy): its value after each fixed step since it was added, as (t s, value); a scrub back drops
+    /// the later points. Kept until removed or the scene restarts.
+    struct LivePlot {
+        RecordSpec spec;
+        std::vector<std::pair<double, double>> points;
+    };
+    /// The entity whose body the left button last went down on (a click picks it), if it is still there.
+    std::optional<int> pickedEntity();
+    /// Adds a live plot (std::invalid_argument naming the problem: an unknown quantity, no such entity, no body).
+    void addLivePlot(const RecordSpec& spec);
+    void removeLivePlot(std::size_t index);
+    const std::vector<LivePlot>& livePlots() const { return livePlots_; }
     /// Fits the view to the scene at the next frame, as F does.
     void requestFit();
     /// The statistics panel (Tab).
@@ -143,6 +156,7 @@ private:
     void fixedStep();                // the simulation's, and the branch trace's point
     BranchChange branchChange_ = BranchChange::Velocity;
     std::unique_ptr<Recorder> recorder_;  // --record's table, from the start of the run; null without it
+    std::vector<LivePlot> livePlots_;
     std::vector<std::pair<double, double>> branchTrace_;
     InterruptWatch* interrupts_ = nullptr;  // run()'s, while it runs
     bool stopRequested();                   // a signal came (run() then writes its outputs and exits 128 + it)
