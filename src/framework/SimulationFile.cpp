@@ -11,6 +11,7 @@
 #include "physim/framework/Simulation.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <istream>
 #include <memory>
@@ -41,6 +42,12 @@ void put(std::string& out, T value) {
 void putString(std::string& out, const std::string& s) {
     put(out, static_cast<std::uint64_t>(s.size()));
     out += s;
+}
+
+std::string hertz(double hz) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g Hz", hz);
+    return text;
 }
 
 [[noreturn]] void refuse(const std::string& why) { throw std::runtime_error("physim: snapshot file: " + why); }
@@ -166,8 +173,8 @@ void Simulation::readSnapshot(std::istream& in) {
     if (b.left() != 0) refuse(std::to_string(b.left()) + " bytes follow the simulation's state");
 
     if (rate != physicsRate())
-        throw std::logic_error("physim: snapshot file: written at a physics rate of " + std::to_string(rate) +
-                               " Hz, this run steps at " + std::to_string(physicsRate()) + " Hz");
+        throw std::logic_error("physim: snapshot file: written at a physics rate of " + hertz(rate) +
+                               ", this run steps at " + hertz(physicsRate()));
     std::vector<int> ids;
     for (const std::unique_ptr<Entity>& e : entities_) ids.push_back(e->id());
     if (ids != savedIds)

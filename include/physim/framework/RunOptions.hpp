@@ -32,6 +32,10 @@ struct RunOptions {
     std::optional<double> precision;        ///< sampled detection's spacing, fraction of the step, (0, 1]
     /// --replay FILE: run the run that FILE (a run.json) records, and say whether it ends in the same state.
     std::optional<std::string> replay;
+    /// --snapshot-every N (headless, with --out): a snapshot file every N physics steps, into DIR/snapshots.
+    std::optional<int> snapshotEvery;
+    /// --from FILE: the run starts from a snapshot file (Simulation::readSnapshot), after onCreate built the scene.
+    std::optional<std::string> from;
     /// The arguments as given (after the program's name), which --out's run.json records; and the program's name,
     /// which runMain sets.
     std::vector<std::string> arguments;
