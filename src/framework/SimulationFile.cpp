@@ -2,10 +2,11 @@
 //   8 bytes   magic "PHYSIMSM"
 //   4 bytes   format version (Simulation::kSnapshotFormatVersion)
 //   8 bytes   body length, bytes
-//   8 bytes   body checksum (64-bit FNV-1a)
-//   body      time, physics rate (f64); results (count; each: name, measured, has predicted, predicted, unit);
-//             entity ids (count; i32 each); the subclass's writeState bytes, the world's snapshot file and the
-//             branch's (each a length and its bytes; an empty branch: none)
+//   8 bytes   the body's first part's length, bytes
+//   8 bytes   that part's checksum (64-bit FNV-1a)
+//   body      first part: time, physics rate (f64); results (count; each: name, measured, has predicted, predicted,
+//             unit); entity ids (count; i32 each); the subclass's writeState bytes; the lengths of the world's
+//             snapshot file and the branch's (0: no branch). Then those files, which carry their own checksums.
 // Strings are a u64 length and their bytes. A read takes the whole file and checks it before changing anything.
 
 #include "physim/framework/Simulation.hpp"
@@ -24,12 +25,12 @@ namespace physim {
 namespace {
 
 constexpr char kMagic[8] = {'P', 'H', 'Y', 'S', 'I', 'M', 'S', 'M'};
-constexpr std::size_t kHeaderBytes = 8 + 4 + 8 + 8;
+constexpr std::size_t kHeaderBytes = 8 + 4 + 8 + 8 + 8;
 
-std::uint64_t fnv1a(const std::string& bytes) {
+std::uint64_t fnv1a(const char* bytes, std::size_t n) {
     std::uint64_t h = 1469598103934665603ull;
-    for (const char c : bytes) {
-        h ^= static_cast<unsigned char>(c);
+    for (std::size_t i = 0; i < n; ++i) {
+        h ^= static_cast<unsigned char>(bytes[i]);
         h *= 1099511628211ull;
     }
     return h;
@@ -109,15 +110,18 @@ void Simulation::writeSnapshot(std::ostream& out) const {
     put(body, static_cast<std::uint64_t>(entities_.size()));
     for (const std::unique_ptr<Entity>& e : entities_) put(body, static_cast<std::int32_t>(e->id()));
     putString(body, own.bytes());
-    putString(body, world.str());
-    putString(body, branch.str());
+    const std::string worldBytes = world.str(), branchBytes = branch.str();
+    put(body, static_cast<std::uint64_t>(worldBytes.size()));
+    put(body, static_cast<std::uint64_t>(branchBytes.size()));
 
     std::string header(kMagic, sizeof kMagic);
     put(header, kSnapshotFormatVersion);
+    put(header, static_cast<std::uint64_t>(body.size() + worldBytes.size() + branchBytes.size()));
     put(header, static_cast<std::uint64_t>(body.size()));
-    put(header, fnv1a(body));
-    out.write(header.data(), static_cast<std::streamsize>(header.size()));
-    out.write(body.data(), static_cast<std::streamsize>(body.size()));
+    put(header, fnv1a(body.data(), body.size()));
+    const std::string* parts[] = {&header, &body, &worldBytes, &branchBytes};
+    for (const std::string* part : parts)
+        out.write(part->data(), static_cast<std::streamsize>(part->size()));
     out.flush();
     if (!out) throw std::runtime_error("physim: Simulation::writeSnapshot: the stream failed");
 }
@@ -131,10 +135,11 @@ void Simulation::readSnapshot(std::istream& in) {
     if (got < sizeof header)
         refuse("truncated: its header is " + std::to_string(got) + " of " + std::to_string(sizeof header) + " bytes");
     std::uint32_t version = 0;
-    std::uint64_t length = 0, checksum = 0;
+    std::uint64_t length = 0, firstLength = 0, checksum = 0;
     std::memcpy(&version, header + 8, 4);
     std::memcpy(&length, header + 12, 8);
-    std::memcpy(&checksum, header + 20, 8);
+    std::memcpy(&firstLength, header + 20, 8);
+    std::memcpy(&checksum, header + 28, 8);
     if (version != kSnapshotFormatVersion)
         refuse("simulation format version " + std::to_string(version) + ", this build reads version " +
                std::to_string(kSnapshotFormatVersion));
@@ -150,9 +155,11 @@ void Simulation::readSnapshot(std::istream& in) {
             refuse("truncated: its body is " + std::to_string(before + read) + " of " + std::to_string(length) +
                    " bytes");
     }
-    if (fnv1a(body) != checksum) refuse("corrupt: its body's checksum differs from its header's");
+    if (firstLength > length || fnv1a(body.data(), static_cast<std::size_t>(firstLength)) != checksum)
+        refuse("corrupt: its simulation state's checksum differs from its header's");
 
-    Body b(body);
+    const std::string first = body.substr(0, static_cast<std::size_t>(firstLength));
+    Body b(first);
     const auto savedTime = b.take<double>();
     const auto rate = b.take<double>();
     std::vector<Result> results(static_cast<std::size_t>(std::min<std::uint64_t>(b.take<std::uint64_t>(), b.left())));
@@ -167,10 +174,15 @@ void Simulation::readSnapshot(std::istream& in) {
     std::vector<int> savedIds(static_cast<std::size_t>(std::min<std::uint64_t>(b.take<std::uint64_t>(), b.left())));
     for (int& id : savedIds) id = b.take<std::int32_t>();
     StateReader own(b.takeString());
-    const WorldSnapshot world = readWorld(b.takeString());
-    const std::string branchBytes = b.takeString();
-    const WorldSnapshot branch = branchBytes.empty() ? WorldSnapshot{} : readWorld(branchBytes);
+    const auto worldLength = b.take<std::uint64_t>(), branchLength = b.take<std::uint64_t>();
     if (b.left() != 0) refuse(std::to_string(b.left()) + " bytes follow the simulation's state");
+    if (worldLength > length - firstLength || branchLength != length - firstLength - worldLength)
+        refuse("its worlds' lengths do not add up to its body's");
+    const WorldSnapshot world = readWorld(body.substr(static_cast<std::size_t>(firstLength),
+                                                      static_cast<std::size_t>(worldLength)));
+    const WorldSnapshot branch =
+        branchLength == 0 ? WorldSnapshot{}
+                          : readWorld(body.substr(static_cast<std::size_t>(firstLength + worldLength)));
 
     if (rate != physicsRate())
         throw std::logic_error("physim: snapshot file: written at a physics rate of " + hertz(rate) +

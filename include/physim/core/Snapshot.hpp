@@ -12,7 +12,7 @@
 //   8 bytes   layout fingerprint: the sizes of the build's internal records; a file from a build whose records
 //             differ is refused (as is one from another format version)
 //   8 bytes   payload length, bytes
-//   8 bytes   payload checksum (64-bit FNV-1a)
+//   8 bytes   payload checksum (64-bit FNV-1a's step over 8-byte words in four lanes, SnapshotFile.cpp)
 //   payload   the state, record by record, member by member (never an address), then its stateHash()
 // What cannot go in a file stays out: force callbacks, the pair filter and the pre-solve hook (std::function) and
 // the continuous solver. A snapshot read from a file restores into a world keeping that world's own (or none): a
