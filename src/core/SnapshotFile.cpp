@@ -234,7 +234,6 @@ PHYSIM_FIELDS(BodyId, r.index, r.generation);
 PHYSIM_FIELDS(ShapeId, r.index, r.generation);
 PHYSIM_FIELDS(JointId, r.index, r.generation);
 PHYSIM_FIELDS(Circle, r.center, r.radius);
-PHYSIM_FIELDS(Polygon, r.vertices, r.normals, r.count, r.radius);
 PHYSIM_FIELDS(Segment, r.point1, r.point2);
 PHYSIM_FIELDS(Capsule, r.center1, r.center2, r.radius);
 PHYSIM_FIELDS(ChainSegment, r.ghost1, r.segment, r.ghost2);
@@ -308,6 +307,25 @@ PHYSIM_FIELDS(Effects, r.gravitation, r.springs, r.drag);
 PHYSIM_FIELDS(ContinuousStage, r.impacts_);
 
 #undef PHYSIM_FIELDS
+
+// A polygon's vertices and normals up to its count: the rest were never set (Eigen leaves them as they were) and are
+// read back as zeros.
+template <>
+struct StateFields<Polygon> {
+    static void each(Writer& io, const Polygon& r) {
+        io(r.count, r.radius);
+        for (int i = 0; i < r.count; ++i) io(r.vertices[static_cast<std::size_t>(i)], r.normals[static_cast<std::size_t>(i)]);
+    }
+    static void each(Reader& io, Polygon& r) {
+        io(r.count, r.radius);
+        if (r.count < 0 || r.count > Polygon::maxVertices)
+            throw std::runtime_error("the payload holds a polygon of " + std::to_string(r.count) + " vertices");
+        for (std::size_t i = 0; i < r.vertices.size(); ++i) {
+            r.vertices[i] = r.normals[i] = Vec2::Zero();
+            if (i < static_cast<std::size_t>(r.count)) io(r.vertices[i], r.normals[i]);
+        }
+    }
+};
 
 template <>
 struct StateFields<DragEffect> {
