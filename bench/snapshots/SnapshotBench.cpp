@@ -1,10 +1,10 @@
 // snapshot_bench: what time travel costs. In one of peer_bench's scenes (default large_pyramid; physim at defaults,
 // sleep off, one thread), after --steps steps, times a step, World::snapshot and World::restore in turn (the least of
 // --repeats each), and the memory a snapshot holds; a snapshot's file (WorldSnapshot::write into memory, and
-// WorldSnapshot::read back: the format's cost, without the disk's) and its size; then the window's timeline (Timeline at its default settings):
-// blocks of 50 fixed steps of a Simulation holding the scene, with the timeline recording after each and without,
-// alternating, the least block of each. Prints a table; with --json writes [{"scene": s, "step_ms": x,
-// "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m, "file_mb": f, "write_ms": w, "read_ms": v,
+// WorldSnapshot::read back: the format's cost, without the disk's) and its size; then the window's timeline (Timeline
+// at its default settings): blocks of 50 fixed steps of a Simulation holding the scene, with the timeline recording
+// after each and without, alternating, the least block of each. Prints a table; with --json writes [{"scene": s,
+// "step_ms": x, "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m, "file_mb": f, "write_ms": w, "read_ms": v,
 // "timeline_step_ratio": r}].
 
 #include "../peers/PhysimScene.hpp"

@@ -18,7 +18,7 @@
 #include "WorldImpl.hpp"
 #include "physim/core/World.hpp"
 
-static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the snapshot format is little-endian, as this build's numbers");
+static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "the snapshot format is little-endian, as this build is");
 
 namespace physim {
 
@@ -168,8 +168,8 @@ private:
         std::uint64_t c = 0;
         raw(&c, sizeof c);
         if (c > left() / least)
-            throw std::runtime_error("the payload holds an array of " + std::to_string(c) + " elements, more than its " +
-                                     std::to_string(left()) + " bytes left");
+            throw std::runtime_error("the payload holds an array of " + std::to_string(c) +
+                                     " elements, more than its " + std::to_string(left()) + " bytes left");
         return static_cast<std::size_t>(c);
     }
     template <class V, std::size_t... I>
@@ -314,7 +314,7 @@ template <>
 struct StateFields<Polygon> {
     static void each(Writer& io, const Polygon& r) {
         io(r.count, r.radius);
-        for (int i = 0; i < r.count; ++i) io(r.vertices[static_cast<std::size_t>(i)], r.normals[static_cast<std::size_t>(i)]);
+        for (std::size_t i = 0; i < static_cast<std::size_t>(r.count); ++i) io(r.vertices[i], r.normals[i]);
     }
     static void each(Reader& io, Polygon& r) {
         io(r.count, r.radius);
@@ -474,7 +474,8 @@ WorldSnapshot WorldSnapshot::read(std::istream& in) {
     }
     const auto* begin = reinterpret_cast<const unsigned char*>(payload.data());
     const std::uint64_t sum = payloadChecksum(begin, payload.size());
-    if (sum != checksum) refuse("corrupt: its payload's checksum is " + hex(sum) + ", its header says " + hex(checksum));
+    if (sum != checksum)
+        refuse("corrupt: its payload's checksum is " + hex(sum) + ", its header says " + hex(checksum));
 
     auto state = std::make_shared<WorldState>();
     std::uint64_t recordedHash = 0;

@@ -17,7 +17,8 @@
 // What cannot go in a file stays out: force callbacks, the pair filter and the pre-solve hook (std::function) and
 // the continuous solver. A snapshot read from a file restores into a world keeping that world's own (or none): a
 // program that set them up when it built its scene sets them up again, then restores. Nor does a file hold the
-// step's scratch or its profile, which every step rebuilds.
+// step's scratch or its profile, which every step rebuilds. The checksum guards against damage (a byte changed, a
+// file cut short), not against a file made to pass it: read files you or your programs wrote.
 
 #include <cstddef>
 #include <cstdint>
