@@ -1,9 +1,11 @@
 // snapshot_bench: what time travel costs. In one of peer_bench's scenes (default large_pyramid; physim at defaults,
 // sleep off, one thread), after --steps steps, times a step, World::snapshot and World::restore in turn (the least of
-// --repeats each), and the memory a snapshot holds; then the window's timeline (Timeline at its default settings):
-// blocks of 50 fixed steps of a Simulation holding the scene, with the timeline recording after each and without,
-// alternating, the least block of each. Prints a table; with --json writes [{"scene": s, "step_ms": x,
-// "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m, "timeline_step_ratio": r}].
+// --repeats each), and the memory a snapshot holds; a snapshot's file (WorldSnapshot::write into memory, and
+// WorldSnapshot::read back: the format's cost, without the disk's) and its size; then the window's timeline (Timeline
+// at its default settings): blocks of 50 fixed steps of a Simulation holding the scene, with the timeline recording
+// after each and without, alternating, the least block of each. Prints a table; with --json writes [{"scene": s,
+// "step_ms": x, "snapshot_ms": y, "restore_ms": z, "snapshot_mb": m, "file_mb": f, "write_ms": w, "read_ms": v,
+// "timeline_step_ratio": r}].
 
 #include "../peers/PhysimScene.hpp"
 #include "../peers/Scenes.hpp"
@@ -18,6 +20,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -90,6 +93,22 @@ int main(int argc, char** argv) {
         take = std::min(take, milliseconds([&] { snapshot = world.snapshot(); }));
         put = std::min(put, milliseconds([&] { world.restore(snapshot); }));
     }
+    // The file: written to memory and read back (read checks the whole payload before it returns).
+    double write = 1e300, read = 1e300;
+    std::string file;
+    for (int r = 0; r < o.repeats; ++r) {
+        std::ostringstream out(std::ios::binary);
+        write = std::min(write, milliseconds([&] { snapshot.write(out); }));
+        file = out.str();
+        std::istringstream in(file, std::ios::binary);
+        physim::WorldSnapshot back;
+        read = std::min(read, milliseconds([&] { back = physim::WorldSnapshot::read(in); }));
+        if (back.stateHash() != snapshot.stateHash()) {
+            std::cerr << "snapshot_bench: the file read back differs\n";
+            return 1;
+        }
+    }
+    const double fileMb = static_cast<double>(file.size()) / 1048576.0;
     // The timeline's share: the same scene in a Simulation (the runner's frame: a fixed step, then the record).
     physim::Simulation sim;
     sim.setPhysicsRate(1.0 / peers::kTimeStep);
@@ -120,12 +139,16 @@ int main(int argc, char** argv) {
     std::printf("|---|---|---|---|---|---|---|---|\n");
     std::printf("| %s | %.3f | %.3f | %.3f | %.2f | %.3f | %.3f | %.3f |\n", o.scene.c_str(), step, take, put, mb,
                 take / step, put / step, ratio);
+    std::printf("| scene | file MB | write ms | read ms | write / step | read / step |\n|---|---|---|---|---|---|\n");
+    std::printf("| %s | %.2f | %.3f | %.3f | %.3f | %.3f |\n", o.scene.c_str(), fileMb, write, read, write / step,
+                read / step);
     std::printf("timeline: %zu snapshots, every %d steps, %.1f MB\n", timeline.size(), timeline.interval(),
                 timeline.bytes() / 1048576.0);
     if (!o.json.empty()) {
         std::ofstream out(o.json);
         out << "[{\"scene\": \"" << o.scene << "\", \"step_ms\": " << step << ", \"snapshot_ms\": " << take
-            << ", \"restore_ms\": " << put << ", \"snapshot_mb\": " << mb << ", \"timeline_step_ratio\": " << ratio
+            << ", \"restore_ms\": " << put << ", \"snapshot_mb\": " << mb << ", \"file_mb\": " << fileMb
+            << ", \"write_ms\": " << write << ", \"read_ms\": " << read << ", \"timeline_step_ratio\": " << ratio
             << "}]\n";
         if (!out) {
             std::cerr << "snapshot_bench: cannot write " << o.json << "\n";

@@ -94,6 +94,21 @@ public:
         const State& s = std::any_cast<const State&>(state);
         releaseTime_ = s.releaseTime, lastT_ = s.lastT, first_ = s.first, fitted_ = s.fitted, samples_ = s.samples;
     }
+    // The same members in a snapshot file (--snapshot-every, --from).
+    void writeState(physim::StateWriter& out) const override {
+        for (const double v : {releaseTime_, lastT_, first_}) out.putDouble(v);
+        out.putBool(fitted_);
+        std::vector<double> samples;
+        for (const Sample& s : samples_) samples.insert(samples.end(), {s.t, s.lnD});
+        out.putDoubles(samples);
+    }
+    void readState(physim::StateReader& in) override {
+        releaseTime_ = in.getDouble(), lastT_ = in.getDouble(), first_ = in.getDouble();
+        fitted_ = in.getBool();
+        const std::vector<double> samples = in.getDoubles();
+        samples_.clear();
+        for (std::size_t i = 0; i + 1 < samples.size(); i += 2) samples_.push_back({samples[i], samples[i + 1]});
+    }
 
 private:
     struct Sample {

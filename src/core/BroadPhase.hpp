@@ -79,6 +79,7 @@ public:
     }
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     DynamicTree& treeOf(std::int32_t key) { return tree_[key & 1]; }
     const DynamicTree& treeOf(std::int32_t key) const { return tree_[key & 1]; }
     void markMoved(std::int32_t key);

@@ -38,6 +38,7 @@ public:
     const std::shared_ptr<ContinuousSolver>& solver() const { return solver_; }
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     struct Candidate {
         std::uint32_t awakeIndex = 0;
         Sweep sweep;

@@ -106,6 +106,7 @@ public:
     static constexpr std::size_t kQueryStack = 128;
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     friend struct DynamicTreeTestAccess;  // tests break invariants on purpose to check validate()
 
     // The node ids a query or ray cast has yet to visit: `entries` of them, in place for trees of height below

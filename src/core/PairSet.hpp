@@ -40,6 +40,7 @@ public:
     }
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
     static constexpr std::uint64_t kTombstone = ~std::uint64_t{0} - 1;  // body slots never reach 2^32 - 1
 

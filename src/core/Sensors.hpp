@@ -42,6 +42,7 @@ public:
     }
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     struct Sensor {
         std::uint32_t shape = 0;
         std::vector<Visitor> overlaps;  // sorted by slot

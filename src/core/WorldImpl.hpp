@@ -14,6 +14,7 @@
 //   Sensors.cpp        sensors' overlaps and events
 //   WorldEffects.cpp   the public API of the effects
 //   WorldSnapshots.cpp snapshots, restores and the state hash: copies of WorldState
+//   SnapshotFile.cpp   snapshots to files and back: WorldState member by member
 //   WorldFilters.cpp   collision filters and the contact hooks (pair filter, pre-solve): their API and step work
 //   effects/           the force effects (effects/Effects.hpp), each run only while the world uses it
 
@@ -125,6 +126,9 @@ struct WorldState {
     // (ContactBlockMaterial); a world that never uses them runs the loops it always has.
     bool surfaceMaterials = false;
 };
+
+/// World::stateHash's hash of a state (WorldSnapshots.cpp).
+std::uint64_t stateHashOf(const WorldState& s);
 
 struct WorldImpl : WorldState {
     Executor executor;  // the threads: the machine's, not the state's

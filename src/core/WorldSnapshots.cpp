@@ -1,5 +1,6 @@
 // The public API of time travel (World.hpp, "time travel"; Snapshot.hpp): a snapshot is a copy of the world's
-// state (WorldState, everything but the threads), shared and never changed; a restore copies it back.
+// state (WorldState, everything but the threads), shared and never changed; a restore copies it back. Files of
+// snapshots: SnapshotFile.cpp.
 
 #include <cstring>
 #include <stdexcept>
@@ -35,7 +36,9 @@ struct Fnv {
     }
 };
 
-std::uint64_t hashOf(const WorldState& s) {
+}  // namespace
+
+std::uint64_t stateHashOf(const WorldState& s) {
     Fnv f;
     f.mix(s.stepCount);
     for (const BodyData& b : s.bodies) {
@@ -45,8 +48,6 @@ std::uint64_t hashOf(const WorldState& s) {
     }
     return f.h;
 }
-
-}  // namespace
 
 std::uint64_t WorldSnapshot::stepCount() const { return state_ ? state_->stepCount : 0; }
 std::uint64_t WorldSnapshot::stateHash() const { return stateHash_; }
@@ -62,7 +63,7 @@ WorldSnapshot World::snapshot() const {
     requireBetweenSteps(w, "snapshot");
     WorldSnapshot s;
     s.state_ = std::make_shared<const WorldState>(static_cast<const WorldState&>(w));
-    s.stateHash_ = hashOf(w);
+    s.stateHash_ = stateHashOf(w);
     return s;
 }
 
@@ -71,11 +72,24 @@ void World::restore(const WorldSnapshot& snapshot) {
     requireBetweenSteps(w, "restore");
     if (snapshot.empty()) throw std::invalid_argument("physim: World::restore: the snapshot is empty");
     const int threads = w.settings.threads;
-    static_cast<WorldState&>(w) = *snapshot.state_;
+    if (snapshot.fromFile()) {
+        // A file holds no callbacks, hooks or continuous solver (Snapshot.hpp): the world keeps its own.
+        ForceCallbacks callbacks = std::move(w.effects.callbacks);
+        PairFilterCallback pairFilter = std::move(w.pairFilter);
+        PreSolveCallback preSolve = std::move(w.preSolve);
+        std::shared_ptr<ContinuousSolver> solver = w.continuous.solver();
+        static_cast<WorldState&>(w) = *snapshot.state_;
+        w.effects.callbacks = std::move(callbacks);
+        w.pairFilter = std::move(pairFilter);
+        w.preSolve = std::move(preSolve);
+        w.continuous.setSolver(std::move(solver));
+    } else {
+        static_cast<WorldState&>(w) = *snapshot.state_;
+    }
     w.settings.threads = threads;
     w.solver.layoutChanged();  // the rows' groups depend on the thread count
 }
 
-std::uint64_t World::stateHash() const { return hashOf(*impl_); }
+std::uint64_t World::stateHash() const { return stateHashOf(*impl_); }
 
 }  // namespace physim

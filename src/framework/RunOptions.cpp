@@ -112,6 +112,12 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
             const std::string& text = value();
             if (text.empty()) throw UsageError("--replay needs a run.json file, got ''");
             o.replay = text;
+        } else if (a == "--snapshot-every") {
+            o.snapshotEvery = parseCountOption(a, value(), 1, 1000000000);
+        } else if (a == "--from") {
+            const std::string& text = value();
+            if (text.empty()) throw UsageError("--from needs a snapshot file, got ''");
+            o.from = text;
         } else if (a == "--max-steps-per-frame") {
             o.maxStepsPerFrame = parseCountOption(a, value(), 1, 1000);
         } else if (a == "--size") {
@@ -133,6 +139,9 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                 throw UsageError("--replay runs what the file records: " + name + " cannot join it");
         }
     }
+    if (o.snapshotEvery && !o.headless)
+        throw UsageError("--snapshot-every is for --headless runs (a window keeps its own timeline)");
+    if (o.snapshotEvery && !o.outDir) throw UsageError("--snapshot-every writes into --out DIR: give --out");
     if (o.headless && o.screenshot)
         throw UsageError("--screenshot needs a window: a --headless run draws nothing to save");
     return o;
@@ -159,6 +168,11 @@ std::string usage(std::string_view program, std::string_view title) {
        << "                           x, y, angle, vx, vy, speed, angular_velocity, kinetic_energy (SI units)\n"
        << "  --replay RUN.json        run again the run that RUN.json records (written by --out) and say whether\n"
        << "                           it ends in the same state (exit 0) or not (exit 1)\n"
+       << "  --snapshot-every N       headless, with --out: every N physics steps, write a snapshot of the run to\n"
+       << "                           DIR/snapshots/step-<steps>.psnap (<steps>: the world's step count, 9 digits)\n"
+       << "  --from FILE.psnap        start from a snapshot file (--snapshot-every's, or an interrupted run's) once\n"
+       << "                           the scene is built: the same scene, parameters and --hz (the file's world\n"
+       << "                           keeps its accuracy settings); --seconds then counts from the snapshot's time\n"
        << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
        << accuracyUsage()
@@ -169,8 +183,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  F fit the view, Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres,\n"
        << "  sleep, sensors, rays), left drag moves a body, right drag pans, the wheel zooms about the cursor,\n"
        << "  Esc quits; the simulation may add its own keys.\n"
-       << "Ctrl-C (SIGINT) or SIGTERM stops the run at the end of its step and writes --out; a second one stops\n"
-       << "  it at once.\n"
+       << "Ctrl-C (SIGINT) or SIGTERM stops the run at the end of its step and writes --out, with a snapshot that\n"
+       << "  --from resumes; a second one stops it at once.\n"
        << "exit codes: 0 success, 1 error while running, 2 bad arguments, 130 stopped by SIGINT, 143 by SIGTERM.\n";
     return os.str();
 }

@@ -130,6 +130,7 @@ void Runner::restart() {
         for (const auto& [name, value] : options_.parameters)
             if (sim.parameters.contains(name)) sim.parameters.set(name, value);
     }
+    const bool sceneSwitched = factoryChanged_;  // the gallery's new scene: --from's file is another scene's
     factoryChanged_ = false;
     if (continuousSolver_) sim.world().setContinuousSolver(continuousSolver_);
     sim.graphsManager.setLive(!options_.headless);
@@ -145,6 +146,8 @@ void Runner::restart() {
     applyAccuracyOptions(options_, sim);
     accuracyApplied_ = sim.entities().size();
     if (keptDrawing) sim.debugDraw = *keptDrawing;
+    // The file's world replaces onCreate's, with the settings and detection modes it was run with.
+    if (options_.from && !sceneSwitched) resumeFrom(*options_.from);
     sim.start = true;
     loop_->accumulator = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
     loop_->stepTimes.clear();
@@ -164,6 +167,32 @@ void Runner::restart() {
         recorder_->sample(sim);
     }
     if (recording_) timeline_.record(sim);
+}
+
+void Runner::resumeFrom(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) throw UsageError("--from: cannot open " + file);
+    try {
+        simulation().readSnapshot(in);
+    } catch (const std::exception& e) {  // a bad file (runtime_error) or another scene's (logic_error)
+        throw UsageError("--from " + file + ": " + e.what());
+    }
+}
+
+std::string Runner::writeSnapshotFile() const {
+    if (!simulation_ || !options_.outDir) throw std::logic_error("physim: a snapshot file needs a run and --out");
+    const std::filesystem::path folder = std::filesystem::path(*options_.outDir) / "snapshots";
+    std::filesystem::create_directories(folder);
+    char name[64];
+    std::snprintf(name, sizeof name, "step-%09llu.psnap",
+                  static_cast<unsigned long long>(simulation_->world().stepCount()));
+    const std::filesystem::path path = folder / name, partial = folder / (std::string(name) + ".part");
+    {
+        std::ofstream out(partial, std::ios::binary);
+        simulation_->writeSnapshot(out);  // throws if the stream fails
+    }
+    std::filesystem::rename(partial, path);  // a reader never sees half a file
+    return path.string();
 }
 
 void Runner::oneStepFrame(bool record) {
@@ -373,9 +402,11 @@ int Runner::run() {
         if (!options_.quiet) std::cout << writtenLine(*options_.outDir, written) << std::endl;
     }
     if (const int number = interrupts.signal()) {
+        const std::string snapshot = options_.outDir ? writeSnapshotFile() : std::string();
         std::cerr << "physim: stopped by " << (number == SIGINT ? "SIGINT" : "SIGTERM") << " at t = " << simulation().time
                   << " s" << (options_.outDir ? ", after writing what was recorded to " + *options_.outDir : "")
-                  << "; exit status " << interruptedStatus(number) << std::endl;
+                  << (snapshot.empty() ? "" : " and a snapshot that --from resumes, " + snapshot) << "; exit status "
+                  << interruptedStatus(number) << std::endl;
         return interruptedStatus(number);
     }
     return code;
@@ -389,9 +420,11 @@ int Runner::runHeadless() {
     const double dt = simulation().fixedTimeStep();
     const auto frames = static_cast<long long>(std::ceil(seconds / dt - 1e-9));
     Progress progress(seconds, !options_.quiet);
+    const std::uint64_t every = options_.outDir && options_.snapshotEvery ? *options_.snapshotEvery : 0;
     for (long long i = 0; i < frames && !quit_ && !stopRequested(); ++i) {
         frame(simulation().fixedTimeStep(), nullptr);
         progress.update(simulation().time, i + 1);
+        if (every > 0 && simulation().world().stepCount() % every == 0) writeSnapshotFile();
     }
     progress.finish();
     return 0;
@@ -479,11 +512,16 @@ int replayRun(const std::string& program, const std::string& path, bool quiet, c
         std::cerr << program << ": " << e.what() << "\n";
         return 2;
     }
+    if (options.from) {
+        std::cerr << program << ": " << path << " records a run started --from a snapshot: --replay cannot rerun it\n";
+        return 2;
+    }
     options.program = program;
     options.headless = true;
     options.quiet = quiet;
     options.outDir.reset();
     options.screenshot.reset();
+    options.snapshotEvery.reset();
     options.seconds = static_cast<double>(recorded.steps) * recorded.timeStep;
     try {
         Runner runner(factory, options);
@@ -549,7 +587,7 @@ int runMain(int argc, const char* const* argv, const SimulationFactory& factory,
         Runner runner(factory, options);
         if (setup) setup(runner);
         return runner.run();
-    } catch (const UsageError& e) {  // found once the scene exists (--record's ids)
+    } catch (const UsageError& e) {  // found once the scene exists: --record's ids, --from's file
         std::cerr << program << ": " << e.what() << "\n";
         return 2;
     } catch (const std::exception& e) {

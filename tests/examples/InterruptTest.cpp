@@ -1,6 +1,6 @@
 // Interrupting a headless run as a user would (Ctrl-C sends SIGINT; a service manager SIGTERM): the run stops at the
 // end of its current step, writes what it recorded to --out, says so, and exits with 128 + the signal; a second
-// signal ends it at once. The program: gas, asked for 3000 s (minutes of work), so only the signal can end it early.
+// signal ends it at once; the snapshot it writes (and names) resumes with --from. The program: gas, asked for 3000 s (minutes of work), so only the signal can end it early.
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -113,6 +114,19 @@ void expectStopsAndWrites(int signal, int status, const std::string& name) {
     EXPECT_GT(s["time"].get<double>(), 0.0);
     EXPECT_LT(s["time"].get<double>(), 3000.0);
     EXPECT_TRUE(fs::exists(out / "graph_0.csv"));
+    // The snapshot the line names, which a run --from resumes at the time it stopped.
+    const std::string named = "a snapshot that --from resumes, ";
+    const std::size_t at = log.find(named);
+    ASSERT_NE(at, std::string::npos) << log;
+    const std::string snapshot = log.substr(at + named.size(), log.find(';', at) - at - named.size());
+    EXPECT_TRUE(fs::exists(snapshot)) << log;
+    const fs::path resumed = out / "resumed";
+    const std::string command = std::string(PHYSIM_GAS) + " --headless --quiet --seconds 0.25 --from " + snapshot +
+                                " --out " + resumed.string() + " > /dev/null 2>&1";
+    EXPECT_EQ(std::system(command.c_str()), 0) << command;
+    std::ifstream after(resumed / "summary.json");
+    ASSERT_TRUE(after) << command;
+    EXPECT_NEAR(nlohmann::json::parse(after)["time"].get<double>(), s["time"].get<double>() + 0.25, 1e-9);
     fs::remove_all(out);
     fs::remove(c.log);
 }

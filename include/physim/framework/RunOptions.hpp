@@ -46,6 +46,10 @@ struct RunOptions {
     /// --record ENTITY:QUANTITY, repeatable, in order: series written to --out (records.csv, and a TTree in
     /// graphs.root).
     std::vector<RecordSpec> records;
+    /// --snapshot-every N (headless, with --out): a snapshot file every N physics steps, into DIR/snapshots.
+    std::optional<int> snapshotEvery;
+    /// --from FILE: the run starts from a snapshot file (Simulation::readSnapshot), after onCreate built the scene.
+    std::optional<std::string> from;
     /// The arguments as given (after the program's name), which --out's run.json records; and the program's name,
     /// which runMain sets.
     std::vector<std::string> arguments;

@@ -138,6 +138,10 @@ private:
 
     int runHeadless();
     int runWindow();
+    /// --from: the snapshot file read into the new simulation; a file that cannot be resumed throws UsageError.
+    void resumeFrom(const std::string& file);
+    /// A snapshot of the simulation now into --out's snapshots folder, named for the step count. Returns its path.
+    std::string writeSnapshotFile() const;
     /// The bar across the top (simulated time, physics rate, frames per second, time scale, pause, the
     /// catch-up warning, the keys) and, on demand, the statistics. Returns the bar's height (px).
     float drawOverlay(sf::RenderWindow& window);

@@ -6,11 +6,14 @@
 #include "physim/framework/DebugDraw.hpp"
 #include "physim/framework/Entity.hpp"
 #include "physim/framework/Parameters.hpp"
+#include "physim/framework/StateStream.hpp"
 #include "physim/framework/View.hpp"
 #include "physim/graphs/GraphsManager.hpp"
 
 #include <any>
+#include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <memory>
 #include <optional>
 #include <string>
@@ -149,6 +152,27 @@ public:
     /// them here, and restoreState puts them back. Members that only measure may stay out: they measure again.
     virtual std::any saveState() const { return {}; }
     virtual void restoreState(const std::any& /*state*/) {}
+
+    /// Snapshot files (docs/guide.md, "Going back in time"): the simulation now, to a stream opened in binary mode.
+    /// It holds the world's snapshot file (WorldSnapshot::write) and the branch's if there is one, `time`, the
+    /// results, the physics rate, the entities' ids and what writeState writes; not the graphs' points (a run that
+    /// reads it plots from the time it resumes at), nor callbacks and hooks (the reading world keeps its own, which
+    /// its onCreate set up). Between fixed steps (std::logic_error inside one); std::runtime_error if the stream
+    /// fails.
+    void writeSnapshot(std::ostream& out) const;
+    /// Reads a file writeSnapshot wrote and puts the simulation back there, as restore does (the graphs keep their
+    /// points): fixed steps from there repeat what followed bit for bit. Call it after onCreate built the same
+    /// scene. The whole file is checked first: a wrong magic, another format version, a truncated or corrupt file, or
+    /// a world snapshot that WorldSnapshot::read refuses throw std::runtime_error naming the problem; another physics
+    /// rate or other entities than the file's throw std::logic_error; either way the simulation is unchanged.
+    /// readState reading other than writeState wrote throws std::runtime_error after the rest was restored.
+    void readSnapshot(std::istream& in);
+    /// The byte-level twin of saveState/restoreState, for files: write the members that steer the physics, read them
+    /// back in the same order.
+    virtual void writeState(StateWriter& /*out*/) const {}
+    virtual void readState(StateReader& /*in*/) {}
+    /// The format's version of writeSnapshot's files: a file of another version is refused.
+    static constexpr std::uint32_t kSnapshotFormatVersion = 1;
 
     /// A branch: a second run from a snapshot with one thing changed, stepped beside this one. Its world is the
     /// snapshot's world changed by `change` (a restitution, a velocity, the settings...), and every fixedStep steps

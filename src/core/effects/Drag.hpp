@@ -31,6 +31,7 @@ public:
     void apply(WorldImpl& w, double h) const;
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     struct Coefficients {
         double linear = 0.0;     // N s/m
         double quadratic = 0.0;  // kg/m: 1/2 rho C_d width

@@ -33,6 +33,7 @@ public:
     void apply(WorldImpl& w, double h);
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     Members members_;
     GravitationSettings settings_;
     std::vector<Vec2> positions_;  // per member, this substep

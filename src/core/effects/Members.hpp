@@ -38,6 +38,7 @@ public:
     static constexpr std::int32_t kAbsent = -1;
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     std::vector<std::uint32_t> items_;
     std::vector<std::int32_t> position_;  // per slot: index in items_, or kAbsent
 };

@@ -23,6 +23,7 @@ public:
     void apply(WorldImpl& w, double h) const;
 
 private:
+    template <class> friend struct StateFields;  // the snapshot file's serializer (SnapshotFile.cpp)
     Members members_;
 };
 
