@@ -22,7 +22,7 @@ const RigidBody* bodyOf(const Simulation& sim, int id) {
     return nullptr;
 }
 
-double valueOf(const RigidBody& rb, const std::string& q) {
+double valueOf(const World& world, const RigidBody& rb, const std::string& q) {
     if (q == "x") return rb.position().x();
     if (q == "y") return rb.position().y();
     if (q == "angle") return rb.angle();
@@ -30,9 +30,7 @@ double valueOf(const RigidBody& rb, const std::string& q) {
     if (q == "vy") return rb.velocity().y();
     if (q == "speed") return rb.velocity().norm();
     if (q == "angular_velocity") return rb.angularVelocity();
-    // kinetic_energy: of the centre of mass's motion and of the turn about it.
-    const double w = rb.angularVelocity();
-    return 0.5 * rb.mass() * rb.velocity().squaredNorm() + 0.5 * rb.inertia() * w * w;
+    return world.kineticEnergy(rb.bodyId());  // kinetic_energy
 }
 
 std::string specText(const RecordSpec& s) { return std::to_string(s.entity) + ":" + s.quantity; }
@@ -41,7 +39,7 @@ std::string specText(const RecordSpec& s) { return std::to_string(s.entity) + ":
 
 double recordValue(const Simulation& sim, const RecordSpec& spec) {
     const RigidBody* rb = bodyOf(sim, spec.entity);
-    return rb ? valueOf(*rb, spec.quantity) : std::numeric_limits<double>::quiet_NaN();
+    return rb ? valueOf(sim.world(), *rb, spec.quantity) : std::numeric_limits<double>::quiet_NaN();
 }
 
 Recorder::Recorder(std::vector<RecordSpec> specs, const Simulation& sim) : specs_(std::move(specs)) {

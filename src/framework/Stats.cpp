@@ -18,9 +18,12 @@ WorldStats computeStats(const World& world) {
             continue;
         }
         ++(world.isAwake(id) ? s.awake : s.asleep);
-        const double m = world.mass(id), w = world.angularVelocity(id);
-        s.kinetic += 0.5 * m * world.velocity(id).squaredNorm() + 0.5 * world.inertia(id) * w * w;
-        s.potential -= m * g.dot(world.position(id));
+        const double m = world.mass(id);
+        const Vec2 x = world.centerOfMass(id), p = m * world.velocity(id);
+        s.kinetic += world.kineticEnergy(id);
+        s.potential -= m * g.dot(x);
+        s.momentum += p;
+        s.angularMomentum += cross(x, p) + world.inertia(id) * world.angularVelocity(id);
     }
     s.contacts = world.contacts().size();
     for (const Manifold& m : world.contacts()) s.contactPoints += static_cast<std::size_t>(m.pointCount);
@@ -69,6 +72,9 @@ std::string formatStats(const WorldStats& stats, const StepTimes& times) {
     text += line;
     std::snprintf(line, sizeof line, "energy: kinetic %.4g J, potential %.4g J, sum %.6g J\n", stats.kinetic,
                   stats.potential, stats.kinetic + stats.potential);
+    text += line;
+    std::snprintf(line, sizeof line, "momentum (%.4g, %.4g) kg m/s, angular momentum %.4g kg m^2/s about the origin\n",
+                  stats.momentum.x(), stats.momentum.y(), stats.angularMomentum);
     text += line;
     const StepProfile mean = times.mean();
     std::snprintf(line, sizeof line, "step %.3f ms (mean of %zu)", 1e3 * mean.total(), times.samples());

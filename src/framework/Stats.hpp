@@ -1,7 +1,8 @@
 #pragma once
 // Statistics of a running world, shown on demand in the window: bodies awake and asleep, contacts, the cost
-// of a step per stage (World::profile, averaged over recent steps) and the mechanical energy.
+// of a step per stage (World::profile, averaged over recent steps), the mechanical energy and the momenta.
 
+#include "physim/core/Math.hpp"
 #include "physim/core/StepProfile.hpp"
 
 #include <cstddef>
@@ -22,7 +23,9 @@ struct WorldStats {
     std::size_t restingContacts = 0;  ///< touching pairs at rest the step skips (DebugDraw's restingContacts)
     std::size_t joints = 0;
     double kinetic = 0.0;          ///< J: sum of m v^2 / 2 + I w^2 / 2 over dynamic bodies
-    double potential = 0.0;        ///< J: sum of -m g . x over dynamic bodies (zero at the world origin)
+    double potential = 0.0;        ///< J: sum of -m g . x over dynamic bodies (x their centres of mass; zero at the origin)
+    Vec2 momentum = Vec2::Zero();  ///< kg m/s: sum of m v over dynamic bodies
+    double angularMomentum = 0.0;  ///< kg m^2/s about the world origin: sum of x cross m v + I w
 };
 
 WorldStats computeStats(const World& world);

@@ -11,7 +11,8 @@ namespace physim {
 namespace {
 
 // A 2 kg disc at (1, 3) moving at (3, 4) m/s and spinning at 2 rad/s: kinetic m v^2 / 2 + I w^2 / 2 with
-// I = m r^2 / 2, potential m g y (g = 9.81 down, zero at the origin). The static ground adds neither.
+// I = m r^2 / 2, potential m g y (g = 9.81 down, zero at the origin), momentum and angular momentum about the
+// origin. The static ground adds none of them. 1e-12: a few roundings of numbers of order 10.
 TEST(Stats, CountsBodiesAndSumsEnergy) {
     World world;
     test::addStaticBox(world, Vec2::Zero(), 5.0, 0.5);
@@ -30,6 +31,11 @@ TEST(Stats, CountsBodiesAndSumsEnergy) {
     const double I = 0.5 * 2.0 * 0.25;
     EXPECT_NEAR(s.kinetic, 0.5 * 2.0 * 25.0 + 0.5 * I * 4.0, 1e-12);
     EXPECT_NEAR(s.potential, 2.0 * 9.81 * 3.0, 1e-12);
+    EXPECT_NEAR(world.kineticEnergy(id), s.kinetic, 1e-12);
+    // Momentum m v; angular momentum about the origin: x cross m v + I w = (1 * 8 - 3 * 6) + I * 2.
+    EXPECT_NEAR(s.momentum.x(), 6.0, 1e-12);
+    EXPECT_NEAR(s.momentum.y(), 8.0, 1e-12);
+    EXPECT_NEAR(s.angularMomentum, (1.0 * 8.0 - 3.0 * 6.0) + I * 2.0, 1e-12);
     world.setAwake(id, false);
     EXPECT_EQ(computeStats(world).asleep, 1u);
 }

@@ -81,6 +81,9 @@ public:
     /// Velocity of a world point (m) fixed to the body, m/s.
     Vec2 velocityAt(BodyId id, const Vec2& worldPoint) const;
     double angularVelocity(BodyId id) const;
+    /// Kinetic energy, J: m v^2 / 2 of the centre of mass's motion plus I w^2 / 2 of the turn about it (0 for an
+    /// immovable body).
+    double kineticEnergy(BodyId id) const;
     /// World bounding box of the body's shapes at its pose, m (a shapeless body's is its origin).
     Aabb bounds(BodyId id) const;
     double mass(BodyId id) const;         ///< kg; 0 for static and kinematic bodies (immovable)
