@@ -41,6 +41,7 @@ namespace physim {
 struct ContactCores;
 struct ContactData;
 struct ContactSurface;
+struct StepImpulses;
 struct ShapeData;
 
 struct ContactConstraintPoint {
@@ -111,6 +112,10 @@ struct alignas(64) ContactBlockCold {
     Wide restitution, normalAcceleration;
     Wide relativeVelocity[2];  // per point
     Wide push[2];  // per point: N s of this substep's solve-pass push-out it holds, still in its bodies' record
+    // Per point, and the friction row: N s given over the step so far (each substep's final impulse, bounces'
+    // blows included), what contacts() reports; only ContactPass::total passes and bounces write them, nothing reads
+    // them in the step, so the warm start and the motion are as without them.
+    Wide totalNormal[2], totalTangent;
     struct Lane {
         std::uint32_t contact = 0;
         int pointCount = 0;
@@ -193,6 +198,7 @@ struct ContactPass {
     const WarmStartVelocity* warmStarts = nullptr;  // per awake body, what this substep's warm start gave it: read
                                                     // only by rows that can bounce (restitution > 0)
     bool holdPushes = false;  // rows that keep their push-out apart do (needs a relax pass: it takes the push back)
+    bool total = false;       // the substep's last pass: its rows add their impulses to their step totals
 };
 /// With `material` (material[i] belongs to begin[i]), the relax pass adds the blocks' surface-material terms.
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
@@ -200,7 +206,9 @@ void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* col
 /// Where the rows warm start a substep after the step's first (warmStartContacts), their rolling impulses too.
 void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,
                       SolverBody* states);
-/// Writes a lane's impulses back into its manifold (warm start for the next step, and what contacts() reports).
-void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact);
+/// Writes a lane's impulses back into its manifold (the last substep's: the next step's warm start) and its step
+/// totals into `totals` (what contacts() reports).
+void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact,
+                   StepImpulses& totals);
 
 }  // namespace physim
