@@ -228,7 +228,7 @@ template <bool Two>
     block.sliding = in.sliding;
     cold.restitution = in.restitution;
     cold.normalAcceleration = in.accelerationNormal;
-    cold.totalNormal[0] = cold.totalNormal[1] = cold.totalTangent = zero;  // the step's totals start from nothing
+    cold.totalNormal[0] = cold.totalNormal[1] = block.totalTangent = zero;  // the step's totals start from nothing
     markBlock(block, cold);
 }
 
@@ -824,7 +824,7 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
     if (pass.total) {
         cold.totalNormal[0] += c.points[0].normalImpulse;
         if constexpr (Two) cold.totalNormal[1] += c.points[1].normalImpulse;
-        cold.totalTangent += c.tangentImpulse;
+        c.totalTangent += c.tangentImpulse;
     }
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
@@ -1035,7 +1035,7 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
         cold.push[i][k] = 0.0;
         cold.totalNormal[i][k] = 0.0;
     }
-    cold.totalTangent[k] = 0.0;
+    b.totalTangent[k] = 0.0;
     cold.k11[k] = c.k11;
     cold.k12[k] = c.k12;
     cold.k22[k] = c.k22;
@@ -1068,7 +1068,7 @@ void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int 
     Manifold& m = contact.manifold;
     const int count = cold.lanes[lane].pointCount;
     const double share = count > 0 ? block.tangentImpulse[lane] / count : 0.0;
-    const double totalShare = count > 0 ? cold.totalTangent[lane] / count : 0.0;
+    const double totalShare = count > 0 ? block.totalTangent[lane] / count : 0.0;
     totals = StepImpulses{};
     for (int i = 0; i < count; ++i) {
         m.points[i].normalImpulse = block.points[i].normalImpulse[lane];

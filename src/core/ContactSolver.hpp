@@ -101,21 +101,26 @@ struct alignas(64) ContactBlock {
     bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
     const struct ContactBlockEnds* ends = nullptr;  // where some lane's rounded side is on a straight side
+    // N s of friction given over the step so far (ContactBlockCold::totalNormal's rule): in the last line's padding,
+    // a line every pass writes anyway.
+    Wide totalTangent;
 };
+static_assert(sizeof(ContactBlock) == 15 * 64, "the friction total fills padding: the block keeps its 15 lines");
 
 /// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
 /// stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
 /// vector store each, where a lane at a time took an extraction and a store per value). Line-aligned, like the blocks.
 struct alignas(64) ContactBlockCold {
+    // Per point, N s given over the step so far (each substep's final impulse, bounces' blows included), what
+    // contacts() reports; only ContactPass::total passes and bounces write them, nothing in the step reads them, so
+    // the warm start and the motion are as without them. One line, the only one of the block the relax pass touches
+    // on every substep.
+    Wide totalNormal[2];
     Wide anchorAx[2], anchorAy[2], anchorBx[2], anchorBy[2];  // per point: lever arms from the centres of mass, m
     Wide k11, k12, k22, invDet;  // ContactConstraint's (a bounce of both points at once)
     Wide restitution, normalAcceleration;
     Wide relativeVelocity[2];  // per point
     Wide push[2];  // per point: N s of this substep's solve-pass push-out it holds, still in its bodies' record
-    // Per point, and the friction row: N s given over the step so far (each substep's final impulse, bounces'
-    // blows included), what contacts() reports; only ContactPass::total passes and bounces write them, nothing reads
-    // them in the step, so the warm start and the motion are as without them.
-    Wide totalNormal[2], totalTangent;
     struct Lane {
         std::uint32_t contact = 0;
         int pointCount = 0;
