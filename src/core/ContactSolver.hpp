@@ -102,13 +102,13 @@ struct alignas(64) ContactBlock {
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
     const struct ContactBlockEnds* ends = nullptr;  // where some lane's rounded side is on a straight side
     // N s of friction given over the step so far (ContactBlockCold::totalNormal's rule): in the last line's padding,
-    // a line every pass writes anyway.
+    // a line every pass reads anyway.
     Wide totalTangent;
 };
 static_assert(sizeof(ContactBlock) == 15 * 64, "the friction total fills padding: the block keeps its 15 lines");
 
-/// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
-/// stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
+/// The rest of a block's rows, read only by the bounce path and at the step's end, and the step's normal totals
+/// (kept apart so that the passes stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
 /// vector store each, where a lane at a time took an extraction and a store per value). Line-aligned, like the blocks.
 struct alignas(64) ContactBlockCold {
     // Per point, N s given over the step so far (each substep's final impulse, bounces' blows included), what

@@ -16,12 +16,13 @@ namespace {
 constexpr double kDt = 1.0 / 60.0;
 constexpr double kG = 9.81;
 
-BodyId addGround(World& world, double friction = 0.6) {
+BodyId addGround(World& world, double friction = 0.6, double restitution = 0.0) {
     BodyDef g;
     g.type = BodyType::Static;
     g.shape = makeBox(20.0, 0.5);
     g.position = {0.0, -0.5};  // top face at y = 0
     g.staticFriction = g.dynamicFriction = friction;
+    g.restitution = restitution;
     return world.createBody(g);
 }
 
@@ -176,14 +177,14 @@ TEST(ContactForce, ImpulseBalancesMomentumThroughBounces) {
         s.enableSleep = false;
         s.substeps = substeps;
         World world(s);
-        const BodyId ground = addGround(world);
+        const BodyId ground = addGround(world, 0.6, 0.7);  // a pair's restitution is the smaller of the two
         BodyDef b;
         b.shape = makeCircle(0.25);
         b.position = {0.0, 2.0};
         b.restitution = 0.7;
         const BodyId ball = world.createBody(b);
         const double m = world.mass(ball);
-        int touching = 0;
+        int touching = 0, bounces = 0;
         double largest = 0.0;
         for (int i = 0; i < 240; ++i) {
             const Vec2 before = world.velocity(ball);
@@ -196,12 +197,14 @@ TEST(ContactForce, ImpulseBalancesMomentumThroughBounces) {
                 ++touching;
             }
             largest = std::max(largest, impulse.norm());
+            if (before.y() < -1.0 && world.velocity(ball).y() > 1.0) ++bounces;  // past the 1 m/s threshold
             const Vec2 change = m * (world.velocity(ball) - before);
             EXPECT_NEAR(change.y(), -m * kG * kDt + impulse.y(), 1e-9) << substeps << " substeps, step " << i;
             EXPECT_NEAR(change.x(), impulse.x(), 1e-9);
         }
         EXPECT_GT(touching, 10) << "the ball bounced and came to rest";
         EXPECT_GT(largest, 2.0 * m * kG * kDt) << "some step held a bounce, not only resting weight";
+        EXPECT_GE(bounces, 3) << "the ball bounced (0.7 of its speed each time), it did not only land";
         (void)ground;
     }
 }
