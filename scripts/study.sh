@@ -13,7 +13,8 @@ bin="${PHYSIM_STUDY:-}"
 if [ -z "$bin" ]; then
   "$PHYSIM_ROOT_DIR/scripts/setup.sh"
   cd "$PHYSIM_ROOT_DIR"
-  cmake --preset default >/dev/null
+  # Configure only a build tree that has none: ninja configures again by itself when a CMake file changed.
+  [ -f build/default/CMakeCache.txt ] || cmake --preset default >/dev/null
   cmake --build build/default --target physim_study -j "$(physim_jobs)" >/dev/null
   bin="$PHYSIM_ROOT_DIR/build/default/bin/physim_study"
   cd - >/dev/null

@@ -54,6 +54,16 @@ struct ContactSurface {
     double tangentSpeed = 0.0;  // m/s: the friction row holds the bodies' tangential speed at -tangentSpeed
 };
 
+/// What a contact's points carried over the last step that solved it, N s: each the sum of the substeps' final
+/// impulses (bounces' blows included), so divided by the step it is the mean force. Kept beside the contacts
+/// (WorldImpl::contactImpulses): the manifold's own impulses are the last substep's, the solver's warm start, and a
+/// contact is full. Zero until solved; a sleeping pair's keep their last values. The tangent's is shared evenly
+/// between the points, as the one friction row at the manifold's centre acts.
+struct StepImpulses {
+    double normal[2] = {0.0, 0.0};
+    double tangent[2] = {0.0, 0.0};
+};
+
 /// Line-aligned: the solver's preparation reads a record up to `cache`, in colour order (at random), and that part
 /// is then three lines, never four; what only the narrow phase and the bookkeeping read comes after. Six lines in
 /// all (the fields fill the padding the vectors' alignment leaves).

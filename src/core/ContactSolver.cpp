@@ -228,6 +228,7 @@ template <bool Two>
     block.sliding = in.sliding;
     cold.restitution = in.restitution;
     cold.normalAcceleration = in.accelerationNormal;
+    cold.totalNormal[0] = cold.totalNormal[1] = block.totalTangent = zero;  // the step's totals start from nothing
     markBlock(block, cold);
 }
 
@@ -381,10 +382,11 @@ void shift(const ContactConstraint& c, const ContactConstraintPoint& cp, MotionS
 // answered a warm start reflected a guess at this substep's impulses: when the guess was then taken back, the
 // bodies kept the reflection's energy (a thin box spinning fast, stopped by one wall's rows and warm-started into
 // another wall, gained energy: docs/dynamics.md).
-// The blows' velocities alone are added to `blowA` and `blowB` (given at zero).
+// The blows' velocities alone are added to `blowA` and `blowB` (given at zero), and the blows, N s per point, are
+// written to `blows`.
 void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Bounce (&bounce)[2],
                   const double (&vn)[2], const double (&delta)[2], const double (&provisional)[2], MotionSide& blowA,
-                  MotionSide& blowB) {
+                  MotionSide& blowB, double (&blows)[2]) {
     for (int i = 0; i < c.pointCount; ++i) {
         if (delta[i] != 0.0) pushNormal(c, A, B, c.points[i], -delta[i]);
         c.points[i].normalImpulse -= delta[i];
@@ -419,6 +421,7 @@ void applyBounces(ContactConstraint& c, MotionSide& A, MotionSide& B, const Boun
             pushNormal(c, blowA, blowB, c.points[i], x[i]);
         }
         if (q[i] != 0.0) shift(c, c.points[i], A, B, q[i]);
+        blows[i] = x[i];
     }
 }
 
@@ -608,7 +611,10 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
         MotionSide A = side(c.indexA, wa), B = side(c.indexB, wb);
         const double met[2] = {start.before[0] - provisional[0], start.before[1] - provisional[1]};
         MotionSide blowA, blowB;
-        applyBounces(c, A, B, bounce, met, start.delta, provisional, blowA, blowB);
+        double blows[2] = {0.0, 0.0};
+        applyBounces(c, A, B, bounce, met, start.delta, provisional, blowA, blowB, blows);
+        // A blow is momentum the contact passed, though no row's accumulated impulse: the step's total has it.
+        for (int i = 0; i < count; ++i) cold.totalNormal[i][k] += blows[i];
         if (pass.rowsBase) {  // a blow is no impulse of the rows: the next substep's warm start leaves it out
             if (rowMoves(c.indexA, c.invMassA)) addVelocity(pass.rowsBase[c.indexA], blowA);
             if (rowMoves(c.indexB, c.invMassB)) addVelocity(pass.rowsBase[c.indexB], blowB);
@@ -812,6 +818,13 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
             const WideMask rubs = (c.staticFriction > 0.0) | (c.dynamicFriction > 0.0);
             c.sliding = rubs ? (slides ? one : zero) : c.sliding;
         }
+    }
+    // The substep's last pass: what the rows now hold is what they gave the bodies over the substep (the warm start
+    // applied the last substep's, this substep's passes changed it to this).
+    if (pass.total) {
+        cold.totalNormal[0] += c.points[0].normalImpulse;
+        if constexpr (Two) cold.totalNormal[1] += c.points[1].normalImpulse;
+        c.totalTangent += c.tangentImpulse;
     }
     scatter(c.indexA, c.writes, A, states);
     scatter(c.indexB, c.writes >> kLanes, B, states);
@@ -1020,7 +1033,9 @@ void setRow(ContactBlock& b, ContactBlockCold& cold, int k, const ContactConstra
         cold.relativeVelocity[i][k] = p.relativeVelocity;
         lane.engaged[i] = p.engaged;
         cold.push[i][k] = 0.0;
+        cold.totalNormal[i][k] = 0.0;
     }
+    b.totalTangent[k] = 0.0;
     cold.k11[k] = c.k11;
     cold.k12[k] = c.k12;
     cold.k22[k] = c.k22;
@@ -1047,14 +1062,19 @@ ContactConstraint row(const ContactBlock& b, const ContactBlockCold& cold, int k
     return c;
 }
 
-void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact) {
+void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact,
+                   StepImpulses& totals) {
     contact.sliding = block.sliding[lane] != 0.0;
     Manifold& m = contact.manifold;
     const int count = cold.lanes[lane].pointCount;
     const double share = count > 0 ? block.tangentImpulse[lane] / count : 0.0;
+    const double totalShare = count > 0 ? block.totalTangent[lane] / count : 0.0;
+    totals = StepImpulses{};
     for (int i = 0; i < count; ++i) {
         m.points[i].normalImpulse = block.points[i].normalImpulse[lane];
         m.points[i].tangentImpulse = share;
+        totals.normal[i] = cold.totalNormal[i][lane];
+        totals.tangent[i] = totalShare;
     }
 }
 

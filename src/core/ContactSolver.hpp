@@ -41,6 +41,7 @@ namespace physim {
 struct ContactCores;
 struct ContactData;
 struct ContactSurface;
+struct StepImpulses;
 struct ShapeData;
 
 struct ContactConstraintPoint {
@@ -100,12 +101,21 @@ struct alignas(64) ContactBlock {
     bool keepsPushes = false;  // some lane keeps its push-out apart (a body can bounce)
     bool holdsPush = false;    // some lane's point holds push-out recorded on its bodies (ContactBlockCold::push)
     const struct ContactBlockEnds* ends = nullptr;  // where some lane's rounded side is on a straight side
+    // N s of friction given over the step so far (ContactBlockCold::totalNormal's rule): in the last line's padding,
+    // a line every pass reads anyway.
+    Wide totalTangent;
 };
+static_assert(sizeof(ContactBlock) == 15 * 64, "the friction total fills padding: the block keeps its 15 lines");
 
-/// The rest of a block's rows, read only by the bounce path and at the step's end (kept apart so that the passes
-/// stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
+/// The rest of a block's rows, read only by the bounce path and at the step's end, and the step's normal totals
+/// (kept apart so that the passes stream less memory). What preparation computes four lanes at once is stored the same way, field by field (one
 /// vector store each, where a lane at a time took an extraction and a store per value). Line-aligned, like the blocks.
 struct alignas(64) ContactBlockCold {
+    // Per point, N s given over the step so far (each substep's final impulse, bounces' blows included), what
+    // contacts() reports; only ContactPass::total passes and bounces write them, nothing in the step reads them, so
+    // the warm start and the motion are as without them. One line, the only one of the block the relax pass touches
+    // on every substep.
+    Wide totalNormal[2];
     Wide anchorAx[2], anchorAy[2], anchorBx[2], anchorBy[2];  // per point: lever arms from the centres of mass, m
     Wide k11, k12, k22, invDet;  // ContactConstraint's (a bounce of both points at once)
     Wide restitution, normalAcceleration;
@@ -193,6 +203,7 @@ struct ContactPass {
     const WarmStartVelocity* warmStarts = nullptr;  // per awake body, what this substep's warm start gave it: read
                                                     // only by rows that can bounce (restitution > 0)
     bool holdPushes = false;  // rows that keep their push-out apart do (needs a relax pass: it takes the push back)
+    bool total = false;       // the substep's last pass: its rows add their impulses to their step totals
 };
 /// With `material` (material[i] belongs to begin[i]), the relax pass adds the blocks' surface-material terms.
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
@@ -200,7 +211,9 @@ void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* col
 /// Where the rows warm start a substep after the step's first (warmStartContacts), their rolling impulses too.
 void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,
                       SolverBody* states);
-/// Writes a lane's impulses back into its manifold (warm start for the next step, and what contacts() reports).
-void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact);
+/// Writes a lane's impulses back into its manifold (the last substep's: the next step's warm start) and its step
+/// totals into `totals` (what contacts() reports).
+void storeImpulses(const ContactBlock& block, const ContactBlockCold& cold, int lane, ContactData& contact,
+                   StepImpulses& totals);
 
 }  // namespace physim

@@ -451,6 +451,8 @@ void WorldImpl::createContact(std::uint32_t shapeA, std::uint32_t shapeB) {
     c.manifold.shapeA = ShapeId{shapeA, shapes[shapeA].generation};
     c.manifold.shapeB = ShapeId{shapeB, shapes[shapeB].generation};
     mixContact(index);
+    if (contactImpulses.size() <= index) contactImpulses.resize(contacts.size());
+    contactImpulses[index] = StepImpulses{};  // a slot's last pair's totals are not this one's
     c.proxyA = shapes[shapeA].proxy;
     c.proxyB = shapes[shapeB].proxy;
     const std::uint32_t ends[2] = {a, b};

@@ -401,7 +401,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             for (std::uint32_t lane = 0; lane < graph_.blockRows[b].count; ++lane) {
                 const ContactBlockCold& cold = *coldAt(b);
                 const int k = static_cast<int>(lane);
-                storeImpulses(*blockAt(b), cold, k, w.contacts[cold.lanes[k].contact]);
+                const std::uint32_t contact = cold.lanes[k].contact;
+                storeImpulses(*blockAt(b), cold, k, w.contacts[contact], w.contactImpulses[contact]);
                 const int point = impactPoint(cold, k, impactSpeed);
                 rowImpact_[b * kLanes + lane] = static_cast<std::int8_t>(point);
                 if (point >= 0) rowImpactSpeed_[b * kLanes + lane] = -cold.relativeVelocity[point][k];
@@ -430,8 +431,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     if (bodiesWarmStart) contactPass.rowsBase = base;
     WarmStartVelocity* const warm = warmStarts_.data();
     contactPass.warmStarts = warm;
-    auto solvePass = [&](bool useBias, bool store) {
+    // The substep's last pass over the contact rows adds their impulses to the step's totals (ContactBlockCold).
+    auto solvePass = [&](bool useBias, bool store, bool total) {
         contactPass.useBias = useBias;
+        contactPass.total = total;
         pass([&](std::size_t b, std::size_t e) {
                  solveContacts(blockAt(b), blockAt(e), coldAt(b), st, contactPass, WideCode::Best, materialAt(b));
                  if (store) storeBlocks(b, e);
@@ -489,6 +492,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             ContactPass rows = contactPass;
             rows.substep = sub;
             rows.useBias = !relax;
+            rows.total = at.lastPass && (relax || !storeInRelax);
             solveContacts(blockAt(begin), blockAt(end), coldAt(begin), st, rows, WideCode::Best, materialAt(begin));
             if (relax && sub + 1 == substeps && at.lastPass) storeBlocks(begin, end);
         });
@@ -558,7 +562,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     case SubstepStage::Solve:
                         if (anyRows) {
                             auto timer = stage(Stage::Solve);
-                            solvePass(true, false);
+                            solvePass(true, false, lastPass && !storeInRelax);
                         }
                         break;
                     case SubstepStage::Positions: {
@@ -571,7 +575,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     case SubstepStage::Relax:
                         if (anyRows) {
                             auto timer = stage(Stage::Solve);
-                            solvePass(false, sub + 1 == substeps && lastPass);
+                            solvePass(false, sub + 1 == substeps && lastPass, lastPass);
                         }
                         break;
                 }

@@ -530,19 +530,59 @@ void World::applyLinearImpulseAtPoint(BodyId id, const Vec2& impulse, const Vec2
 
 // --- stepping ----------------------------------------------------------------------------------------
 
+namespace {
+
+// Contact c as the user reads it: its manifold with the points' impulses over the step (WorldImpl::contactImpulses)
+// in place of the last substep's, which the manifold keeps for the solver's warm start.
+Manifold reportedContact(const WorldImpl& w, std::uint32_t c) {
+    Manifold m = w.contacts[c].manifold;
+    const StepImpulses& total = w.contactImpulses[c];
+    for (int p = 0; p < m.pointCount; ++p) {
+        m.points[p].normalImpulse = total.normal[p];
+        m.points[p].tangentImpulse = total.tangent[p];
+    }
+    return m;
+}
+
+// Whether contact c pushed in the last step that solved it: a speculative point (not yet touching when the step
+// began) can stop, or bounce, a body that closes the gap within the step.
+bool pushed(const WorldImpl& w, std::uint32_t c) {
+    for (int p = 0; p < w.contacts[c].manifold.pointCount; ++p)
+        if (w.contactImpulses[c].normal[p] != 0.0) return true;
+    return false;
+}
+
+void sortByBodies(std::vector<Manifold>& list) {
+    std::sort(list.begin(), list.end(), [](const Manifold& x, const Manifold& y) {
+        return std::make_tuple(x.bodyA.index, x.bodyB.index, x.shapeA.index, x.shapeB.index) <
+               std::make_tuple(y.bodyA.index, y.bodyB.index, y.shapeA.index, y.shapeB.index);
+    });
+}
+
+}  // namespace
+
 const std::vector<Manifold>& World::contacts() const {
     WorldImpl& w = *impl_;
     if (!w.touchingValid) {
         w.touchingManifolds.clear();
         for (const std::uint32_t c : w.awakeContacts)
-            if (w.contacts[c].touching) w.touchingManifolds.push_back(w.contacts[c].manifold);
-        std::sort(w.touchingManifolds.begin(), w.touchingManifolds.end(), [](const Manifold& x, const Manifold& y) {
-            return std::make_tuple(x.bodyA.index, x.bodyB.index, x.shapeA.index, x.shapeB.index) <
-                   std::make_tuple(y.bodyA.index, y.bodyB.index, y.shapeA.index, y.shapeB.index);
-        });
+            if (w.contacts[c].touching || pushed(w, c)) w.touchingManifolds.push_back(reportedContact(w, c));
+        sortByBodies(w.touchingManifolds);
         w.touchingValid = true;
     }
     return w.touchingManifolds;
+}
+
+std::vector<Manifold> World::sleepingContacts() const {
+    const WorldImpl& w = *impl_;
+    std::vector<Manifold> list;
+    for (std::uint32_t c = 0; c < w.contacts.size(); ++c) {
+        const ContactData& contact = w.contacts[c];
+        if (contact.alive && contact.awakeIndex == kNullIndex && (contact.touching || pushed(w, c)))
+            list.push_back(reportedContact(w, c));
+    }
+    sortByBodies(list);
+    return list;
 }
 
 void World::step(double dt) {

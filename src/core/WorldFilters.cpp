@@ -62,6 +62,7 @@ void WorldImpl::runPreSolve() {
         // Solved again later, it starts without the impulses of a step it was not solved in.
         for (int p = 0; p < c.manifold.pointCount; ++p)
             c.manifold.points[p].normalImpulse = c.manifold.points[p].tangentImpulse = 0.0;
+        contactImpulses[awakeContacts[i]] = StepImpulses{};
     }
 }
 

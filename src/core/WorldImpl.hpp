@@ -77,6 +77,7 @@ struct WorldState {
     // contact mixed since (those mixed before had none: a slot past the end reads as zero terms).
     std::vector<ContactSurface> contactSurfaces;
     std::vector<ContactCores> contactCores;  // per contact slot: its sides' rounding (ContactData.hpp)
+    std::vector<StepImpulses> contactImpulses;  // per contact slot: its last solved step's totals (contacts())
 
     // Joints and islands.
     std::vector<JointData> joints;

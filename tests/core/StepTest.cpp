@@ -127,11 +127,11 @@ TEST(Step, ContactEventsBeginEndAndImpact) {
 }
 
 // Contacts are found once per step and kept: a box resting on the ground keeps its contact (same feature ids) and
-// its impulse, which per substep equals the weight's m g h. Once it rests, its proxy stays in its enlarged box,
+// its impulse, which over the step equals the weight's m g dt. Once it rests, its proxy stays in its enlarged box,
 // so the broad phase does no work at all.
 TEST(Step, RestingContactsPersistAndTheBroadPhaseRests) {
     WorldSettings awake = settings();
-    awake.enableSleep = false;  // a sleeping body's contact is not listed
+    awake.enableSleep = false;  // a sleeping body's contact is in sleepingContacts(), not here
     World world(awake);
     addGround(world);
     const BodyId box = addBox(world, {0.0, 0.5});
@@ -139,8 +139,7 @@ TEST(Step, RestingContactsPersistAndTheBroadPhaseRests) {
     ASSERT_EQ(world.contacts().size(), 1u);
     const Manifold m = world.contacts()[0];
     ASSERT_EQ(m.pointCount, 2);
-    const double h = kDt / world.settings().substeps;
-    EXPECT_NEAR(m.points[0].normalImpulse + m.points[1].normalImpulse, world.mass(box) * 9.81 * h, 1e-6);
+    EXPECT_NEAR(m.points[0].normalImpulse + m.points[1].normalImpulse, world.mass(box) * 9.81 * kDt, 1e-6);
     for (int i = 0; i < 60; ++i) {
         world.step(kDt);
         EXPECT_FALSE(world.profile().didRun(Stage::BroadPhase)) << "step " << i;
@@ -150,7 +149,7 @@ TEST(Step, RestingContactsPersistAndTheBroadPhaseRests) {
 }
 
 // The impulses are written back to the contacts by the last relax pass, or after the substeps when there is none
-// (relaxIterations 0): either way a resting box's contact reports the weight's m g h per substep (1e-6 N s, as
+// (relaxIterations 0): either way a resting box's contact reports the weight's m g dt over the step (1e-6 N s, as
 // above: the settled impulse is exact to rounding).
 TEST(Step, ImpulsesAreStoredWithAndWithoutARelaxPass) {
     for (const int relax : {0, 1, 2}) {
@@ -163,8 +162,7 @@ TEST(Step, ImpulsesAreStoredWithAndWithoutARelaxPass) {
         for (int i = 0; i < 120; ++i) world.step(kDt);
         ASSERT_EQ(world.contacts().size(), 1u) << "relax passes " << relax;
         const Manifold& m = world.contacts()[0];
-        const double h = kDt / s.substeps;
-        EXPECT_NEAR(m.points[0].normalImpulse + m.points[1].normalImpulse, world.mass(box) * 9.81 * h, 1e-6)
+        EXPECT_NEAR(m.points[0].normalImpulse + m.points[1].normalImpulse, world.mass(box) * 9.81 * kDt, 1e-6)
             << "relax passes " << relax;
     }
 }

@@ -61,6 +61,15 @@ def main():
     print(f"stack sink at 1, 2, 4, 8 substeps: {sink}")
     if len(sink) != 4 or any(not 3 <= a / b <= 5 for a, b in zip(sink, sink[1:])):
         failures.append(f"stack: the sink does not fall about fourfold per doubling of substeps: {sink}")
+    # The defaults are marked where the sweep has them, and no cost law is fitted from the settings below them (the
+    # stack's 1 to 8 substeps: a fit there once read "a tenth of the error costs about 1.5x").
+    summary = open(os.path.join(out, "summary.md")).read()
+    stack = summary[summary.index("## stack"):].split("\n## ")[0]
+    if not any(line.startswith("| substeps | 8 |") and line.rstrip().endswith("| defaults |")
+               for line in stack.splitlines()):
+        failures.append("summary.md does not mark the stack's substeps 8 as the defaults")
+    if "- defaults (60 Hz, 8 substeps)" not in stack or "substeps: no cost law fitted" not in stack:
+        failures.append("the stack's summary lacks its defaults' line or fits a cost law below the defaults")
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)

@@ -13,8 +13,13 @@ namespace physim {
 struct ContactPoint {
     Vec2 point = Vec2::Zero();   ///< midway between the two surfaces, m
     double separation = 0.0;     ///< signed distance along the normal, m: negative when the shapes overlap
-    double normalImpulse = 0.0;  ///< accumulated over the step's solver iterations, N s (>= 0)
-    double tangentImpulse = 0.0; ///< accumulated friction impulse, N s
+    /// N s (>= 0): what the contact gave B along the normal over the whole step, every substep's impulse and any
+    /// bounce's blow summed (the momentum it passed), so normalImpulse / dt is the mean normal force over the step,
+    /// N. A box of mass m resting on the ground reads m g dt over its points whatever the substeps.
+    double normalImpulse = 0.0;
+    /// N s: the friction impulse on B along the tangent perp(normal) over the whole step, likewise (its mean force
+    /// is tangentImpulse / dt). The friction acts at the manifold's centre; each point reports an equal share.
+    double tangentImpulse = 0.0;
     std::uint32_t id = 0;        ///< feature id: the same touching features keep the same id between steps
 };
 

@@ -350,9 +350,18 @@ public:
     /// smaller ones leave the range of doubles in the substep's arithmetic.
     void step(double dt);
 
-    /// The touching contacts of awake bodies after the last step (a sleeping pile's contacts are not listed).
-    /// Points may lie slightly apart (positive separation): a contact touches within the speculative distance.
+    /// The contacts of awake bodies that touch after the last step or pushed during it (a point still apart when
+    /// the step began stops or bounces a body that closes the gap within it); a sleeping pile's are in
+    /// sleepingContacts(). Points may lie slightly apart (positive separation): a contact touches within the
+    /// speculative distance.
+    /// Each point's normalImpulse and tangentImpulse are its impulses over the whole step (ContactPoint), so
+    /// divided by the step's dt they are the mean contact force, N.
     const std::vector<Manifold>& contacts() const;
+    /// The contacts whose bodies all sleep (or are static), as contacts() would list them after the last step that
+    /// solved them, as that step left them:
+    /// their impulses are that step's, so a pile at rest still reports its weight. Built on each call (it visits
+    /// every contact), in contacts()' order.
+    std::vector<Manifold> sleepingContacts() const;
     /// Contacts that began and ended touching, and impacts, during the last step.
     const ContactEvents& contactEvents() const;
     const StepProfile& profile() const;
