@@ -258,6 +258,7 @@ PHYSIM_FIELDS(ContactMaterial, r.staticFriction, r.dynamicFriction, r.restitutio
 PHYSIM_FIELDS(ContactData, r.material, r.sliding, r.keepsPush, r.touching, r.alive, r.awakeIndex, r.manifold,
               r.cache, r.prev, r.next, r.generation, r.proxyA, r.proxyB, r.disabled);
 PHYSIM_FIELDS(ContactSurface, r.rolling, r.tangentSpeed);
+PHYSIM_FIELDS(StepImpulses, r.normal, r.tangent);
 PHYSIM_FIELDS(ContactCores, r.radiusA, r.radiusB, r.facesA, r.facesB);
 PHYSIM_FIELDS(DistanceJoint, r.length, r.hertz, r.dampingRatio, r.impulse);
 PHYSIM_FIELDS(MouseJoint, r.maxForce, r.hertz, r.dampingRatio, r.linearImpulse);
@@ -356,7 +357,7 @@ struct StateFields<WorldState> {
     static void each(Io& io, R& r) {
         io(r.settings, r.bodies, r.freeBodies, r.liveCount, r.dynamicCount, r.continuousCount, r.shapeRevision,
            r.awake, r.shapes, r.freeShapes, r.shapeLiveCount, r.contacts, r.freeContacts, r.awakeContacts,
-           r.contactPairs, r.contactSurfaces, r.contactCores, r.joints, r.freeJoints, r.jointCount, r.rowJointCount,
+           r.contactPairs, r.contactSurfaces, r.contactCores, r.contactImpulses, r.joints, r.freeJoints, r.jointCount, r.rowJointCount,
            r.breakableJoints, r.jointEvents, r.islands, r.freeIslands, r.broadPhase, r.continuous, r.effects,
            r.sensors, r.newPairs, r.contactFlags, r.changedContacts, r.awakeContactsChanged, r.checkedBoxRevision,
            r.touched, r.islandSleep, r.splitStack, r.splitMembers, r.found, r.sleepy, r.refiltered, r.refilterAll,
@@ -379,7 +380,7 @@ using Records = RecordList<BodyData, ShapeData, ContactData, ManifoldCache, Mani
                            JointKinds::Params, DistanceJoint, MouseJoint, SpringJoint, RevoluteJoint, WeldJoint,
                            PulleyJoint, MotorJoint, PrismaticJoint, WheelJoint, GearJoint, IslandData, Geometry,
                            Polygon, Circle, Segment, Capsule, ChainSegment, WorldSettings, DynamicTree::Node,
-                           ContactSurface, ContactCores, JointBreakEvent, ImpactEvent, SensorEvent, DragDef,
+                           ContactSurface, ContactCores, StepImpulses, JointBreakEvent, ImpactEvent, SensorEvent, DragDef,
                            GravitationSettings, Filter, Vec2, std::size_t, int, bool>;
 
 #if defined(__x86_64__) && defined(__LP64__)

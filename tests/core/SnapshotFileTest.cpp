@@ -66,6 +66,17 @@ void expectFileReplays(World& world, World& other, int before, int after) {
     ASSERT_NE(first.back(), s.stateHash()) << "the scene stood still: the test would prove nothing";
     world.restore(s);
     EXPECT_EQ(hashesOver(world, after), first) << "in memory";
+    // The contacts as users read them, impulses over the step included, come back too.
+    world.restore(s);
+    const std::vector<Manifold> contacts = world.contacts();
+    ASSERT_FALSE(contacts.empty()) << "nothing touches: the check below would prove nothing";
+    other.restore(back);
+    ASSERT_EQ(other.contacts().size(), contacts.size());
+    for (std::size_t c = 0; c < contacts.size(); ++c)
+        for (int p = 0; p < contacts[c].pointCount; ++p) {
+            EXPECT_EQ(other.contacts()[c].points[p].normalImpulse, contacts[c].points[p].normalImpulse) << c;
+            EXPECT_EQ(other.contacts()[c].points[p].tangentImpulse, contacts[c].points[p].tangentImpulse) << c;
+        }
     world.restore(back);
     EXPECT_EQ(world.stateHash(), s.stateHash());
     EXPECT_EQ(hashesOver(world, after), first) << "from the file, same world";
