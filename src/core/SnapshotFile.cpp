@@ -104,6 +104,7 @@ public:
 
 private:
     void raw(const void* p, std::size_t n) {
+        if (n == 0) return;  // an empty array's data() may be null, which memcpy must not get
         if (n > bytes_.size() - at_) bytes_.resize(std::max(2 * bytes_.size(), at_ + n));
         std::memcpy(&bytes_[at_], p, n);
         at_ += n;
@@ -159,6 +160,7 @@ public:
 
 private:
     void raw(void* p, std::size_t n) {
+        if (n == 0) return;  // an empty array's data() may be null, which memcpy must not get
         if (n > left()) throw std::runtime_error("the payload ends before its state does (not written by this format)");
         std::memcpy(p, at_, n);
         at_ += n;
