@@ -14,10 +14,11 @@ void StateWriter::putInt(std::int64_t v) { bytes_.append(reinterpret_cast<const 
 void StateWriter::putBool(bool v) { bytes_.push_back(v ? '\1' : '\0'); }
 void StateWriter::putDoubles(const std::vector<double>& v) {
     putInt(static_cast<std::int64_t>(v.size()));
-    bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
+    if (!v.empty()) bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(double));
 }
 
 void StateReader::take(void* to, std::size_t n) {
+    if (n == 0) return;  // an empty vector's data() may be null, which memcpy must not get
     if (n > left())
         throw std::runtime_error("physim: snapshot file: the simulation's own state ends early (" +
                                  std::to_string(left()) + " bytes left, " + std::to_string(n) + " wanted)");
