@@ -294,6 +294,21 @@ std::vector<Row> rows() {
                      s.world->setSettings(settings);
                      return s;
                  }});
+    // The energy ledger on an awake pile: without it, switched on and off again (unused), and on (used).
+    auto ledger = [](bool on, bool off) {
+        return [=] {
+            Scene s = pyramid(true);
+            WorldSettings settings = s.world->settings();
+            settings.enableSleep = false;
+            s.world->setSettings(settings);
+            s.world->setEnergyLedger(on);
+            if (off) s.world->setEnergyLedger(false);
+            return s;
+        };
+    };
+    r.push_back({"energy ledger", "20-box-base pyramid (210 boxes), awake",
+                 "the ledger on (unused: switched on and off again)", ledger(false, false), ledger(true, true),
+                 ledger(true, false)});
     return r;
 }
 

@@ -182,6 +182,7 @@ void Solver::solve(WorldImpl& w) {
     contactPassSettings_.maxPushVelocity = w.settings.contactPushMaxVelocity;
     contactPassSettings_.restitutionThreshold = w.settings.restitutionThreshold;
     contactPassSettings_.slipSpeed = 0.1 * w.settings.linearSlop / w.dt;
+    if (w.ledger.enabled) tally_.startStep(n, groups, graph_.blockRows.size());
     pushVelocities_.assign(n, PushVelocity{});
     rowsBase_.resize(n);
     warmStarts_.resize(n);
@@ -460,7 +461,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     // passes. Where the warm start after the first substep is the bodies' (no pass) and nothing acts between
     // substeps, the substeps after it join the sequence too, each from its velocity integration: one wait for the
     // step's substeps. Each loop gets its own copy of the passes' settings: the threads may be in different passes.
-    const bool oneSequence = ordered && colourCount > 0 && graph_.groupJointStart[g + 1] == graph_.groupJointStart[g] &&
+    const bool ledger = w.ledger.enabled;  // then each substep's stages run apart, for the ledger's marks
+    const bool oneSequence = !ledger && ordered && colourCount > 0 && graph_.groupJointStart[g + 1] == graph_.groupJointStart[g] &&
                              segments[kSegments] == segments[kColours];
     const SubstepList stages = substepStages(w.settings.velocityIterations, w.settings.relaxIterations);
     auto solveInOrder = [&](int firstSub, int lastSub) {
@@ -500,6 +502,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
 
     for (int sub = 0; sub < substeps; ++sub) {
         contactPass.substep = sub;
+        if (ledger) tally_.markStart(st, bodyList, bodyCount);
         if (w.effects.perSubstep()) w.effects.substep(w, h);  // then there is one group
         bool sequenced = false;  // solveInOrder ran the rest of the substep (and the substeps up to `sub`)
         for (const StagePasses& run : stages)
@@ -570,6 +573,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                         w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
                             integratePositions(st, bodyList + begin, end - begin, h);
                         });
+                        if (ledger) tally_.markMoved(st, bodyList, bodyCount);
                         break;
                     }
                     case SubstepStage::Relax:
@@ -580,6 +584,9 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                         break;
                 }
             }
+        if (ledger)
+            tally_.closeSubstep(w, g, sims_.data(), st, bodyList, bodyCount, blockAt(firstBlock), coldAt(firstBlock),
+                                graph_.blockRows.data(), firstBlock, blockCount, h);
     }
     if (blockCount > 0 && !storeInRelax) {
         auto timer = stage(Stage::Solve);

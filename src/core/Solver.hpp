@@ -8,6 +8,7 @@
 
 #include "ConstraintGraph.hpp"
 #include "ContactSolver.hpp"
+#include "EnergyTally.hpp"
 #include "SolverData.hpp"
 #include "joints/PinLanes.hpp"
 
@@ -39,6 +40,8 @@ public:
     const SolverBodySim& sim(std::size_t i) const { return sims_[i]; }
     /// A dynamic body moved far for its size this step: the Continuous stage has work.
     bool fastBodies() const { return fastBodies_; }
+    /// The energy ledger's bookkeeping (read and marked only while it is on).
+    EnergyTally& tally() { return tally_; }
     /// The Continuous stage put awake body i back and its proxy must move: it does once, after that stage.
     void deferProxy(std::size_t i) { enlarged_[i] |= 4; }
 
@@ -52,6 +55,7 @@ private:
     void sortJointRows();
 
     ConstraintGraph graph_;
+    EnergyTally tally_;
     std::vector<SolverBody> solverBodies_;       // a still body, then one per awake body
     SolverBody* states_ = nullptr;               // &solverBodies_[1]: states_[i] is awake body i, states_[-1] still
     std::vector<SolverBodySim> sims_;

@@ -593,6 +593,7 @@ void World::step(double dt) {
     w.requireNotStepping("step");
     if (w.effects.callbacks.running()) throw std::logic_error("physim: World::step called from a force callback");
     w.profile = StepProfile{};
+    const double energyBefore = w.ledger.enabled ? w.ledgerEnergy() : 0.0;
     // The user's forces first, outside the step proper: they may apply forces as between steps.
     if (w.effects.callbacks.active()) {
         const auto start = std::chrono::steady_clock::now();
@@ -643,6 +644,7 @@ void World::step(double dt) {
     runStage(w.profile, Stage::Sensors, w.sensors.active(), [&] { w.sensors.run(w); });
     runStage(w.profile, Stage::Sleep, w.settings.enableSleep && !w.awake.empty(), [&] { w.updateSleep(); });
     w.profile.manifolds = w.profile.didRun(Stage::Solve) ? w.solver.rowCount() : 0;
+    if (w.ledger.enabled) w.closeLedgerStep(energyBefore, solve);
     ++w.stepCount;
 }
 

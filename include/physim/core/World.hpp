@@ -20,6 +20,7 @@
 #include "physim/core/Body.hpp"
 #include "physim/core/Contact.hpp"
 #include "physim/core/ContactHooks.hpp"
+#include "physim/core/EnergyLedger.hpp"
 #include "physim/core/Filter.hpp"
 #include "physim/core/ForceCallback.hpp"
 #include "physim/core/Gravitation.hpp"
@@ -372,6 +373,19 @@ public:
     std::uint64_t stepCount() const;
     /// Bodies currently simulated (awake dynamic and kinematic bodies).
     std::size_t awakeBodyCount() const;
+
+    // --- energy (EnergyLedger.hpp) --------------------------------------------------------------------
+    /// J: the kinetic energy of every body (translation and rotation), now.
+    double kineticEnergy() const;
+    /// J: the potential energy of gravity, spring joints and gravitation between attracting bodies, now (the
+    /// ledger's, EnergyLedger.hpp); gravity's zero is at the origin.
+    double potentialEnergy() const;
+    /// Switches the energy ledger on (its start becomes the energy now, its totals zero) or off. Off, stepping
+    /// costs nothing for it. Edits between steps (setVelocity, restore...) are no step's: the ledger measures each
+    /// step from the state it starts from, so the totals sum the steps' changes.
+    void setEnergyLedger(bool enabled);
+    /// The energies after the last step and where each step's change went; `enabled` false while off.
+    const EnergyLedger& energyLedger() const;
 
     // --- time travel (Snapshot.hpp) -----------------------------------------------------------------
     /// The whole state now (not during the step, nor from a force callback: std::logic_error).

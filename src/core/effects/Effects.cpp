@@ -46,9 +46,13 @@ void Effects::substep(WorldImpl& w, double h) {
         recordEffect(w.profile, e, elapsed.count());
     };
     // Explicit forces first; drag last, as it is implicit in the velocity they and the kick leave.
-    if (gravitation.active()) timed(Effect::Gravitation, [&] { gravitation.apply(w, h); });
-    if (springs.active()) timed(Effect::Springs, [&] { springs.apply(w, h); });
-    if (drag.active()) timed(Effect::Drag, [&] { drag.apply(w, h); });
+    // While the energy ledger is on, each effect's impulses are told apart (EnergyTally::markEffect).
+    auto mark = [&](LedgerEffect e) {
+        if (w.ledger.enabled) w.solver.tally().markEffect(e, w.solver.states(), w.awake.size());
+    };
+    if (gravitation.active()) timed(Effect::Gravitation, [&] { gravitation.apply(w, h); }), mark(LedgerEffect::Gravitation);
+    if (springs.active()) timed(Effect::Springs, [&] { springs.apply(w, h); }), mark(LedgerEffect::Springs);
+    if (drag.active()) timed(Effect::Drag, [&] { drag.apply(w, h); }), mark(LedgerEffect::Drag);
 }
 
 void Effects::bodyDestroyed(std::uint32_t slot) {

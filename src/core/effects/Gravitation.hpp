@@ -21,6 +21,7 @@ public:
     void remove(std::uint32_t slot) { members_.remove(slot); }
     bool contains(std::uint32_t slot) const { return members_.contains(slot); }
     std::size_t count() const { return members_.size(); }
+    const std::vector<std::uint32_t>& members() const { return members_.items(); }
     /// It takes two to pull.
     bool active() const { return members_.size() >= 2 && settings_.G > 0.0; }
     bool usesTree() const { return members_.size() >= settings_.directBelow; }

@@ -29,6 +29,8 @@ void SpringEffect::apply(WorldImpl& w, double h) const {
         const double stretchRate = u.dot(B.v + cross(B.w, rB) - A.v - cross(A.w, rA));
         // On B, N s (SpringJoint::reaction is the same force, N).
         const Vec2 P = -h * spring.tension(length, stretchRate) * u;
+        if (w.ledger.enabled)  // the damping's share of P, whose work the ledger counts as the joint's
+            w.solver.tally().addDamping({-h * spring.damping * stretchRate * u, rA, rB, A.index, B.index});
         if (B.invMass > 0.0) {
             SolverBody& s = w.solver.states()[static_cast<std::size_t>(B.index)];
             s.v += B.invMass * P;

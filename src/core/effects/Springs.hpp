@@ -15,6 +15,7 @@ public:
     void remove(std::uint32_t joint) { members_.remove(joint); }
     bool active() const { return !members_.empty(); }
     std::size_t count() const { return members_.size(); }
+    const std::vector<std::uint32_t>& members() const { return members_.items(); }
 
     /// Before a substep's velocity kick, from the substep's starting poses and velocities (symplectic Euler, as
     /// gravity's kick): each spring's force (and its
