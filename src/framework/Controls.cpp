@@ -133,6 +133,8 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 fit_ = true;
             } else if (key == sf::Keyboard::Tab) {
                 statsShown_ = !statsShown_;
+            } else if (key == sf::Keyboard::W) {
+                stopwatch_.press(sim.time);
             } else {
                 return false;
             }
@@ -144,7 +146,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
 
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   B branch   [ ] slower/faster   F fit   "
-           "Tab stats   "
+           "Tab stats   W stopwatch   "
            "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }

@@ -8,10 +8,13 @@
 //   [ and ]      slower / faster: time scale halved or doubled, 1/16x to 8x
 //   F            fits the view to the scene
 //   Tab          statistics on or off
+//   W            stopwatch in simulated seconds: start, stop, again a new start
 //   1 to 6       debug draw: contacts, bounding boxes, velocities, joints, centres of mass, sleeping bodies
 
 #include "physim/core/Joint.hpp"
 #include "physim/framework/DebugDraw.hpp"
+
+#include "Stopwatch.hpp"
 
 #include <SFML/System/Vector2.hpp>
 
@@ -54,6 +57,10 @@ public:
     bool takeFitRequest();
     void requestFit() { fit_ = true; }
 
+    /// W's stopwatch; the runner resets it on a restart.
+    const Stopwatch& stopwatch() const { return stopwatch_; }
+    Stopwatch& stopwatch() { return stopwatch_; }
+
     bool statsShown() const { return statsShown_; }
     void setStatsShown(bool shown) { statsShown_ = shown; }
 
@@ -76,6 +83,7 @@ private:
     bool singleStep_ = false;
     bool fit_ = false;
     bool statsShown_ = false;
+    Stopwatch stopwatch_;
     std::optional<JointId> drag_;
     std::optional<BodyId> picked_;
     std::optional<sf::Vector2i> panFrom_;  // pixel where the right button went down / last moved

@@ -61,6 +61,13 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
         std::snprintf(text, sizeof text, "branch %.3g m away (B ends it)", sim.branchDistance());
         items.push_back({text, sf::Color(30, 90, 170)});
     }
+    const Stopwatch& stopwatch = controls.stopwatch();
+    if (stopwatch.state() != Stopwatch::State::Idle || tallest) {
+        const bool running = stopwatch.state() == Stopwatch::State::Running;
+        std::snprintf(text, sizeof text, running ? "stopwatch %.3f s (W stops)" : "stopwatch stopped: %.3f s (W restarts)",
+                      stopwatch.reading(sim.time));
+        items.push_back({text, sf::Color(120, 60, 160)});
+    }
     if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
         std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
                       pace.pace(), maxStepsPerFrame);
@@ -120,6 +127,7 @@ void Runner::restart() {
         keptDrawing = simulation_->debugDraw;
     }
     loop_->controls.forgetDrag();  // its joint lives in the old world
+    loop_->controls.stopwatch().reset();  // simulated time starts again at 0
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
