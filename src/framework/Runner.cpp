@@ -15,6 +15,7 @@
 #include "physim/framework/RigidBody.hpp"
 
 #include "Display.hpp"
+#include "Instruments.hpp"
 #include "Interrupts.hpp"
 #include "Overlay.hpp"
 
@@ -127,7 +128,7 @@ void Runner::restart() {
         keptDrawing = simulation_->debugDraw;
     }
     loop_->controls.forgetDrag();  // its joint lives in the old world
-    loop_->controls.stopwatch().reset();  // simulated time starts again at 0
+    loop_->controls.resetInstruments();  // simulated time starts again at 0
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
@@ -334,6 +335,7 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         sim.onRender(window);
         if (const World* branch = sim.branch()) drawGhosts(*window, sim.view, *branch);
         drawDebug(*window, sim.view, sim.world(), sim.debugDraw, sim.debugRays());
+        if (overlay_) drawMeasurement(*window, sim.view, loop_->controls.measurement(), *overlay_);
         drawOverlay(*window);
         if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it
     }

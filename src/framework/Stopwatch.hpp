@@ -15,8 +15,6 @@ public:
     /// running (0 when simTime lies before the start, after a scrub back past it).
     double reading(double simTime) const;
     State state() const { return state_; }
-    /// Back to Idle (a restart: simulated time starts again at 0).
-    void reset() { state_ = State::Idle; }
 
 private:
     State state_ = State::Idle;

@@ -1,0 +1,69 @@
+#include "Instruments.hpp"
+
+#include "Lines.hpp"
+#include "Measure.hpp"
+#include "Overlay.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <vector>
+
+namespace physim {
+namespace {
+
+constexpr float kTickPixels = 7.f;    // half-length of the tape's end ticks
+constexpr float kArcPixels = 36.f;    // the protractor's arc radius (less for shorter arms)
+constexpr int kArcSegments = 32;
+const sf::Color kTape(210, 90, 0), kProtractor(150, 40, 170);
+
+float length(sf::Vector2f d) { return std::hypot(d.x, d.y); }
+
+}  // namespace
+
+void drawMeasurement(sf::RenderTarget& target, const View& view, const Measurement& measurement,
+                     const Overlay& overlay) {
+    if (measurement.kind() == Measurement::Kind::None) return;
+    const sf::Transform toPixels = view.worldToPixels(target.getSize());
+    std::vector<sf::Vector2f> px;
+    for (const Vec2& p : measurement.points())
+        px.push_back(toPixels.transformPoint(static_cast<float>(p.x()), static_cast<float>(p.y())));
+    Lines lines;
+    char text[64];
+    if (const std::optional<double> metres = measurement.length()) {
+        const sf::Vector2f d = px[1] - px[0];
+        lines.add(px[0], px[1], kTape);
+        if (const float len = length(d); len > 0.f) {
+            const sf::Vector2f n = (kTickPixels / len) * sf::Vector2f(-d.y, d.x);
+            lines.add(px[0] - n, px[0] + n, kTape);
+            lines.add(px[1] - n, px[1] + n, kTape);
+        }
+        lines.draw(target);
+        std::snprintf(text, sizeof text, "%.3f m", *metres);
+        overlay.drawLabel(target, 0.5f * (px[0] + px[1]) + sf::Vector2f(8.f, 8.f), text);
+        return;
+    }
+    // The protractor: its arms, and an arc between them the short way round.
+    for (std::size_t i = 1; i < px.size(); ++i) lines.add(px[0], px[i], kProtractor);
+    const std::optional<double> degrees = measurement.angle();
+    if (degrees) {
+        const sf::Vector2f u = px[1] - px[0], v = px[2] - px[0];
+        const float radius = std::min({kArcPixels, 0.8f * length(u), 0.8f * length(v)});
+        const float from = std::atan2(u.y, u.x);
+        const float sweep = std::remainder(std::atan2(v.y, v.x) - from, 2.f * static_cast<float>(M_PI));
+        sf::Vector2f last = px[0] + radius * sf::Vector2f(std::cos(from), std::sin(from));
+        for (int i = 1; i <= kArcSegments; ++i) {
+            const float a = from + sweep * static_cast<float>(i) / kArcSegments;
+            const sf::Vector2f next = px[0] + radius * sf::Vector2f(std::cos(a), std::sin(a));
+            lines.add(last, next, kProtractor);
+            last = next;
+        }
+    }
+    lines.draw(target);
+    if (degrees) std::snprintf(text, sizeof text, "%.1f\u00b0", *degrees);
+    else std::snprintf(text, sizeof text, "angle: drag an arm, then click");
+    overlay.drawLabel(target, px[0] + sf::Vector2f(10.f, 10.f), text);
+}
+
+}  // namespace physim

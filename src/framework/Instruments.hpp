@@ -1,0 +1,20 @@
+#pragma once
+// The window's instruments drawn over the scene, in pixels: the tape measure and protractor with their readings.
+// Internal to the runner.
+
+#include "physim/framework/View.hpp"
+
+namespace sf {
+class RenderTarget;
+}
+
+namespace physim {
+
+class Measurement;
+class Overlay;
+
+/// Draws `measurement` (nothing for none) with its reading, into a target whose current view is the pixel view.
+void drawMeasurement(sf::RenderTarget& target, const View& view, const Measurement& measurement,
+                     const Overlay& overlay);
+
+}  // namespace physim
