@@ -10,6 +10,7 @@
 //   Tab          statistics on or off
 //   W            stopwatch in simulated seconds: start, stop, again a new start
 //   M + drag     tape measure (m); A + drag, then a click: protractor (degrees). A plain click clears them.
+//   L            trails: recent paths of the moving bodies' centres of mass
 //   1 to 6       debug draw: contacts, bounding boxes, velocities, joints, centres of mass, sleeping bodies
 
 #include "physim/core/Joint.hpp"
@@ -66,6 +67,8 @@ public:
     /// Stopwatch and measurement cleared (a restart: time starts again, the scene may be another).
     void resetInstruments();
 
+    bool trailsShown() const { return trailsShown_; }
+
     bool statsShown() const { return statsShown_; }
     void setStatsShown(bool shown) { statsShown_ = shown; }
 
@@ -88,6 +91,7 @@ private:
     bool singleStep_ = false;
     bool fit_ = false;
     bool statsShown_ = false;
+    bool trailsShown_ = false;
     Stopwatch stopwatch_;
     Measurement measurement_;
     bool tapeKey_ = false;        // M is held

@@ -3,6 +3,7 @@
 #include "Lines.hpp"
 #include "Measure.hpp"
 #include "Overlay.hpp"
+#include "Trails.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,11 +17,33 @@ namespace {
 constexpr float kTickPixels = 7.f;    // half-length of the tape's end ticks
 constexpr float kArcPixels = 36.f;    // the protractor's arc radius (less for shorter arms)
 constexpr int kArcSegments = 32;
-const sf::Color kTape(210, 90, 0), kProtractor(150, 40, 170);
+constexpr float kTrailPixels = 1.5f;  // trail width
+const sf::Color kTape(210, 90, 0), kProtractor(150, 40, 170), kTrail(20, 60, 150);
 
 float length(sf::Vector2f d) { return std::hypot(d.x, d.y); }
 
 }  // namespace
+
+void drawTrails(sf::RenderTarget& target, const View& view, const Trails& trails) {
+    const sf::Transform toPixels = view.worldToPixels(target.getSize());
+    Lines lines(kTrailPixels);
+    for (const Trails::Entry& e : trails.entries()) {
+        const Trail& trail = e.trail;
+        const std::size_t n = trail.size();
+        if (n < 2) continue;
+        sf::Color older = kTrail, newer = kTrail;
+        sf::Vector2f from = toPixels.transformPoint(static_cast<float>(trail[0].x()), static_cast<float>(trail[0].y()));
+        for (std::size_t i = 1; i < n; ++i) {
+            const sf::Vector2f to =
+                toPixels.transformPoint(static_cast<float>(trail[i].x()), static_cast<float>(trail[i].y()));
+            older.a = static_cast<sf::Uint8>(220 * (i - 1) / (n - 1));
+            newer.a = static_cast<sf::Uint8>(220 * i / (n - 1));
+            lines.add(from, to, older, newer);
+            from = to;
+        }
+    }
+    lines.draw(target);
+}
 
 void drawMeasurement(sf::RenderTarget& target, const View& view, const Measurement& measurement,
                      const Overlay& overlay) {

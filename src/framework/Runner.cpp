@@ -88,6 +88,31 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
     return items;
 }
 
+// After a step: each traced body's centre of mass, the picked body first, then the dynamic bodies already traced
+// or faster than kTrailStartSpeed (a resting body's trail would be a dot, and would take a place under the cap).
+// `positions`: a buffer kept between steps.
+constexpr double kTrailStartSpeed = 0.1;  // m/s
+void recordTrails(Trails& trails, std::vector<std::pair<BodyId, Vec2>>& positions, std::optional<BodyId> picked,
+                  const World& world) {
+    positions.clear();
+    const bool tracePicked = picked && world.contains(*picked) && world.type(*picked) == BodyType::Dynamic;
+    if (tracePicked) positions.emplace_back(*picked, world.centerOfMass(*picked));
+    const auto before = [](BodyId a, BodyId b) {
+        return a.index != b.index ? a.index < b.index : a.generation < b.generation;
+    };
+    std::vector<BodyId> traced;  // at most maxBodies, sorted to be looked up
+    for (const Trails::Entry& e : trails.entries()) traced.push_back(e.body);
+    std::sort(traced.begin(), traced.end(), before);
+    for (BodyId id : world.bodies()) {
+        if (positions.size() >= trails.maxBodies()) break;
+        if (world.type(id) != BodyType::Dynamic || (tracePicked && id == *picked)) continue;
+        if (std::binary_search(traced.begin(), traced.end(), id, before) ||
+            world.velocity(id).norm() > kTrailStartSpeed)
+            positions.emplace_back(id, world.centerOfMass(id));
+    }
+    trails.record(positions);
+}
+
 }  // namespace
 
 Runner::Runner(SimulationFactory factory, RunOptions options)
@@ -129,6 +154,7 @@ void Runner::restart() {
     }
     loop_->controls.forgetDrag();  // its joint lives in the old world
     loop_->controls.resetInstruments();  // simulated time starts again at 0
+    loop_->trails.clear();
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
@@ -217,6 +243,8 @@ void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
     if (recorder_) recorder_->sample(sim);
+    if (loop_->controls.trailsShown()) 
+        recordTrails(loop_->trails, loop_->trailPositions, loop_->controls.picked(), sim.world());
     for (LivePlot& plot : livePlots_) {
         while (!plot.points.empty() && plot.points.back().first > sim.time - 0.5 * sim.fixedTimeStep())
             plot.points.pop_back();
@@ -269,6 +297,7 @@ double Runner::scrubTo(double time) {
     if (time > sim.time + 0.5 * dt) {
         const auto steps = static_cast<long long>(std::floor((time - sim.time) / dt + 0.5));
         for (long long i = 0; i < steps; ++i) oneStepFrame(recording_);
+        loop_->trails.clear();  // as going back: a scrub starts the paths anew
         return sim.time;
     }
     // Back: the replayed steps repeat the trace's points (fixedStep adds none), and the later ones go.
@@ -278,6 +307,7 @@ double Runner::scrubTo(double time) {
     for (LivePlot& plot : livePlots_)
         while (!plot.points.empty() && plot.points.back().first > last) plot.points.pop_back();
     if (!sim.branch()) branchTrace_.clear();
+    loop_->trails.clear();  // the paths led to the state left behind
     return restored;
 }
 
@@ -329,12 +359,14 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     sim.onDrawGraphs();
     if (recording_ && steps > 0) timeline_.record(sim);  // the frame's end: what a scrub lands on
     if (loop_->controls.takeFitRequest()) fitView();
+    if (!loop_->controls.trailsShown() && !loop_->trails.entries().empty()) loop_->trails.clear();  // L turned them off
     if (window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
         sim.onRender(window);
         if (const World* branch = sim.branch()) drawGhosts(*window, sim.view, *branch);
         drawDebug(*window, sim.view, sim.world(), sim.debugDraw, sim.debugRays());
+        if (loop_->controls.trailsShown()) drawTrails(*window, sim.view, loop_->trails);
         if (overlay_) drawMeasurement(*window, sim.view, loop_->controls.measurement(), *overlay_);
         drawOverlay(*window);
         if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it

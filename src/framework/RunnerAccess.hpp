@@ -6,6 +6,7 @@
 #include "FixedStepAccumulator.hpp"
 #include "PaceMeter.hpp"
 #include "Stats.hpp"
+#include "Trails.hpp"
 
 #include "physim/framework/Runner.hpp"
 
@@ -18,6 +19,10 @@ struct Runner::Loop {
     Controls controls;
     PaceMeter pace;
     StepTimes stepTimes;
+    /// L's trails: 200 positions a body (5 s at 40 Hz), at most 64 bodies (the picked one first, then those that
+    /// moved: Runner.cpp's recordTrails), recorded after each step while shown.
+    Trails trails{200, 64};
+    std::vector<std::pair<BodyId, Vec2>> trailPositions;  // reused each step
 };
 
 /// A runner's internals, for tests that drive it frame by frame and look at what the window would show.
@@ -25,6 +30,7 @@ struct RunnerAccess {
     static const FixedStepAccumulator& accumulator(const Runner& runner) { return runner.loop_->accumulator; }
     static Controls& controls(Runner& runner) { return runner.loop_->controls; }
     static const PaceMeter& pace(const Runner& runner) { return runner.loop_->pace; }
+    static const Trails& trails(const Runner& runner) { return runner.loop_->trails; }
     /// Records the timeline as a window run does (headless runs keep none).
     static void recordTimeline(Runner& runner) { runner.recording_ = true; }
 };
