@@ -143,6 +143,8 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 statsShown_ = !statsShown_;
             } else if (key == sf::Keyboard::W) {
                 stopwatch_.press(sim.time);
+            } else if (key == sf::Keyboard::V) {
+                arrowsShown_ = !arrowsShown_;
             } else if (key == sf::Keyboard::L) {
                 trailsShown_ = !trailsShown_;
             } else if (key == sf::Keyboard::M) {
@@ -173,7 +175,7 @@ void Controls::resetInstruments() {
 
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   B branch   [ ] slower/faster   F fit   "
-           "Tab stats   W stopwatch   M+drag tape   A+drag, click: angle   L trails   "
+           "Tab stats   W stopwatch   M+drag tape   A+drag, click: angle   L trails   V arrows   "
            "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }

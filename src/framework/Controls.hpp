@@ -11,6 +11,7 @@
 //   W            stopwatch in simulated seconds: start, stop, again a new start
 //   M + drag     tape measure (m); A + drag, then a click: protractor (degrees). A plain click clears them.
 //   L            trails: recent paths of the moving bodies' centres of mass
+//   V            arrows: velocity, weight and contact force of each body, at scales the bar states
 //   1 to 6       debug draw: contacts, bounding boxes, velocities, joints, centres of mass, sleeping bodies
 
 #include "physim/core/Joint.hpp"
@@ -68,6 +69,7 @@ public:
     void resetInstruments();
 
     bool trailsShown() const { return trailsShown_; }
+    bool arrowsShown() const { return arrowsShown_; }
 
     bool statsShown() const { return statsShown_; }
     void setStatsShown(bool shown) { statsShown_ = shown; }
@@ -92,6 +94,7 @@ private:
     bool fit_ = false;
     bool statsShown_ = false;
     bool trailsShown_ = false;
+    bool arrowsShown_ = false;
     Stopwatch stopwatch_;
     Measurement measurement_;
     bool tapeKey_ = false;        // M is held

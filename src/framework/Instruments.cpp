@@ -1,5 +1,6 @@
 #include "Instruments.hpp"
 
+#include "Arrows.hpp"
 #include "Lines.hpp"
 #include "Measure.hpp"
 #include "Overlay.hpp"
@@ -18,7 +19,9 @@ constexpr float kTickPixels = 7.f;    // half-length of the tape's end ticks
 constexpr float kArcPixels = 36.f;    // the protractor's arc radius (less for shorter arms)
 constexpr int kArcSegments = 32;
 constexpr float kTrailPixels = 1.5f;  // trail width
+constexpr double kArrowPixels = 90.0;  // the longest arrow's length, at most
 const sf::Color kTape(210, 90, 0), kProtractor(150, 40, 170), kTrail(20, 60, 150);
+const sf::Color kVelocityArrow(0, 140, 0), kWeightArrow(200, 30, 30), kContactArrow(30, 60, 220);
 
 float length(sf::Vector2f d) { return std::hypot(d.x, d.y); }
 
@@ -43,6 +46,38 @@ void drawTrails(sf::RenderTarget& target, const View& view, const Trails& trails
         }
     }
     lines.draw(target);
+}
+
+std::string arrowsLegendText(double velocityPerMetre, double forcePerMetre) {
+    char text[160];
+    std::snprintf(text, sizeof text, "arrows: velocity (green) 1 m = %g m/s, weight (red) and contact (blue) 1 m = %g N",
+                  velocityPerMetre, forcePerMetre);
+    return text;
+}
+
+std::string drawArrows(sf::RenderTarget& target, const View& view, const World& world, double dt,
+                       ArrowScale& velocityScale, ArrowScale& forceScale) {
+    const std::vector<BodyArrows> arrows = bodyArrows(world, dt);
+    double fastest = 0.0, strongest = 0.0;
+    for (const BodyArrows& a : arrows) {
+        fastest = std::max(fastest, a.velocity.norm());
+        strongest = std::max({strongest, a.weight.norm(), a.contact.norm()});
+    }
+    const double longest = kArrowPixels / view.pixelsPerMetre;  // m
+    const double perVelocity = velocityScale.update(fastest, longest), perForce = forceScale.update(strongest, longest);
+    const sf::Transform toPixels = view.worldToPixels(target.getSize());
+    const auto pixel = [&](const Vec2& p) {
+        return toPixels.transformPoint(static_cast<float>(p.x()), static_cast<float>(p.y()));
+    };
+    Lines lines;
+    for (const BodyArrows& a : arrows) {
+        const sf::Vector2f from = pixel(a.at);
+        lines.arrow(from, pixel(a.at + a.weight / perForce), kWeightArrow);
+        lines.arrow(from, pixel(a.at + a.contact / perForce), kContactArrow);
+        lines.arrow(from, pixel(a.at + a.velocity / perVelocity), kVelocityArrow);
+    }
+    lines.draw(target);
+    return arrowsLegendText(perVelocity, perForce);
 }
 
 void drawMeasurement(sf::RenderTarget& target, const View& view, const Measurement& measurement,

@@ -46,7 +46,8 @@ std::string showScale(double scale) {
 
 // The overlay bar's text: status, then the keys. `tallest`: with every optional item, for the bar's most height.
 std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& controls, const PaceMeter& pace,
-                                        int maxStepsPerFrame, double framesPerSecond, bool tallest) {
+                                        int maxStepsPerFrame, double framesPerSecond, const std::string& arrowsLegend,
+                                        bool tallest) {
     const sf::Color warning(190, 40, 0), keyColor(85, 85, 85);
     char text[160];
     std::vector<Overlay::Item> items;
@@ -69,6 +70,8 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
                       stopwatch.reading(sim.time));
         items.push_back({text, sf::Color(120, 60, 160)});
     }
+    if (!arrowsLegend.empty() || tallest)
+        items.push_back({tallest && arrowsLegend.empty() ? arrowsLegendText(500.0, 5000.0) : arrowsLegend});
     if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
         std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
                       pace.pace(), maxStepsPerFrame);
@@ -326,7 +329,7 @@ sf::FloatRect Runner::sceneArea() const {
         // The bar at its tallest (paused, the catch-up warning shown), so the scene stays clear of it.
         const std::vector<Overlay::Item> items =
             overlayItems(*simulation_, loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                         framesPerSecond_, true);
+                         framesPerSecond_, loop_->arrowsLegend, true);
         top = overlay_->barHeight(items, static_cast<float>(windowSize_.x) - left);
     }
     return {left, top, static_cast<float>(windowSize_.x) - left, static_cast<float>(windowSize_.y) - top};
@@ -367,6 +370,11 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
         if (const World* branch = sim.branch()) drawGhosts(*window, sim.view, *branch);
         drawDebug(*window, sim.view, sim.world(), sim.debugDraw, sim.debugRays());
         if (loop_->controls.trailsShown()) drawTrails(*window, sim.view, loop_->trails);
+        if (loop_->controls.arrowsShown())
+            loop_->arrowsLegend = drawArrows(*window, sim.view, sim.world(), sim.fixedTimeStep(), loop_->velocityScale,
+                                             loop_->forceScale);
+        else
+            loop_->arrowsLegend.clear();
         if (overlay_) drawMeasurement(*window, sim.view, loop_->controls.measurement(), *overlay_);
         drawOverlay(*window);
         if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it
@@ -478,7 +486,7 @@ float Runner::drawOverlay(sf::RenderWindow& window) {
     const float height =
         overlay_->drawBar(window, left, static_cast<float>(window.getSize().x) - left,
                           overlayItems(simulation(), loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                                       framesPerSecond_, false));
+                                       framesPerSecond_, loop_->arrowsLegend, false));
     if (loop_->controls.statsShown())
         overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), loop_->stepTimes));
     return height;

@@ -2,6 +2,7 @@
 // The runner's frame-loop state, and the way physim's own tests reach it. Internal: Runner.hpp names
 // RunnerAccess (its friend) and Runner::Loop only, so the installed header needs none of these types.
 
+#include "Arrows.hpp"
 #include "Controls.hpp"
 #include "FixedStepAccumulator.hpp"
 #include "PaceMeter.hpp"
@@ -23,6 +24,9 @@ struct Runner::Loop {
     /// moved: Runner.cpp's recordTrails), recorded after each step while shown.
     Trails trails{200, 64};
     std::vector<std::pair<BodyId, Vec2>> trailPositions;  // reused each step
+    /// V's arrows: their scales, and the bar's legend saying them (empty while they are off).
+    ArrowScale velocityScale, forceScale;
+    std::string arrowsLegend;
 };
 
 /// A runner's internals, for tests that drive it frame by frame and look at what the window would show.
