@@ -113,7 +113,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 sim.view.pan(pixel - *panFrom_);
                 panFrom_ = pixel;
             }
-            measurement_.move(sim.view.toWorld(pixel, windowSize));
+            if (measurement_.kind() != Measurement::Kind::None) measurement_.move(sim.view.toWorld(pixel, windowSize));
             if (drag_) {
                 if (sim.world().contains(*drag_))
                     sim.world().setMouseJointTarget(*drag_, sim.view.toWorld(pixel, windowSize));

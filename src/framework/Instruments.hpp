@@ -1,6 +1,6 @@
 #pragma once
-// The window's instruments drawn over the scene, in pixels: trails, the tape measure and protractor with readings.
-// Internal to the runner.
+// The window's instruments drawn over the scene, in pixels: trails, arrows, the tape measure and protractor with
+// their readings. Internal to the runner.
 
 #include "physim/framework/View.hpp"
 

@@ -44,7 +44,8 @@ std::string showScale(double scale) {
     return text;
 }
 
-// The overlay bar's text: status, then the keys. `tallest`: with every optional item, for the bar's most height.
+// The overlay bar's text: status, then the keys. `arrowsLegend`: V's scales, empty while off. `tallest`: with every
+// optional item, for the bar's most height.
 std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& controls, const PaceMeter& pace,
                                         int maxStepsPerFrame, double framesPerSecond, const std::string& arrowsLegend,
                                         bool tallest) {
@@ -246,7 +247,7 @@ void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
     if (recorder_) recorder_->sample(sim);
-    if (loop_->controls.trailsShown()) 
+    if (loop_->controls.trailsShown())
         recordTrails(loop_->trails, loop_->trailPositions, loop_->controls.picked(), sim.world());
     for (LivePlot& plot : livePlots_) {
         while (!plot.points.empty() && plot.points.back().first > sim.time - 0.5 * sim.fixedTimeStep())
@@ -326,7 +327,8 @@ sf::FloatRect Runner::sceneArea() const {
     const float left = panel_ ? std::min(panel_->width(), static_cast<float>(windowSize_.x)) : 0.f;
     float top = 0.f;
     if (overlay_ && simulation_) {
-        // The bar at its tallest (paused, the catch-up warning shown), so the scene stays clear of it.
+        // The bar at its tallest (paused, the instruments' readings and the catch-up warning shown), so the scene
+        // stays clear of it.
         const std::vector<Overlay::Item> items =
             overlayItems(*simulation_, loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
                          framesPerSecond_, loop_->arrowsLegend, true);
