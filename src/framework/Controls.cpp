@@ -90,14 +90,21 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
             const sf::Vector2i pixel(event.mouseButton.x, event.mouseButton.y);
             if (event.mouseButton.button == sf::Mouse::Left) {
                 releaseDrag(sim);
-                startDrag(sim, sim.view.toWorld(pixel, windowSize));
+                const Vec2 point = sim.view.toWorld(pixel, windowSize);
+                const Measurement::Kind kind = tapeKey_         ? Measurement::Kind::Tape
+                                               : protractorKey_ ? Measurement::Kind::Protractor
+                                                                : Measurement::Kind::None;
+                if (!measurement_.press(kind, point)) startDrag(sim, point);
             } else if (event.mouseButton.button == sf::Mouse::Right) {
                 panFrom_ = pixel;
             }
             return true;
         }
         case sf::Event::MouseButtonReleased:
-            if (event.mouseButton.button == sf::Mouse::Left) releaseDrag(sim);
+            if (event.mouseButton.button == sf::Mouse::Left) {
+                releaseDrag(sim);
+                measurement_.release(sim.view.toWorld({event.mouseButton.x, event.mouseButton.y}, windowSize));
+            }
             if (event.mouseButton.button == sf::Mouse::Right) panFrom_.reset();
             return true;
         case sf::Event::MouseMoved: {
@@ -106,6 +113,7 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 sim.view.pan(pixel - *panFrom_);
                 panFrom_ = pixel;
             }
+            if (measurement_.kind() != Measurement::Kind::None) measurement_.move(sim.view.toWorld(pixel, windowSize));
             if (drag_) {
                 if (sim.world().contains(*drag_))
                     sim.world().setMouseJointTarget(*drag_, sim.view.toWorld(pixel, windowSize));
@@ -133,18 +141,41 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 fit_ = true;
             } else if (key == sf::Keyboard::Tab) {
                 statsShown_ = !statsShown_;
+            } else if (key == sf::Keyboard::W) {
+                stopwatch_.press(sim.time);
+            } else if (key == sf::Keyboard::V) {
+                arrowsShown_ = !arrowsShown_;
+            } else if (key == sf::Keyboard::L) {
+                trailsShown_ = !trailsShown_;
+            } else if (key == sf::Keyboard::M) {
+                tapeKey_ = true;
+            } else if (key == sf::Keyboard::A) {
+                protractorKey_ = true;
             } else {
                 return false;
             }
             return true;
         }
+        case sf::Event::KeyReleased:
+            if (event.key.code == sf::Keyboard::M) tapeKey_ = false;
+            else if (event.key.code == sf::Keyboard::A) protractorKey_ = false;
+            else return false;
+            return true;
+        case sf::Event::LostFocus:  // the key's release goes to another window
+            tapeKey_ = protractorKey_ = false;
+            return false;
         default: return false;
     }
 }
 
+void Controls::resetInstruments() {
+    stopwatch_ = Stopwatch();
+    measurement_.clear();
+}
+
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   B branch   [ ] slower/faster   F fit   "
-           "Tab stats   "
+           "Tab stats   W stopwatch   M+drag tape   A+drag, click: angle   L trails   V arrows   "
            "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }

@@ -8,10 +8,17 @@
 //   [ and ]      slower / faster: time scale halved or doubled, 1/16x to 8x
 //   F            fits the view to the scene
 //   Tab          statistics on or off
+//   W            stopwatch in simulated seconds: start, stop, again a new start
+//   M + drag     tape measure (m); A + drag, then a click: protractor (degrees). A plain click clears them.
+//   L            trails: recent paths of the moving bodies' centres of mass
+//   V            arrows: velocity, weight and contact force of each body, at scales the bar states
 //   1 to 6       debug draw: contacts, bounding boxes, velocities, joints, centres of mass, sleeping bodies
 
 #include "physim/core/Joint.hpp"
 #include "physim/framework/DebugDraw.hpp"
+
+#include "Measure.hpp"
+#include "Stopwatch.hpp"
 
 #include <SFML/System/Vector2.hpp>
 
@@ -54,6 +61,16 @@ public:
     bool takeFitRequest();
     void requestFit() { fit_ = true; }
 
+    /// W's stopwatch.
+    const Stopwatch& stopwatch() const { return stopwatch_; }
+    /// The tape measure or protractor laid in the window, if any.
+    const Measurement& measurement() const { return measurement_; }
+    /// Stopwatch and measurement cleared (a restart: time starts again, the scene may be another).
+    void resetInstruments();
+
+    bool trailsShown() const { return trailsShown_; }
+    bool arrowsShown() const { return arrowsShown_; }
+
     bool statsShown() const { return statsShown_; }
     void setStatsShown(bool shown) { statsShown_ = shown; }
 
@@ -76,6 +93,12 @@ private:
     bool singleStep_ = false;
     bool fit_ = false;
     bool statsShown_ = false;
+    bool trailsShown_ = false;
+    bool arrowsShown_ = false;
+    Stopwatch stopwatch_;
+    Measurement measurement_;
+    bool tapeKey_ = false;        // M is held
+    bool protractorKey_ = false;  // A is held
     std::optional<JointId> drag_;
     std::optional<BodyId> picked_;
     std::optional<sf::Vector2i> panFrom_;  // pixel where the right button went down / last moved

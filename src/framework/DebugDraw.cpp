@@ -1,5 +1,7 @@
 #include "physim/framework/DebugDraw.hpp"
 
+#include "Lines.hpp"
+
 #include "physim/core/Collide.hpp"
 #include "physim/core/World.hpp"
 
@@ -19,7 +21,6 @@ namespace {
 
 constexpr float kNormalPixels = 36.f;   // drawn length of a contact normal
 constexpr float kPointPixels = 4.f;     // radius of a contact point's dot
-constexpr float kLinePixels = 2.f;      // width of every line
 constexpr float kCrossPixels = 6.f;     // half-length of a centre-of-mass cross
 constexpr float kPinPixels = 5.f;       // radius of a revolute pin's ring
 constexpr float kLimitPixels = 22.f;    // length of a revolute limit's ray
@@ -37,32 +38,6 @@ sf::Color faded(sf::Color c) {
     c.a = 140;
     return c;
 }
-
-// Pixel-space lines kLinePixels wide (quads: GL lines are one pixel), drawn in one call.
-class Lines {
-public:
-    void add(sf::Vector2f a, sf::Vector2f b, sf::Color c) {
-        const sf::Vector2f d = b - a;
-        const float len = std::hypot(d.x, d.y);
-        if (len <= 0.f) return;
-        const sf::Vector2f n = (0.5f * kLinePixels / len) * sf::Vector2f(-d.y, d.x);
-        for (const sf::Vector2f& p : {a + n, b + n, b - n, a - n}) lines_.append(sf::Vertex(p, c));
-    }
-    void arrow(sf::Vector2f from, sf::Vector2f to, sf::Color c) {
-        add(from, to, c);
-        const sf::Vector2f d = to - from;
-        const float len = std::hypot(d.x, d.y);
-        if (len < 1.f) return;
-        const sf::Vector2f u = d / len, n(-u.y, u.x);
-        const float head = std::min(8.f, 0.4f * len);
-        add(to, to - head * u + 0.5f * head * n, c);
-        add(to, to - head * u - 0.5f * head * n, c);
-    }
-    void draw(sf::RenderTarget& target) const { target.draw(lines_); }
-
-private:
-    sf::VertexArray lines_{sf::Quads};
-};
 
 void drawContacts(sf::RenderTarget& target, const sf::Transform& toPixels, const std::vector<Manifold>& contacts,
                   bool resting, Lines& lines) {

@@ -83,4 +83,20 @@ void Overlay::drawPanel(sf::RenderTarget& target, float top, const std::string& 
     target.draw(t);
 }
 
+void Overlay::drawLabel(sf::RenderTarget& target, sf::Vector2f at, const std::string& text) const {
+    if (!available_) return;
+    sf::Text t(sf::String::fromUtf8(text.begin(), text.end()), font_, kFontSize);
+    t.setFillColor(sf::Color(30, 30, 30));
+    const sf::FloatRect bounds = t.getLocalBounds();
+    const float pad = 0.5f * kPadding;
+    sf::RectangleShape box({bounds.width + 2 * pad, bounds.top + bounds.height + 2 * pad});
+    box.setPosition(at);
+    box.setFillColor(sf::Color(255, 255, 255, 215));
+    box.setOutlineColor(sf::Color(190, 190, 190));
+    box.setOutlineThickness(-1.f);
+    target.draw(box);
+    t.setPosition(at.x + pad, at.y + pad);
+    target.draw(t);
+}
+
 }  // namespace physim

@@ -4,6 +4,7 @@
 
 #include <SFML/Graphics/Color.hpp>
 #include <SFML/Graphics/Font.hpp>
+#include <SFML/System/Vector2.hpp>
 
 #include <string>
 #include <vector>
@@ -32,6 +33,8 @@ public:
     float drawBar(sf::RenderTarget& target, float left, float width, const std::vector<Item>& items) const;
     /// A box of text at the window's right edge, `top` px down.
     void drawPanel(sf::RenderTarget& target, float top, const std::string& text) const;
+    /// A small box of UTF-8 text with its top-left corner at `at` (px), for a reading beside what it measures.
+    void drawLabel(sf::RenderTarget& target, sf::Vector2f at, const std::string& text) const;
 
 private:
     // Each item's position (px from the bar's top-left), items wrapped greedily into lines of `width`.

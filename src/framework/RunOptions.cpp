@@ -182,7 +182,11 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  run is recorded as it goes), Home back to the start, B start or end a branch, [ ] slower / faster,\n"
        << "  F fit the view, Tab statistics, 1-8 debug drawing (contacts, boxes, velocities, joints, centres,\n"
        << "  sleep, sensors, rays), left drag moves a body, right drag pans, the wheel zooms about the cursor,\n"
-       << "  Esc quits; the simulation may add its own keys.\n"
+       << "  Esc quits; the simulation may add its own keys. Instruments: W stopwatch in simulated seconds (start,\n"
+       << "  stop, start anew); M + left drag tape measure (m); A + left drag along one arm, then a click, protractor\n"
+       << "  (degrees); a plain click clears them; L trails (the last 5 s of path of up to 64 bodies, the picked one\n"
+       << "  and those that moved faster than 0.1 m/s; a scrub or restart clears them); V arrows from each body's\n"
+       << "  centre of mass: velocity, weight and contact force, at the scales the bar states.\n"
        << "Ctrl-C (SIGINT) or SIGTERM stops the run at the end of its step and writes --out, with a snapshot that\n"
        << "  --from resumes; a second one stops it at once.\n"
        << "exit codes: 0 success, 1 error while running, 2 bad arguments, 130 stopped by SIGINT, 143 by SIGTERM.\n";

@@ -15,6 +15,7 @@
 #include "physim/framework/RigidBody.hpp"
 
 #include "Display.hpp"
+#include "Instruments.hpp"
 #include "Interrupts.hpp"
 #include "Overlay.hpp"
 
@@ -43,9 +44,11 @@ std::string showScale(double scale) {
     return text;
 }
 
-// The overlay bar's text: status, then the keys. `tallest`: with every optional item, for the bar's most height.
+// The overlay bar's text: status, then the keys. `arrowsLegend`: V's scales, empty while off. `tallest`: with every
+// optional item, for the bar's most height.
 std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& controls, const PaceMeter& pace,
-                                        int maxStepsPerFrame, double framesPerSecond, bool tallest) {
+                                        int maxStepsPerFrame, double framesPerSecond, const std::string& arrowsLegend,
+                                        bool tallest) {
     const sf::Color warning(190, 40, 0), keyColor(85, 85, 85);
     char text[160];
     std::vector<Overlay::Item> items;
@@ -61,6 +64,15 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
         std::snprintf(text, sizeof text, "branch %.3g m away (B ends it)", sim.branchDistance());
         items.push_back({text, sf::Color(30, 90, 170)});
     }
+    const Stopwatch& stopwatch = controls.stopwatch();
+    if (stopwatch.state() != Stopwatch::State::Idle || tallest) {
+        const bool running = stopwatch.state() == Stopwatch::State::Running;
+        std::snprintf(text, sizeof text, running ? "stopwatch %.3f s (W stops)" : "stopwatch stopped: %.3f s (W restarts)",
+                      stopwatch.reading(sim.time));
+        items.push_back({text, sf::Color(120, 60, 160)});
+    }
+    if (!arrowsLegend.empty() || tallest)
+        items.push_back({tallest && arrowsLegend.empty() ? arrowsLegendText(500.0, 5000.0) : arrowsLegend});
     if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
         std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
                       pace.pace(), maxStepsPerFrame);
@@ -78,6 +90,31 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
         from = to == keys.size() ? to : keys.find_first_not_of(' ', to);
     }
     return items;
+}
+
+// After a step: each traced body's centre of mass, the picked body first, then the dynamic bodies already traced
+// or faster than kTrailStartSpeed (a resting body's trail would be a dot, and would take a place under the cap).
+// `positions`: a buffer kept between steps.
+constexpr double kTrailStartSpeed = 0.1;  // m/s
+void recordTrails(Trails& trails, std::vector<std::pair<BodyId, Vec2>>& positions, std::optional<BodyId> picked,
+                  const World& world) {
+    positions.clear();
+    const bool tracePicked = picked && world.contains(*picked) && world.type(*picked) == BodyType::Dynamic;
+    if (tracePicked) positions.emplace_back(*picked, world.centerOfMass(*picked));
+    const auto before = [](BodyId a, BodyId b) {
+        return a.index != b.index ? a.index < b.index : a.generation < b.generation;
+    };
+    std::vector<BodyId> traced;  // at most maxBodies, sorted to be looked up
+    for (const Trails::Entry& e : trails.entries()) traced.push_back(e.body);
+    std::sort(traced.begin(), traced.end(), before);
+    for (BodyId id : world.bodies()) {
+        if (positions.size() >= trails.maxBodies()) break;
+        if (world.type(id) != BodyType::Dynamic || (tracePicked && id == *picked)) continue;
+        if (std::binary_search(traced.begin(), traced.end(), id, before) ||
+            world.velocity(id).norm() > kTrailStartSpeed)
+            positions.emplace_back(id, world.centerOfMass(id));
+    }
+    trails.record(positions);
 }
 
 }  // namespace
@@ -120,6 +157,8 @@ void Runner::restart() {
         keptDrawing = simulation_->debugDraw;
     }
     loop_->controls.forgetDrag();  // its joint lives in the old world
+    loop_->controls.resetInstruments();  // simulated time starts again at 0
+    loop_->trails.clear();
     simulation_.reset();  // the old simulation (and its graph windows) goes before the new one is made
     simulation_ = factory_();
     if (!simulation_) throw std::runtime_error("physim: the simulation factory returned null");
@@ -208,6 +247,8 @@ void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
     if (recorder_) recorder_->sample(sim);
+    if (loop_->controls.trailsShown())
+        recordTrails(loop_->trails, loop_->trailPositions, loop_->controls.picked(), sim.world());
     for (LivePlot& plot : livePlots_) {
         while (!plot.points.empty() && plot.points.back().first > sim.time - 0.5 * sim.fixedTimeStep())
             plot.points.pop_back();
@@ -260,6 +301,7 @@ double Runner::scrubTo(double time) {
     if (time > sim.time + 0.5 * dt) {
         const auto steps = static_cast<long long>(std::floor((time - sim.time) / dt + 0.5));
         for (long long i = 0; i < steps; ++i) oneStepFrame(recording_);
+        loop_->trails.clear();  // as going back: a scrub starts the paths anew
         return sim.time;
     }
     // Back: the replayed steps repeat the trace's points (fixedStep adds none), and the later ones go.
@@ -269,6 +311,7 @@ double Runner::scrubTo(double time) {
     for (LivePlot& plot : livePlots_)
         while (!plot.points.empty() && plot.points.back().first > last) plot.points.pop_back();
     if (!sim.branch()) branchTrace_.clear();
+    loop_->trails.clear();  // the paths led to the state left behind
     return restored;
 }
 
@@ -284,10 +327,11 @@ sf::FloatRect Runner::sceneArea() const {
     const float left = panel_ ? std::min(panel_->width(), static_cast<float>(windowSize_.x)) : 0.f;
     float top = 0.f;
     if (overlay_ && simulation_) {
-        // The bar at its tallest (paused, the catch-up warning shown), so the scene stays clear of it.
+        // The bar at its tallest (paused, the instruments' readings and the catch-up warning shown), so the scene
+        // stays clear of it.
         const std::vector<Overlay::Item> items =
             overlayItems(*simulation_, loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                         framesPerSecond_, true);
+                         framesPerSecond_, loop_->arrowsLegend, true);
         top = overlay_->barHeight(items, static_cast<float>(windowSize_.x) - left);
     }
     return {left, top, static_cast<float>(windowSize_.x) - left, static_cast<float>(windowSize_.y) - top};
@@ -320,12 +364,20 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     sim.onDrawGraphs();
     if (recording_ && steps > 0) timeline_.record(sim);  // the frame's end: what a scrub lands on
     if (loop_->controls.takeFitRequest()) fitView();
+    if (!loop_->controls.trailsShown() && !loop_->trails.entries().empty()) loop_->trails.clear();  // L turned them off
     if (window) {
         window->clear(sf::Color(235, 235, 235));
         sim.renderEntities(window);
         sim.onRender(window);
         if (const World* branch = sim.branch()) drawGhosts(*window, sim.view, *branch);
         drawDebug(*window, sim.view, sim.world(), sim.debugDraw, sim.debugRays());
+        if (loop_->controls.trailsShown()) drawTrails(*window, sim.view, loop_->trails);
+        if (loop_->controls.arrowsShown())
+            loop_->arrowsLegend = drawArrows(*window, sim.view, sim.world(), sim.fixedTimeStep(), loop_->velocityScale,
+                                             loop_->forceScale);
+        else
+            loop_->arrowsLegend.clear();
+        if (overlay_) drawMeasurement(*window, sim.view, loop_->controls.measurement(), *overlay_);
         drawOverlay(*window);
         if (panel_) panel_->draw(*window, *this, frameSeconds);  // may restart: `sim` is stale after it
     }
@@ -436,7 +488,7 @@ float Runner::drawOverlay(sf::RenderWindow& window) {
     const float height =
         overlay_->drawBar(window, left, static_cast<float>(window.getSize().x) - left,
                           overlayItems(simulation(), loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                                       framesPerSecond_, false));
+                                       framesPerSecond_, loop_->arrowsLegend, false));
     if (loop_->controls.statsShown())
         overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), loop_->stepTimes));
     return height;

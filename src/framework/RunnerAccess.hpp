@@ -2,10 +2,12 @@
 // The runner's frame-loop state, and the way physim's own tests reach it. Internal: Runner.hpp names
 // RunnerAccess (its friend) and Runner::Loop only, so the installed header needs none of these types.
 
+#include "Arrows.hpp"
 #include "Controls.hpp"
 #include "FixedStepAccumulator.hpp"
 #include "PaceMeter.hpp"
 #include "Stats.hpp"
+#include "Trails.hpp"
 
 #include "physim/framework/Runner.hpp"
 
@@ -18,6 +20,13 @@ struct Runner::Loop {
     Controls controls;
     PaceMeter pace;
     StepTimes stepTimes;
+    /// L's trails: 200 positions a body (5 s at 40 Hz), at most 64 bodies (the picked one first, then those that
+    /// moved: Runner.cpp's recordTrails), recorded after each step while shown.
+    Trails trails{200, 64};
+    std::vector<std::pair<BodyId, Vec2>> trailPositions;  // reused each step
+    /// V's arrows: their scales, and the bar's legend saying them (empty while they are off).
+    ArrowScale velocityScale, forceScale;
+    std::string arrowsLegend;
 };
 
 /// A runner's internals, for tests that drive it frame by frame and look at what the window would show.
@@ -25,6 +34,7 @@ struct RunnerAccess {
     static const FixedStepAccumulator& accumulator(const Runner& runner) { return runner.loop_->accumulator; }
     static Controls& controls(Runner& runner) { return runner.loop_->controls; }
     static const PaceMeter& pace(const Runner& runner) { return runner.loop_->pace; }
+    static const Trails& trails(const Runner& runner) { return runner.loop_->trails; }
     /// Records the timeline as a window run does (headless runs keep none).
     static void recordTimeline(Runner& runner) { runner.recording_ = true; }
 };

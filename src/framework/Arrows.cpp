@@ -1,0 +1,65 @@
+#include "Arrows.hpp"
+
+#include "physim/core/Validate.hpp"
+#include "physim/core/World.hpp"
+
+#include <cmath>
+#include <cstddef>
+
+namespace physim {
+
+std::vector<BodyArrows> bodyArrows(const World& world, double dt) {
+    requirePositive("arrows' step", dt);
+    std::vector<BodyArrows> arrows;
+    std::vector<std::size_t> slot;  // body index -> place in `arrows`, or none
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    const Vec2 g = world.settings().gravity;
+    for (BodyId id : world.bodies()) {
+        if (world.type(id) != BodyType::Dynamic) continue;
+        if (id.index >= slot.size()) slot.resize(id.index + 1, none);
+        slot[id.index] = arrows.size();
+        arrows.push_back({id, world.centerOfMass(id), world.velocity(id), world.mass(id) * world.gravityScale(id) * g,
+                          Vec2::Zero()});
+    }
+    const auto add = [&](BodyId body, const Vec2& force) {
+        if (body.index < slot.size() && slot[body.index] != none && arrows[slot[body.index]].body == body)
+            arrows[slot[body.index]].contact += force;
+    };
+    const auto addAll = [&](const std::vector<Manifold>& contacts) {
+        for (const Manifold& m : contacts) {
+            Vec2 onB = Vec2::Zero();  // the normal points from A to B: what B gets, A gets the opposite
+            for (int i = 0; i < m.pointCount; ++i) {
+                const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+                onB += p.normalImpulse * m.normal + p.tangentImpulse * perp(m.normal);
+            }
+            onB /= dt;
+            add(m.bodyB, onB);
+            add(m.bodyA, -onB);
+        }
+    };
+    addAll(world.contacts());
+    addAll(world.sleepingContacts());
+    return arrows;
+}
+
+double roundScaleUp(double value) {
+    requirePositive("arrow scale", value);
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * decade >= value * (1.0 - 1e-12)) return m * decade;  // 1e-12: pow and log10's rounding
+    return 10.0 * decade;
+}
+
+double ArrowScale::update(double largest, double maxLength) {
+    requireNonNegative("largest arrow", largest);
+    requirePositive("arrow length", maxLength);
+    if (largest <= 0.0) {
+        if (perMetre_ == 0.0) perMetre_ = 1.0;  // nothing to show yet: any scale
+        return perMetre_;
+    }
+    const double wanted = largest / maxLength;
+    if (perMetre_ < wanted || perMetre_ > 10.0 * wanted) perMetre_ = roundScaleUp(wanted);
+    return perMetre_;
+}
+
+}  // namespace physim

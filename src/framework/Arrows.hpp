@@ -1,0 +1,44 @@
+#pragma once
+// The window's arrows (key V): each dynamic body's velocity, weight and contact force, drawn from its centre of
+// mass at scales the overlay states ("1 m = 2 m/s"). Internal to the runner; window-free, so it can be tested
+// headless.
+
+#include "physim/core/Body.hpp"
+#include "physim/core/Math.hpp"
+
+#include <vector>
+
+namespace physim {
+
+class World;
+
+struct BodyArrows {
+    BodyId body;
+    Vec2 at = Vec2::Zero();        ///< centre of mass, m
+    Vec2 velocity = Vec2::Zero();  ///< of the centre of mass, m/s
+    Vec2 weight = Vec2::Zero();    ///< m g (with the body's gravity scale), N
+    /// The contacts' mean force on the body over the last step (their impulses over `dt`, friction included), N.
+    Vec2 contact = Vec2::Zero();
+};
+
+/// Every dynamic body's arrows after a step of `dt` seconds (the contacts of sleeping piles included). Throws
+/// std::invalid_argument for a `dt` that is not positive.
+std::vector<BodyArrows> bodyArrows(const World& world, double dt);
+
+/// The smallest of 1, 2 or 5 times a power of ten at least `value` (> 0, finite; std::invalid_argument otherwise).
+double roundScaleUp(double value);
+
+/// How much one metre of arrow stands for (m/s or N per m). Kept while the longest arrow stays between a tenth of
+/// the wanted length and the wanted length, so the legend does not flicker as the scene moves.
+class ArrowScale {
+public:
+    /// `largest`: the largest magnitude to draw (>= 0); `maxLength` (m, > 0): the longest arrow wanted. Returns
+    /// perMetre().
+    double update(double largest, double maxLength);
+    double perMetre() const { return perMetre_; }
+
+private:
+    double perMetre_ = 0.0;  // 0: none chosen yet
+};
+
+}  // namespace physim
