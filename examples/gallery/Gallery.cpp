@@ -8,6 +8,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -60,6 +61,7 @@ void Gallery::draw(sf::RenderWindow& window, Runner& runner, double frameSeconds
     ImGui::TextWrapped("Left drag moves a body, right drag pans, the wheel zooms. The keys are in the bar above "
                        "the scene.");
     ImGui::End();
+    drawEnergy(window, runner);
     imgui_->render();
 }
 
@@ -179,6 +181,66 @@ void Gallery::drawBranch(Runner& runner) {
     itemRects_.emplace_back("branch distance", lastItemRect());
 }
 
+// Energy bars (World::energyLedger), PhET-style, from the scene's start: kinetic, potential's change, what friction,
+// impacts, drag and soft contacts dissipated, the method's residue and the work put in; the last bar, kinetic +
+// potential's change + dissipated - residue - work, is the start's kinetic energy while the ledger balances. Each
+// bar is drawn from a zero line at the panel's middle, on one scale (the largest bar's, never shrinking within a
+// run, so growth is visible).
+void Gallery::drawEnergy(sf::RenderWindow& window, Runner& runner) {
+    if (!energyBars_) return;
+    World& world = runner.simulation().world();
+    if (!world.energyLedger().enabled) {
+        world.setEnergyLedger(true);
+        energyScale_ = 0.0;
+    }
+    const EnergyLedger& e = world.energyLedger();
+    const double dissipated = -(e.total.friction + e.total.impacts + e.total.drag + e.total.soft);
+    const double potential = e.potential - e.startPotential;
+    struct Bar {
+        const char* name;
+        double value;
+        ImU32 colour;
+    };
+    const Bar bars[] = {{"kinetic", e.kinetic, IM_COL32(60, 160, 60, 255)},
+                        {"potential", potential, IM_COL32(60, 110, 200, 255)},
+                        {"dissipated", dissipated, IM_COL32(200, 90, 40, 255)},
+                        {"residue", e.total.residue, IM_COL32(150, 150, 150, 255)},
+                        {"work in", e.total.work, IM_COL32(170, 60, 170, 255)},
+                        {"balance", e.kinetic + potential + dissipated - e.total.residue - e.total.work,
+                         IM_COL32(90, 90, 90, 255)}};
+    for (const Bar& b : bars) energyScale_ = std::max(energyScale_, std::abs(b.value));
+    // A window of its own at the scene's lower right corner, so that it shows on any screen.
+    const float boxWidth = 330.f, boxHeight = 6 * 15.f + 40.f;
+    ImGui::SetNextWindowPos(ImVec2(static_cast<float>(window.getSize().x) - boxWidth - 8.f,
+                                   static_cast<float>(window.getSize().y) - boxHeight - 8.f));
+    ImGui::SetNextWindowSize(ImVec2(boxWidth, boxHeight));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Energy since the start", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoScrollbar);
+    const float width = ImGui::GetContentRegionAvail().x, labelWidth = 70.f, rowHeight = 15.f;
+    const float barArea = width - labelWidth - 80.f, zero = labelWidth + 0.5f * barArea;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    char text[64];
+    for (std::size_t k = 0; k < std::size(bars); ++k) {
+        const float y = origin.y + k * rowHeight;
+        draw->AddText(ImVec2(origin.x, y), IM_COL32(20, 20, 20, 255), bars[k].name);
+        const float length = energyScale_ > 0.0 ? static_cast<float>(bars[k].value / energyScale_) * 0.5f * barArea
+                                                : 0.f;
+        const float a = origin.x + zero, b = a + length;
+        draw->AddRectFilled(ImVec2(std::min(a, b), y + 2.f), ImVec2(std::max(a, b), y + rowHeight - 2.f),
+                           bars[k].colour);
+        std::snprintf(text, sizeof text, "%.3g J", bars[k].value);
+        draw->AddText(ImVec2(origin.x + labelWidth + barArea + 4.f, y), IM_COL32(20, 20, 20, 255), text);
+    }
+    draw->AddLine(ImVec2(origin.x + zero, origin.y), ImVec2(origin.x + zero, origin.y + std::size(bars) * rowHeight),
+                  IM_COL32(0, 0, 0, 255));
+    ImGui::Dummy(ImVec2(width, std::size(bars) * rowHeight));
+    itemRects_.emplace_back("energy", lastItemRect());
+    ImGui::End();
+}
+
 // Any quantity of any body, plotted live: click a body in the scene, pick the quantity, and "Plot it".
 void Gallery::drawLivePlots(Runner& runner) {
     ImGui::Separator();
@@ -236,6 +298,9 @@ void Gallery::drawDebugSwitches(Runner& runner) {
     ImGui::Checkbox("Rays", &d.rays);
     bool stats = runner.statsShown();
     if (ImGui::Checkbox("Statistics", &stats)) runner.setStatsShown(stats);
+    ImGui::SameLine(150.f);
+    ImGui::Checkbox("Energy bars", &energyBars_);
+    itemRects_.emplace_back("energy bars", lastItemRect());
 }
 
 }  // namespace physim::examples

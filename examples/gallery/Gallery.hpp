@@ -43,11 +43,14 @@ private:
     void drawRunControls(Runner& runner);
     void drawBranch(Runner& runner);
     void drawLivePlots(Runner& runner);
+    void drawEnergy(sf::RenderWindow& window, Runner& runner);
     void drawDebugSwitches(Runner& runner);
 
     std::vector<Scene> scenes_;
     std::size_t current_;
     std::unique_ptr<ImGuiSfml> imgui_;
+    bool energyBars_ = true;        // the energy bars shown (the scene's ledger switched on for them)
+    double energyScale_ = 0.0;      // J: the energy bars' half width, the largest bar yet in this run
     std::size_t plotQuantity_ = 0;  // the quantity "Plot it" adds, an index into RecordSpec::quantities()
     std::vector<double> edits_;  // slider values while the user moves them (applied when let go)
     std::vector<std::pair<std::string, sf::FloatRect>> itemRects_;  // this frame's, for itemRect

@@ -8,7 +8,7 @@
 // sliding, which is Coulomb's hysteresis rather than the sticking the curve shows. The slopes stand in two
 // rows, and a stop at each slope's foot catches its block. Keys: N puts the blocks back at the top and
 // measures again. Parameters: the two friction coefficients. Results (summary.json): each block's measured
-// acceleration beside Coulomb's.
+// acceleration beside Coulomb's. A second graph (Simulation::addEnergyPlot) shows where the energy went.
 
 #include "Scenes.hpp"
 
@@ -76,6 +76,7 @@ public:
         release();
         acceleration_ = graphsManager.addGraph("Acceleration along the slope;incline angle (deg);a (m/s^2)");
         analytic_ = graphsManager.addSeries(acceleration_, "g (sin - mu_d cos), 0 below the angle of repose");
+        addEnergyPlot();  // where the blocks' potential energy went: friction, and the stops at the slopes' feet
         graphsManager.build();
         drawAnalytic();
     }

@@ -18,10 +18,17 @@ void World::setEnergyLedger(bool enabled) {
     if (!enabled) return;
     ledger.kinetic = kineticEnergy();
     ledger.potential = potentialEnergy();
+    ledger.startKinetic = ledger.kinetic;
+    ledger.startPotential = ledger.potential;
     ledger.start = ledger.energy();
 }
 
 const EnergyLedger& World::energyLedger() const { return impl_->ledger; }
+
+void World::restoreEnergyLedger(const EnergyLedger& ledger) {
+    impl_->requireNotStepping("restoreEnergyLedger");
+    impl_->ledger = ledger;
+}
 
 double WorldImpl::ledgerEnergy() const { return kineticEnergyOf(*this) + potentialEnergyOf(*this); }
 

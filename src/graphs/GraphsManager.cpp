@@ -30,6 +30,16 @@
 
 namespace physim {
 
+graph_modifier lineInColour(int colour) {
+    return [colour](TGraph* g) {
+        g->SetLineColor(static_cast<Color_t>(colour));
+        g->SetMarkerColor(static_cast<Color_t>(colour));
+        g->SetMarkerStyle(1);
+        g->SetLineWidth(2);
+    };
+}
+
+
 struct GraphsManager::Graph {
     std::string label;
     graph_modifier modifier;

@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <string>
 
@@ -130,6 +132,41 @@ TEST_F(GalleryWindow, ThePanelTakesItsClicksTheSceneKeepsItsOwn) {
     runner->handleEvent(mouseButton(sf::Event::MouseButtonPressed, onPanel), &window);
     EXPECT_FALSE(RunnerAccess::controls(*runner).dragJoint().has_value());
     runner->handleEvent(mouseButton(sf::Event::MouseButtonReleased, onPanel), &window);
+}
+
+// Every scene shows its energy bars (World::energyLedger) in a box at the scene's lower right, inside the window,
+// drawn: some pixel of a bar's colour where a bar has any length. The bars balance: kinetic + potential's change +
+// dissipated - residue - work is the start's kinetic energy, to rounding (1e-9 of the largest bar).
+TEST_F(GalleryWindow, ShowsEnergyBarsForEveryScene) {
+    for (const Scene& scene : scenes()) {
+        const std::string name = scene.name;
+        click(centreOf(*gallery->itemRect(name)));
+        frames(10);
+        const EnergyLedger& e = runner->simulation().world().energyLedger();
+        ASSERT_TRUE(e.enabled) << name;
+        const std::optional<sf::FloatRect> box = gallery->itemRect("energy");
+        ASSERT_TRUE(box.has_value()) << name;
+        EXPECT_GE(box->left, 0.f);
+        EXPECT_LE(box->left + box->width, static_cast<float>(window.getSize().x)) << name;
+        EXPECT_LE(box->top + box->height, static_cast<float>(window.getSize().y)) << name;
+        const double dissipated = -(e.total.friction + e.total.impacts + e.total.drag + e.total.soft);
+        const double potential = e.potential - e.startPotential;
+        const double largest = std::max({std::abs(e.kinetic), std::abs(potential), std::abs(dissipated),
+                                         std::abs(e.total.residue), std::abs(e.total.work), 1e-300});
+        EXPECT_NEAR(e.kinetic + potential + dissipated - e.total.residue - e.total.work, e.startKinetic,
+                    1e-9 * std::max(largest, e.startKinetic))
+            << name;
+        sf::Texture texture;
+        ASSERT_TRUE(texture.create(window.getSize().x, window.getSize().y));
+        texture.update(window);
+        const sf::Image image = texture.copyToImage();
+        int barPixels = 0;
+        const sf::Color colours[] = {{60, 160, 60}, {60, 110, 200}, {200, 90, 40}, {150, 150, 150}, {170, 60, 170}};
+        for (unsigned y = static_cast<unsigned>(box->top); y < static_cast<unsigned>(box->top + box->height); ++y)
+            for (unsigned x = static_cast<unsigned>(box->left); x < static_cast<unsigned>(box->left + box->width); ++x)
+                for (const sf::Color& c : colours) barPixels += image.getPixel(x, y) == c;
+        EXPECT_GT(barPixels, 0) << name << ": no bar drawn (largest " << largest << " J)";
+    }
 }
 
 }  // namespace

@@ -50,7 +50,9 @@ struct EnergyLedger {
     bool enabled = false;
     double kinetic = 0.0;    ///< J, all bodies, now (after the last step)
     double potential = 0.0;  ///< J, gravity + spring joints + gravitation, now
-    double start = 0.0;      ///< J, kinetic + potential when the ledger was switched on (or reset)
+    double start = 0.0;      ///< J, kinetic + potential when the ledger was switched on (or restarted)
+    double startKinetic = 0.0;    ///< J, its kinetic share then
+    double startPotential = 0.0;  ///< J, its potential share then
     int steps = 0;           ///< steps measured since then
     EnergyParts step;        ///< the last step's parts: sum() == its change of kinetic + potential, to rounding
     EnergyParts total;       ///< summed over the measured steps

@@ -386,6 +386,9 @@ public:
     void setEnergyLedger(bool enabled);
     /// The energies after the last step and where each step's change went; `enabled` false while off.
     const EnergyLedger& energyLedger() const;
+    /// Puts back a ledger read earlier (energyLedger()), after restore() put back the state it went with, so that
+    /// its totals go on from there (restore() alone starts the ledger again from the restored state).
+    void restoreEnergyLedger(const EnergyLedger& ledger);
 
     // --- time travel (Snapshot.hpp) -----------------------------------------------------------------
     /// The whole state now (not during the step, nor from a force callback: std::logic_error).

@@ -111,6 +111,13 @@ public:
     void setResult(std::string name, double measured, std::optional<double> predicted, std::string unit);
     const std::vector<Result>& results() const { return results_; }
 
+    /// Where the energy went, in one line of onCreate (before the graphs are built): switches the world's energy
+    /// ledger on (World::setEnergyLedger) and adds a live graph, one point per fixed step, of the energy now minus
+    /// at the start (kinetic + potential) and, stacked on it, what friction, impacts, drag and soft contacts took
+    /// and the method's residue. The top line is then the work put in (flat at zero where nothing drives the
+    /// scene); the gaps between the lines are each cause's share. Returns the graph's index.
+    int addEnergyPlot();
+
     // --- asking the world (docs/guide.md, "Asking the world: rays and queries"); World.hpp has every query -----
     /// A world query's hit and the Object whose body it hit (nullptr for a body no Object owns).
     struct Hit {
@@ -139,6 +146,7 @@ public:
         std::any state;             ///< saveState()'s answer
         std::vector<int> entityIds;  ///< the entities then, in order: restore needs the same
         std::vector<std::size_t> graphPoints;  ///< each graph's point count: restore drops the points added since
+        EnergyLedger energy;        ///< the world's energy ledger then (World::restoreEnergyLedger)
     };
     /// Between fixed steps (std::logic_error inside one, as World::snapshot).
     Snapshot snapshot() const;
@@ -212,6 +220,7 @@ private:
     std::vector<Result> results_;
     std::vector<DebugRay> debugRays_;  // castRay's rays since the last fixed step began, for debug drawing
     int nextId_ = 1;
+    int energyPlot_ = -1;  // addEnergyPlot's first series, or -1
     int iterating_ = 0;  // > 0 while a phase walks the entity list
     double fixedTimeStep_ = 1.0 / 40.0;
 };

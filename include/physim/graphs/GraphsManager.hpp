@@ -34,6 +34,10 @@ enum class GraphMode {
 /// Styles a graph after it is created (colours, markers, axis titles), as in the paper.
 using graph_modifier = std::function<void(TGraph*)>;
 
+/// A modifier for a line without markers, width 2, in ROOT colour index `colour` (600 blue, 632 red, 416 green,
+/// 616 magenta, 800 orange, 920 grey; plus 1 or 2 for darker shades), for code that does not include ROOT.
+graph_modifier lineInColour(int colour);
+
 class GraphsManager {
 public:
     GraphsManager();
