@@ -50,7 +50,8 @@ double work(double mass, double inertia, const LedgerMotion& d, const LedgerMoti
 void EnergyTally::closeSubstep(const WorldImpl& w, std::size_t g, const SolverBodySim* sims, const SolverBody* st,
                                const std::uint32_t* list, std::size_t count, const ContactBlock* blocks,
                                const ContactBlockCold* cold, const BlockRows* rows, std::size_t first,
-                               std::size_t blockCount, double h) {
+                               std::size_t blockCount, const JointConstraint* joints, std::size_t jointCount,
+                               double h) {
     EnergyParts& parts = groups_[g];
     const double threshold = w.settings.restitutionThreshold;
     auto dynamic = [&](std::int32_t i) { return i >= 0 && sims[i].dynamic; };
@@ -81,39 +82,41 @@ void EnergyTally::closeSubstep(const WorldImpl& w, std::size_t g, const SolverBo
         const ContactBlockCold& c = cold[b - first];
         for (std::uint32_t lane = 0; lane < rows[b].count; ++lane) {
             const int k = static_cast<int>(lane);
-            const ContactConstraint row = physim::row(block, c, k);
-            const LedgerMotion A = mean(row.indexA), B = mean(row.indexB);
+            const std::int32_t indexA = block.indexA[k], indexB = block.indexB[k];
+            const Vec2 normal(block.nx[k], block.ny[k]);
+            const LedgerMotion A = mean(indexA), B = mean(indexB);
             double* const last = totals_.data() + (b * kLanes + lane) * 3;
-            // Impulse `impulse` along `dir` (on B; its opposite on A), moments rA and rB: its work at the mean
-            // motions; a kinematic side's share goes to `work` (what drives it gives it).
+            // Impulse `impulse` along `dir` (on B; its opposite on A), moments rA and rB (r x dir): its work at the
+            // mean motions; a kinematic side's share goes to `work` (what drives it gives it).
             auto apply = [&](double impulse, const Vec2& dir, double rA, double rB) {
                 const double onA = -impulse * (dir.dot(A.v) + rA * A.w), onB = impulse * (dir.dot(B.v) + rB * B.w);
-                if (!dynamic(row.indexA) && row.indexA >= 0) parts.work -= onA;
-                if (!dynamic(row.indexB) && row.indexB >= 0) parts.work -= onB;
+                if (!dynamic(indexA) && indexA >= 0) parts.work -= onA;
+                if (!dynamic(indexB) && indexB >= 0) parts.work -= onB;
                 return onA + onB;
             };
-            for (int i = 0; i < row.pointCount; ++i) {
+            for (int i = 0; i < c.lanes[k].pointCount; ++i) {
                 const double total = c.totalNormal[i][k], impulse = total - last[i];
                 last[i] = total;
                 if (impulse == 0.0) continue;
-                const ContactConstraintPoint& p = row.points[i];
-                const double done = apply(impulse, row.normal, p.rnA, p.rnB);
+                const double rnA = -block.points[i].negRnA[k], rnB = block.points[i].rnB[k];
+                const double done = apply(impulse, normal, rnA, rnB);
                 // An impact: the point approached faster than restitution's threshold at the substep's start, or
                 // bounced (a blow, not in the accumulated impulse, made the step's total grow by more than the rows
                 // hold).
-                const LedgerMotion sA = startOf(row.indexA), sB = startOf(row.indexB);
-                const double approach = row.normal.dot(sB.v - sA.v) + p.rnB * sB.w - p.rnA * sA.w;
+                const LedgerMotion sA = startOf(indexA), sB = startOf(indexB);
+                const double approach = normal.dot(sB.v - sA.v) + rnB * sB.w - rnA * sA.w;
                 const bool met = -approach > threshold;
-                const bool bounced = impulse - p.normalImpulse > 1e-9 * std::abs(impulse);
+                const bool bounced = impulse - block.points[i].normalImpulse[k] > 1e-9 * std::abs(impulse);
                 (met || bounced ? parts.impacts : parts.soft) += done;
             }
             const double total = block.totalTangent[k], impulse = total - last[2];
             last[2] = total;
             if (impulse == 0.0) continue;
-            const Vec2 t = perp(row.normal);
-            apply(impulse, t, row.rtA, row.rtB);
-            const LedgerMotion movedA = movedOf(row.indexA), movedB = movedOf(row.indexB);
-            parts.friction += impulse * (t.dot(movedB.v) + row.rtB * movedB.w - t.dot(movedA.v) - row.rtA * movedA.w);
+            const Vec2 t = perp(normal);
+            const double rtA = -block.negRtA[k], rtB = block.rtB[k];
+            apply(impulse, t, rtA, rtB);
+            const LedgerMotion movedA = movedOf(indexA), movedB = movedOf(indexB);
+            parts.friction += impulse * (t.dot(movedB.v) + rtB * movedB.w - t.dot(movedA.v) - rtA * movedA.w);
         }
     }
     // Springs' damping, at the mean motion.
@@ -124,8 +127,21 @@ void EnergyTally::closeSubstep(const WorldImpl& w, std::size_t g, const SolverBo
     }
     damping_.clear();
 
+    // Motors (revolute, wheel and prismatic joints): the substep's motor impulse (what the joint holds at its end,
+    // as for contacts) times the joint's relative speed at the mean motion: the work the motor does.
+    for (std::size_t k = 0; k < jointCount; ++k) {
+        const JointConstraint& row = joints[k];
+        const JointData& joint = w.joints[row.joint];
+        const LedgerMotion A = mean(row.indexA), B = mean(row.indexB);
+        if (const auto* r = std::get_if<RevoluteJoint>(&joint.params); r && r->enableMotor)
+            parts.work += r->motorImpulse * (B.w - A.w);
+        else if (const auto* wh = std::get_if<WheelJoint>(&joint.params); wh && wh->enableMotor)
+            parts.work += wh->motorImpulse * (B.w - A.w);
+        else if (const auto* p = std::get_if<PrismaticJoint>(&joint.params); p && p->enableMotor)
+            parts.work += p->motorImpulse * row.axis.dot(B.v + cross(B.w, row.anchorB) - A.v - cross(A.w, row.anchorA));
+    }
     // Bodies: the user's forces and drag work at the mean motion. Joints' impulses are left to the residue: an
-    // ideal joint does no work, and what the method's joint rows do to the energy (a pendulum's swing of kinetic
+    // ideal joint does no work (its motor's share is counted above), and what the method's joint rows do to the energy (a pendulum's swing of kinetic
     // and potential energy against each other, bounded) is its own share.
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t i = list[k];

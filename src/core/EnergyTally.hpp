@@ -20,6 +20,7 @@ struct WorldImpl;
 struct ContactBlock;
 struct ContactBlockCold;
 struct BlockRows;
+struct JointConstraint;
 
 /// The force effects whose impulses the ledger tells apart (Effects::substep's order).
 enum class LedgerEffect : std::uint8_t { Gravitation, Springs, Drag };
@@ -54,7 +55,7 @@ public:
     void closeSubstep(const WorldImpl& w, std::size_t g, const SolverBodySim* sims, const SolverBody* st,
                       const std::uint32_t* list, std::size_t count, const ContactBlock* blocks,
                       const ContactBlockCold* cold, const BlockRows* rows, std::size_t first, std::size_t blockCount,
-                      double h);
+                      const JointConstraint* joints, std::size_t jointCount, double h);
     /// The step's parts so far, groups summed in order (residue left zero: the world fills it in).
     EnergyParts stepParts() const;
 

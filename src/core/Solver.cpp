@@ -586,7 +586,9 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             }
         if (ledger)
             tally_.closeSubstep(w, g, sims_.data(), st, bodyList, bodyCount, blockAt(firstBlock), coldAt(firstBlock),
-                                graph_.blockRows.data(), firstBlock, blockCount, h);
+                                graph_.blockRows.data(), firstBlock, blockCount,
+                                graph_.jointConstraints.data() + graph_.groupJointStart[g],
+                                graph_.groupJointStart[g + 1] - graph_.groupJointStart[g], h);
     }
     if (blockCount > 0 && !storeInRelax) {
         auto timer = stage(Stage::Solve);

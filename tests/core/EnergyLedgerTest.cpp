@@ -136,6 +136,37 @@ TEST(EnergyLedger, DragTakesWhatForceTimesVelocitySaysAtTerminalSpeed) {
     EXPECT_NEAR(w.energyLedger().total.drag / (-m * 9.81 * v * 1.0), 1.0, 1e-6);
 }
 
+// A motor spins a disc pinned at its centre up to 10 rad/s, without gravity: the motor's work is the kinetic
+// energy it gave, (1/2) I w^2, and nothing is left to the residue. Tolerance 1e-9 of the energy: the motor's
+// impulse is the only torque, counted exactly.
+TEST(EnergyLedger, AMotorsWorkIsTheEnergyItGives) {
+    WorldSettings s = noSleep();
+    s.gravity = Vec2::Zero();
+    World w(s);
+    BodyDef axle;
+    axle.type = BodyType::Static;
+    axle.shape = makeCircle(0.05);
+    axle.collides = false;
+    const BodyId a = w.createBody(axle);
+    BodyDef disc;
+    disc.shape = makeCircle(0.5);
+    disc.collides = false;
+    const BodyId d = w.createBody(disc);
+    RevoluteJointDef pin;
+    pin.bodyA = a;
+    pin.bodyB = d;
+    pin.enableMotor = true;
+    pin.motorSpeed = 10.0;
+    pin.maxMotorTorque = 0.5;
+    w.createRevoluteJoint(pin);
+    w.setEnergyLedger(true);
+    for (int k = 0; k < 80; ++k) w.step(kDt);
+    const double spin = 0.5 * w.inertia(d) * w.angularVelocity(d) * w.angularVelocity(d);
+    ASSERT_GT(w.angularVelocity(d), 1.0);  // spun up (to 10 rad/s at 0.5 N m in about 1.2 s)
+    EXPECT_NEAR(w.energyLedger().total.work, spin, 1e-9 * spin);
+    EXPECT_NEAR(w.energyLedger().total.residue, 0.0, 1e-9 * spin);
+}
+
 // 200 elastic, frictionless discs in a closed box without gravity: every change of energy is a contact's, each
 // counted exactly, so the residue is rounding: under 1e-9 of the energy per simulated second.
 TEST(EnergyLedger, ResidueOfAnElasticGasIsRounding) {

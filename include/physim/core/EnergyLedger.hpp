@@ -5,8 +5,8 @@
 //
 // How each part is measured, substep by substep (a substep changes a body's velocity from v_start to v_end and moves
 // it with v_move, the velocity the solve leaves):
-//   work      user forces and torques, force callbacks, and kinematic bodies pushing through contacts:
-//             impulse . (v_start + v_end) / 2
+//   work      user forces and torques, force callbacks, motors (revolute, wheel, prismatic) and kinematic bodies
+//             pushing through contacts: impulse . (v_start + v_end) / 2
 //   drag      air drag's impulse . (v_start + v_end) / 2 (negative)
 //   friction  each contact's friction impulse . its slip velocity at v_move: force times the distance slid
 //             (negative; positive where a conveyor's surface speed drives a body)
@@ -20,8 +20,7 @@
 //             the substep's start, their potentials follow the move), friction's share of the velocity change
 //             beyond the distance slid, the continuous stage's put-backs, and the joints' rows: an ideal joint does
 //             no work, so what the method's joint rows do to the energy (a pendulum's swing of a few 1e-3 of its
-//             energy at 40 Hz, the soft joints' slow drain) is the method's. Motors and limits are counted there
-//             too, for now.
+//             energy at 40 Hz, the soft joints' slow drain) is the method's, limits' and joint springs' included.
 // Potential energy: gravity (-m g . x for every dynamic body that feels it), spring joints ((k/2) stretch^2) and
 // gravitation between attracting bodies (-G m1 m2 / sqrt(r^2 + softening^2), summed over all pairs: O(n^2) per
 // step while the ledger is on). Kinetic energy: every dynamic body's, translation and rotation.
@@ -30,7 +29,7 @@ namespace physim {
 
 /// One step's changes, or the running totals since the ledger was switched on (J; positive: energy gained).
 struct EnergyParts {
-    double work = 0.0;      ///< user forces and torques, force callbacks, kinematic bodies
+    double work = 0.0;      ///< user forces and torques, force callbacks, motors, kinematic bodies
     double drag = 0.0;      ///< air drag
     double friction = 0.0;  ///< sliding friction
     double impacts = 0.0;   ///< energy lost in bounces (restitution < 1)
