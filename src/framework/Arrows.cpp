@@ -42,6 +42,15 @@ std::vector<BodyArrows> bodyArrows(const World& world, double dt) {
     return arrows;
 }
 
+std::vector<JointArrows> jointArrows(const World& world) {
+    std::vector<JointArrows> arrows;
+    for (const JointId id : world.joints()) {
+        const auto [a, b] = world.jointAnchors(id);
+        arrows.push_back({a, b, world.jointReactionForce(id), world.jointType(id) == JointType::Mouse});
+    }
+    return arrows;
+}
+
 double roundScaleUp(double value) {
     requirePositive("arrow scale", value);
     const double decade = std::pow(10.0, std::floor(std::log10(value)));

@@ -25,6 +25,15 @@ struct BodyArrows {
 /// std::invalid_argument for a `dt` that is not positive.
 std::vector<BodyArrows> bodyArrows(const World& world, double dt);
 
+/// A joint's force on each of its bodies at its anchors (World::jointReactionForce: on B at B's anchor, the opposite
+/// on A at A's), N; a joint to a world point has only B's.
+struct JointArrows {
+    Vec2 atA = Vec2::Zero(), atB = Vec2::Zero();  ///< the anchors, m
+    Vec2 onB = Vec2::Zero();                      ///< N; A gets -onB
+    bool toWorld = false;                         ///< no body A to draw on
+};
+std::vector<JointArrows> jointArrows(const World& world);
+
 /// The smallest of 1, 2 or 5 times a power of ten at least `value` (> 0, finite; std::invalid_argument otherwise).
 double roundScaleUp(double value);
 

@@ -141,6 +141,8 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
                 fit_ = true;
             } else if (key == sf::Keyboard::Tab) {
                 statsShown_ = !statsShown_;
+            } else if (key == sf::Keyboard::W && event.key.shift) {
+                stopwatch_.arm();
             } else if (key == sf::Keyboard::W) {
                 stopwatch_.press(sim.time);
             } else if (key == sf::Keyboard::V) {
@@ -175,7 +177,7 @@ void Controls::resetInstruments() {
 
 std::string Controls::keysHelp() {
     return "Space restart   P pause   O step   Left/Right back/forward 1 s   Home start   B branch   [ ] slower/faster   F fit   "
-           "Tab stats   W stopwatch   M+drag tape   A+drag, click: angle   L trails   V arrows   "
+           "Tab stats   W stopwatch (Shift+W: sensors)   M+drag tape   A+drag, click: angle   L trails   V arrows   "
            "1-8 contacts/boxes/velocities/joints/centres/sleep/sensors/rays   left drag: move a body   right drag: pan   "
            "wheel: zoom   Esc quit";
 }

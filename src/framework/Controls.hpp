@@ -8,7 +8,7 @@
 //   [ and ]      slower / faster: time scale halved or doubled, 1/16x to 8x
 //   F            fits the view to the scene
 //   Tab          statistics on or off
-//   W            stopwatch in simulated seconds: start, stop, again a new start
+//   W            stopwatch in simulated seconds: start, stop, again a new start; Shift+W: sensors start and stop it
 //   M + drag     tape measure (m); A + drag, then a click: protractor (degrees). A plain click clears them.
 //   L            trails: recent paths of the moving bodies' centres of mass
 //   V            arrows: velocity, weight and contact force of each body, at scales the bar states
@@ -63,6 +63,7 @@ public:
 
     /// W's stopwatch.
     const Stopwatch& stopwatch() const { return stopwatch_; }
+    Stopwatch& stopwatch() { return stopwatch_; }
     /// The tape measure or protractor laid in the window, if any.
     const Measurement& measurement() const { return measurement_; }
     /// Stopwatch and measurement cleared (a restart: time starts again, the scene may be another).

@@ -21,7 +21,8 @@ constexpr int kArcSegments = 32;
 constexpr float kTrailPixels = 1.5f;  // trail width
 constexpr double kArrowPixels = 90.0;  // the longest arrow's length, at most
 const sf::Color kTape(210, 90, 0), kProtractor(150, 40, 170), kTrail(20, 60, 150);
-const sf::Color kVelocityArrow(0, 140, 0), kWeightArrow(200, 30, 30), kContactArrow(30, 60, 220);
+const sf::Color kVelocityArrow(0, 140, 0), kWeightArrow(200, 30, 30), kContactArrow(30, 60, 220),
+    kJointArrow(230, 130, 0);
 
 float length(sf::Vector2f d) { return std::hypot(d.x, d.y); }
 
@@ -50,7 +51,8 @@ void drawTrails(sf::RenderTarget& target, const View& view, const Trails& trails
 
 std::string arrowsLegendText(double velocityPerMetre, double forcePerMetre) {
     char text[160];
-    std::snprintf(text, sizeof text, "arrows: velocity (green) 1 m = %g m/s, weight (red) and contact (blue) 1 m = %g N",
+    std::snprintf(text, sizeof text,
+                  "arrows: velocity (green) 1 m = %g m/s, weight (red), contact (blue) and joint (orange) 1 m = %g N",
                   velocityPerMetre, forcePerMetre);
     return text;
 }
@@ -58,11 +60,13 @@ std::string arrowsLegendText(double velocityPerMetre, double forcePerMetre) {
 std::string drawArrows(sf::RenderTarget& target, const View& view, const World& world, double dt,
                        ArrowScale& velocityScale, ArrowScale& forceScale) {
     const std::vector<BodyArrows> arrows = bodyArrows(world, dt);
+    const std::vector<JointArrows> joints = jointArrows(world);
     double fastest = 0.0, strongest = 0.0;
     for (const BodyArrows& a : arrows) {
         fastest = std::max(fastest, a.velocity.norm());
         strongest = std::max({strongest, a.weight.norm(), a.contact.norm()});
     }
+    for (const JointArrows& j : joints) strongest = std::max(strongest, j.onB.norm());
     const double longest = kArrowPixels / view.pixelsPerMetre;  // m
     const double perVelocity = velocityScale.update(fastest, longest), perForce = forceScale.update(strongest, longest);
     const sf::Transform toPixels = view.worldToPixels(target.getSize());
@@ -75,6 +79,10 @@ std::string drawArrows(sf::RenderTarget& target, const View& view, const World& 
         lines.arrow(from, pixel(a.at + a.weight / perForce), kWeightArrow);
         lines.arrow(from, pixel(a.at + a.contact / perForce), kContactArrow);
         lines.arrow(from, pixel(a.at + a.velocity / perVelocity), kVelocityArrow);
+    }
+    for (const JointArrows& j : joints) {
+        lines.arrow(pixel(j.atB), pixel(j.atB + j.onB / perForce), kJointArrow);
+        if (!j.toWorld) lines.arrow(pixel(j.atA), pixel(j.atA - j.onB / perForce), kJointArrow);
     }
     lines.draw(target);
     return arrowsLegendText(perVelocity, perForce);

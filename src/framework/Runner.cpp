@@ -65,9 +65,13 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
         items.push_back({text, sf::Color(30, 90, 170)});
     }
     const Stopwatch& stopwatch = controls.stopwatch();
-    if (stopwatch.state() != Stopwatch::State::Idle || tallest) {
+    if (stopwatch.state() != Stopwatch::State::Idle || stopwatch.armed() || tallest) {
         const bool running = stopwatch.state() == Stopwatch::State::Running;
-        std::snprintf(text, sizeof text, running ? "stopwatch %.3f s (W stops)" : "stopwatch stopped: %.3f s (W restarts)",
+        std::snprintf(text, sizeof text,
+                      stopwatch.armed() ? (running ? "stopwatch %.3f s (the next sensor entry stops it)"
+                                                   : "stopwatch %.3f s (armed: a sensor entry starts it)")
+                      : running         ? "stopwatch %.3f s (W stops)"
+                                        : "stopwatch stopped: %.3f s (W restarts)",
                       stopwatch.reading(sim.time));
         items.push_back({text, sf::Color(120, 60, 160)});
     }
@@ -247,6 +251,9 @@ void Runner::fixedStep() {
     Simulation& sim = simulation();
     sim.fixedStep();
     if (recorder_) recorder_->sample(sim);
+    if (loop_->controls.stopwatch().armed())  // Shift+W: bodies entering sensors start and stop it, on time
+        for (const SensorEvent& e : sim.world().sensorEvents().begin)
+            loop_->controls.stopwatch().sensorEntered(sim.time - sim.fixedTimeStep() + e.time);
     if (loop_->controls.trailsShown())
         recordTrails(loop_->trails, loop_->trailPositions, loop_->controls.picked(), sim.world());
     for (LivePlot& plot : livePlots_) {

@@ -16,10 +16,22 @@ public:
     double reading(double simTime) const;
     State state() const { return state_; }
 
+    /// Shift+W: from now on sensors press it (it is reset to idle): the next body entering any sensor starts it, the
+    /// next entry after that stops it, and it disarms.
+    void arm() { *this = Stopwatch(); armed_ = true; }
+    bool armed() const { return armed_; }
+    /// A body entered a sensor at `simTime` (s): a press while armed.
+    void sensorEntered(double simTime) {
+        if (!armed_) return;
+        press(simTime);
+        if (state_ == State::Stopped) armed_ = false;
+    }
+
 private:
     State state_ = State::Idle;
     double start_ = 0.0;    // s, simulated time at the start
     double stopped_ = 0.0;  // s, the held reading
+    bool armed_ = false;    // sensors press it
 };
 
 }  // namespace physim

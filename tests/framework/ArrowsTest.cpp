@@ -95,6 +95,37 @@ TEST(Arrows, ContactForceHoldsARestingBodysWeight) {
     EXPECT_THROW(bodyArrows(sim.world(), 0.0), std::invalid_argument);
 }
 
+// A bob hanging at rest from a pin: the joint's arrow on the bob is its weight upwards, at the pin, and the pivot's
+// the opposite. Tolerance 1e-6 of the weight: the soft joint settles to rounding within 4 s.
+TEST(Arrows, AJointsArrowHoldsAHangingBobsWeight) {
+    WorldSettings settings;
+    settings.enableSleep = false;
+    World world(settings);
+    BodyDef pivot;
+    pivot.type = BodyType::Static;
+    pivot.shape = makeCircle(0.05);
+    pivot.collides = false;
+    const BodyId p = world.createBody(pivot);
+    BodyDef bob;
+    bob.shape = makeCircle(0.2);
+    bob.position = {0.0, -1.0};
+    bob.collides = false;
+    const BodyId b = world.createBody(bob);
+    RevoluteJointDef pin;
+    pin.bodyA = p;
+    pin.bodyB = b;
+    world.createRevoluteJoint(pin);
+    for (int i = 0; i < 160; ++i) world.step(1.0 / 40.0);
+    const std::vector<JointArrows> arrows = jointArrows(world);
+    ASSERT_EQ(arrows.size(), 1u);
+    const double weight = world.mass(b) * 9.81;
+    EXPECT_NEAR(arrows[0].onB.x(), 0.0, 1e-6 * weight);
+    EXPECT_NEAR(arrows[0].onB.y(), weight, 1e-6 * weight);
+    // At the pin, give or take the soft joint's stretch under the weight: g / (2 pi 80 Hz)^2 = 4e-5 m.
+    EXPECT_NEAR((arrows[0].atB - Vec2(0.0, 0.0)).norm(), 0.0, 1e-4);
+    EXPECT_FALSE(arrows[0].toWorld);
+}
+
 // Newton's second law over each step of the ball's landing (an impact, then rest): the contact and the weight
 // together change each body's momentum by (contact + weight) dt. Tolerance: 1e-9 of the ball's momentum at impact.
 TEST(Arrows, ContactForceIsTheMomentumChange) {

@@ -27,10 +27,10 @@ inline sf::Event wheel(float delta, sf::Vector2i at) {
     return e;
 }
 
-inline sf::Event keyPress(sf::Keyboard::Key code) {
+inline sf::Event keyPress(sf::Keyboard::Key code, bool shift = false) {
     sf::Event e;
     e.type = sf::Event::KeyPressed;
-    e.key = {code, false, false, false, false};
+    e.key = {code, false, false, shift, false};  // alt, control, shift, system
     return e;
 }
 
