@@ -50,8 +50,9 @@ std::string holdingBack(const std::optional<int>& maxStepsPerFrame, const FrameP
     if (maxStepsPerFrame)
         std::snprintf(text, sizeof text, "the catch-up cap is %d steps per frame", *maxStepsPerFrame);
     else
-        std::snprintf(text, sizeof text, "steps take %.3g ms: at most %d per frame, for %.0f FPS",
-                      1e3 * pacer.stepCost(), pacer.maxSteps(), 1.0 / FramePacer::frameBudget);
+        std::snprintf(text, sizeof text, "steps take %.3g ms and drawing %.3g ms, so at most %d a frame (for %.0f FPS)",
+                      1e3 * pacer.stepCost(), 1e3 * pacer.otherCost(), pacer.maxSteps(),
+                      1.0 / FramePacer::frameBudget);
     return text;
 }
 
