@@ -403,6 +403,8 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     }
     simulation().graphsManager.render();
     if (window) window->display();
+    // The rest of the frame: hooks, drawing, display (with its wait for the 60 FPS limit, only in a frame with time
+    // to spare).
     loop_->pacer.record(steps, stepsEnd - stepsStart, (stepsStart - frameStart) + (loop_->clock() - stepsEnd));
     return steps;
 }
