@@ -23,8 +23,6 @@ void FramePacer::record(int steps, double stepSeconds, double otherSeconds) {
     if (steps > 0) stepCost_ = follow(stepCost_, valid(stepSeconds) / steps);
 }
 
-void FramePacer::clear() { stepCost_ = otherCost_ = 0.0; }
-
 int FramePacer::maxSteps() const {
     if (!(stepCost_ > 0.0)) return mostSteps;
     // The tolerance: a budget of exactly n steps gives n, though the times' rounding puts the quotient a hair below.

@@ -14,7 +14,6 @@ public:
     /// After a frame: `steps` fixed steps took `stepSeconds` of wall clock, and the rest of the frame (hooks,
     /// drawing, display) `otherSeconds`. Negative or non-finite times (a clock reset by a restart) count as 0.
     void record(int steps, double stepSeconds, double otherSeconds);
-    void clear();
     /// Steps the next frame may run: as many as fit in frameBudget less the drawing, at least 1, at most mostSteps
     /// (that many before any step was measured).
     int maxSteps() const;

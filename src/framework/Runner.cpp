@@ -203,7 +203,8 @@ void Runner::restart() {
         FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame.value_or(FramePacer::mostSteps));
     loop_->stepTimes.clear();
     loop_->pace.clear();
-    loop_->pacer.clear();  // another scene's steps cost differently
+    // The pacer keeps its estimates: a restart is most often of the same scene, and another scene's costs replace
+    // them within frames (a rise at once). Unmeasured, the first frame could run a long restart's time in steps.
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
     timeline_.clear();
