@@ -13,7 +13,10 @@ public:
     /// Adds one frame's duration (s, >= 0) and returns how many fixed steps to run now. When a frame would
     /// need more than maxStepsPerFrame steps the excess time is dropped: the simulation then runs slower than
     /// real time rather than falling ever further behind (no spiral of death).
-    int advance(double frameSeconds);
+    int advance(double frameSeconds) { return advance(frameSeconds, maxSteps_); }
+    /// As advance(frameSeconds), with this frame's cap lowered to `limit` (>= 1) when it is below
+    /// maxStepsPerFrame: the window's pacing (FramePacer) sets it frame by frame.
+    int advance(double frameSeconds, int limit);
 
     double step() const { return step_; }
     int maxStepsPerFrame() const { return maxSteps_; }

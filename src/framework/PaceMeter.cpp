@@ -28,7 +28,7 @@ void PaceMeter::clear() {
 double PaceMeter::pace() const { return real_ > 0.0 ? simulated_ / real_ : 0.0; }
 
 bool PaceMeter::cappedBelow(double timeScale) const {
-    return 4 * capped_ >= frames_.size() && capped_ > 0 && pace() < 0.97 * timeScale;
+    return capped_ >= 2 && 8 * capped_ >= frames_.size() && pace() < 0.97 * timeScale;
 }
 
 }  // namespace physim

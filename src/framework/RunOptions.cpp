@@ -173,7 +173,8 @@ std::string usage(std::string_view program, std::string_view title) {
        << "  --from FILE.psnap        start from a snapshot file (--snapshot-every's, or an interrupted run's) once\n"
        << "                           the scene is built: the same scene, parameters and --hz (the file's world\n"
        << "                           keeps its accuracy settings); --seconds then counts from the snapshot's time\n"
-       << "  --max-steps-per-frame N  cap on catch-up physics steps per window frame (default 8)\n"
+       << "  --max-steps-per-frame N  at most N physics steps per window frame, catching up as far as N allows\n"
+          "                           (default: as many as keep 20 frames per second, at least 1; slow motion beyond)\n"
        << "  --size WxH               window size in pixels (default 1280x720)\n"
        << accuracyUsage()
        << "  --help                   this text\n"

@@ -44,11 +44,23 @@ std::string showScale(double scale) {
     return text;
 }
 
-// The overlay bar's text: status, then the keys. `arrowsLegend`: V's scales, empty while off. `tallest`: with every
-// optional item, for the bar's most height.
+// What holds the run below real time, as the bar's slow-motion warning ends: the user's cap, or the pacing.
+std::string holdingBack(const std::optional<int>& maxStepsPerFrame, const FramePacer& pacer) {
+    char text[128];
+    if (maxStepsPerFrame)
+        std::snprintf(text, sizeof text, "the catch-up cap is %d steps per frame", *maxStepsPerFrame);
+    else
+        std::snprintf(text, sizeof text, "steps take %.3g ms and drawing %.3g ms, so at most %d a frame (for %.0f FPS)",
+                      1e3 * pacer.stepCost(), 1e3 * pacer.otherCost(), pacer.maxSteps(),
+                      1.0 / FramePacer::frameBudget);
+    return text;
+}
+
+// The overlay bar's text: status, then the keys. `holdingBack`: the slow-motion warning's end. `arrowsLegend`: V's
+// scales, empty while off. `tallest`: with every optional item, for the bar's most height.
 std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& controls, const PaceMeter& pace,
-                                        int maxStepsPerFrame, double framesPerSecond, const std::string& arrowsLegend,
-                                        bool tallest) {
+                                        const std::string& holdingBack, double framesPerSecond,
+                                        const std::string& arrowsLegend, bool tallest) {
     const sf::Color warning(190, 40, 0), keyColor(85, 85, 85);
     char text[160];
     std::vector<Overlay::Item> items;
@@ -78,8 +90,7 @@ std::vector<Overlay::Item> overlayItems(const Simulation& sim, const Controls& c
     if (!arrowsLegend.empty() || tallest)
         items.push_back({tallest && arrowsLegend.empty() ? arrowsLegendText(500.0, 5000.0) : arrowsLegend});
     if (tallest || (!sim.paused && pace.cappedBelow(controls.timeScale()))) {
-        std::snprintf(text, sizeof text, "slower than real time: %.2fx, the catch-up cap is %d steps per frame",
-                      pace.pace(), maxStepsPerFrame);
+        std::snprintf(text, sizeof text, "slower than real time: %.2fx, %s", pace.pace(), holdingBack.c_str());
         items.push_back({text, warning});
     }
     // The keys start a new line: a long first line of status would otherwise run into them.
@@ -125,7 +136,7 @@ void recordTrails(Trails& trails, std::vector<std::pair<BodyId, Vec2>>& position
 
 Runner::Runner(SimulationFactory factory, RunOptions options)
     : factory_(std::move(factory)), options_(std::move(options)),
-      loop_(std::make_unique<Loop>(options_.maxStepsPerFrame)),
+      loop_(std::make_unique<Loop>(options_.maxStepsPerFrame.value_or(FramePacer::mostSteps))),
       windowSize_(static_cast<unsigned>(options_.width), static_cast<unsigned>(options_.height)) {
     if (!factory_) throw std::invalid_argument("physim: Runner needs a simulation factory");
 #ifdef PHYSIM_WITH_CUDA
@@ -192,9 +203,12 @@ void Runner::restart() {
     // The file's world replaces onCreate's, with the settings and detection modes it was run with.
     if (options_.from && !sceneSwitched) resumeFrom(*options_.from);
     sim.start = true;
-    loop_->accumulator = FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame);
+    loop_->accumulator =
+        FixedStepAccumulator(sim.fixedTimeStep(), options_.maxStepsPerFrame.value_or(FramePacer::mostSteps));
     loop_->stepTimes.clear();
     loop_->pace.clear();
+    // The pacer keeps its estimates: a restart is most often of the same scene, and another scene's costs replace
+    // them within frames (a rise at once). Unmeasured, the first frame could run a long restart's time in steps.
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
     timeline_.clear();
@@ -337,8 +351,9 @@ sf::FloatRect Runner::sceneArea() const {
         // The bar at its tallest (paused, the instruments' readings and the catch-up warning shown), so the scene
         // stays clear of it.
         const std::vector<Overlay::Item> items =
-            overlayItems(*simulation_, loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                         framesPerSecond_, loop_->arrowsLegend, true);
+            overlayItems(*simulation_, loop_->controls, loop_->pace,
+                         holdingBack(options_.maxStepsPerFrame, loop_->pacer), framesPerSecond_, loop_->arrowsLegend,
+                         true);
         top = overlay_->barHeight(items, static_cast<float>(windowSize_.x) - left);
     }
     return {left, top, static_cast<float>(windowSize_.x) - left, static_cast<float>(windowSize_.y) - top};
@@ -350,6 +365,7 @@ void Runner::fitView() {
 }
 
 int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
+    const double frameStart = loop_->clock();
     Simulation& sim = simulation();
     sim.onUpdate();
     sim.updateEntities();
@@ -360,12 +376,17 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     int steps = 0;
     const std::uint64_t droppedBefore = loop_->accumulator.droppedSteps();
     const bool singleStep = loop_->controls.takeSingleStep();  // O: one step, asked for while paused
-    if (!sim.paused) steps = loop_->accumulator.advance(frameSeconds * loop_->controls.timeScale());
+    // Paced (no --max-steps-per-frame): no more steps than keep the frame within 1/20 s. The pacing sets only how
+    // many steps run, never their length: a headless run's one step a frame is always allowed.
+    const int limit = options_.maxStepsPerFrame ? *options_.maxStepsPerFrame : loop_->pacer.maxSteps();
+    if (!sim.paused) steps = loop_->accumulator.advance(frameSeconds * loop_->controls.timeScale(), limit);
     else if (singleStep) steps = 1;
+    const double stepsStart = loop_->clock();
     for (int i = 0; i < steps; ++i) {
         fixedStep();
         loop_->stepTimes.record(sim.world().profile());
     }
+    const double stepsEnd = loop_->clock();
     loop_->pace.record(frameSeconds, steps * sim.fixedTimeStep(), loop_->accumulator.droppedSteps() - droppedBefore,
                        sim.paused);
     sim.onDrawGraphs();
@@ -390,6 +411,9 @@ int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     }
     simulation().graphsManager.render();
     if (window) window->display();
+    // The rest of the frame: hooks, drawing, display (with its wait for the 60 FPS limit, only in a frame with time
+    // to spare).
+    loop_->pacer.record(steps, stepsEnd - stepsStart, (stepsStart - frameStart) + (loop_->clock() - stepsEnd));
     return steps;
 }
 
@@ -494,8 +518,9 @@ float Runner::drawOverlay(sf::RenderWindow& window) {
     const float left = panel_ ? panel_->width() : 0.f;
     const float height =
         overlay_->drawBar(window, left, static_cast<float>(window.getSize().x) - left,
-                          overlayItems(simulation(), loop_->controls, loop_->pace, loop_->accumulator.maxStepsPerFrame(),
-                                       framesPerSecond_, loop_->arrowsLegend, false));
+                          overlayItems(simulation(), loop_->controls, loop_->pace,
+                                       holdingBack(options_.maxStepsPerFrame, loop_->pacer), framesPerSecond_,
+                                       loop_->arrowsLegend, false));
     if (loop_->controls.statsShown())
         overlay_->drawPanel(window, height, formatStats(computeStats(simulation().world()), loop_->stepTimes));
     return height;

@@ -5,18 +5,28 @@
 #include "Arrows.hpp"
 #include "Controls.hpp"
 #include "FixedStepAccumulator.hpp"
+#include "FramePacer.hpp"
 #include "PaceMeter.hpp"
 #include "Stats.hpp"
 #include "Trails.hpp"
 
 #include "physim/framework/Runner.hpp"
 
+#include <chrono>
+#include <functional>
+
 namespace physim {
 
 struct Runner::Loop {
+    /// `maxStepsPerFrame`: --max-steps-per-frame's N, or FramePacer::mostSteps while the pacer sets each frame's.
     explicit Loop(int maxStepsPerFrame) : accumulator(1.0 / 40.0, maxStepsPerFrame) {}  // restart() sets the rate
 
     FixedStepAccumulator accumulator;
+    FramePacer pacer;  // each frame's step limit unless --max-steps-per-frame was given
+    /// Wall clock (s) the pacer's times are read from; tests put a fake one in (RunnerAccess::setClock).
+    std::function<double()> clock = [] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    };
     Controls controls;
     PaceMeter pace;
     StepTimes stepTimes;
@@ -34,6 +44,9 @@ struct RunnerAccess {
     static const FixedStepAccumulator& accumulator(const Runner& runner) { return runner.loop_->accumulator; }
     static Controls& controls(Runner& runner) { return runner.loop_->controls; }
     static const PaceMeter& pace(const Runner& runner) { return runner.loop_->pace; }
+    static const FramePacer& pacer(const Runner& runner) { return runner.loop_->pacer; }
+    /// The wall clock (s) the frame loop times its steps and drawing with.
+    static void setClock(Runner& runner, std::function<double()> clock) { runner.loop_->clock = std::move(clock); }
     static const Trails& trails(const Runner& runner) { return runner.loop_->trails; }
     /// Records the timeline as a window run does (headless runs keep none).
     static void recordTimeline(Runner& runner) { runner.recording_ = true; }

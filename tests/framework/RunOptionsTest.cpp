@@ -29,6 +29,7 @@ TEST(RunOptions, ParsesEveryFlag) {
     EXPECT_EQ(o.height, 600);
     EXPECT_TRUE(parseRunOptions({"--help"}).help);
     EXPECT_FALSE(parseRunOptions({}).headless);
+    EXPECT_FALSE(parseRunOptions({}).maxStepsPerFrame) << "unset: the window paces its frames (FramePacer)";
     EXPECT_TRUE(parseRunOptions({"--headless"}).headless);
 }
 

@@ -33,7 +33,10 @@ struct RunOptions {
     bool quiet = false;                ///< no progress on stderr and no closing line
     /// --param name=value, in order: the simulation's Parameters set before onCreate.
     std::vector<std::pair<std::string, double>> parameters;
-    int maxStepsPerFrame = 8;          ///< cap on catch-up steps per window frame
+    /// --max-steps-per-frame N: at most N steps per window frame, catching up behind real time as far as N allows.
+    /// Unset: each frame runs as many steps as fit in 1/20 s with its drawing (at least one), so a heavy scene
+    /// runs in slow motion at 20 frames per second or more. Set, it wins over that pacing.
+    std::optional<int> maxStepsPerFrame;
     int width = 1280;                  ///< window size, pixels
     int height = 720;
     // Accuracy knobs (docs/accuracy.md); applied after onCreate, so they win over the simulation's own choice.
