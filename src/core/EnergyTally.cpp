@@ -167,7 +167,7 @@ double kineticEnergyOf(const WorldImpl& w) {
     return e;
 }
 
-double potentialEnergyOf(const WorldImpl& w) {
+double potentialEnergyOf(const WorldImpl& w, GravitationPotential* cache) {
     double e = 0.0;
     for (const BodyData& b : w.bodies)
         if (b.alive && b.type == BodyType::Dynamic) e -= b.mass * b.gravityFactor() * w.settings.gravity.dot(b.center);
@@ -182,17 +182,33 @@ double potentialEnergyOf(const WorldImpl& w) {
     }
     const GravitationEffect& gravitation = w.effects.gravitation;
     if (gravitation.active()) {
-        const std::vector<std::uint32_t>& slots = gravitation.members();
-        const double G = gravitation.settings().G, eps2 = gravitation.settings().softening * gravitation.settings().softening;
-        for (std::size_t i = 0; i < slots.size(); ++i) {
-            const BodyData& a = w.bodies[slots[i]];
-            if (a.mass == 0.0) continue;
-            for (std::size_t k = i + 1; k < slots.size(); ++k) {
-                const BodyData& b = w.bodies[slots[k]];
-                if (b.mass == 0.0) continue;
-                e -= G * a.mass * b.mass / std::sqrt((b.center - a.center).squaredNorm() + eps2);
-            }
+        // Over all pairs, from flat arrays (a pair costs a few multiplies and one square root).
+        std::vector<double> x, y, m;
+        for (const std::uint32_t slot : gravitation.members()) {
+            const BodyData& b = w.bodies[slot];
+            if (b.mass == 0.0) continue;
+            x.push_back(b.center.x());
+            y.push_back(b.center.y());
+            m.push_back(b.mass);
         }
+        const double G = gravitation.settings().G, eps2 = gravitation.settings().softening * gravitation.settings().softening;
+        // With a cache: the last sum's bodies, masses and settings unchanged (a step's start after the step before),
+        // its value.
+        GravitationPotential fresh;
+        GravitationPotential& last = cache ? *cache : fresh;
+        if (!cache || !(last.x == x && last.y == y && last.m == m && last.G == G && last.eps2 == eps2)) {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < m.size(); ++i) {
+                double row = 0.0;  // m_j / r_ij over the bodies after i
+                for (std::size_t k = i + 1; k < m.size(); ++k) {
+                    const double dx = x[k] - x[i], dy = y[k] - y[i];
+                    row += m[k] / std::sqrt(dx * dx + dy * dy + eps2);
+                }
+                sum -= G * m[i] * row;
+            }
+            last = {std::move(x), std::move(y), std::move(m), G, eps2, sum};
+        }
+        e += last.value;
     }
     return e;
 }

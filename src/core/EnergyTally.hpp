@@ -69,8 +69,16 @@ private:
     std::vector<LedgerDamping> damping_;
 };
 
+/// The last all-pairs sum of gravitation's potential energy (J) and what it was summed over: a step's start, where
+/// nothing moved since the last step's end, reuses it.
+struct GravitationPotential {
+    std::vector<double> x, y, m;  // the attracting bodies' centres (m) and masses (kg), in member order
+    double G = 0.0, eps2 = 0.0;
+    double value = 0.0;
+};
+
 /// J: kinetic energy of every body; the ledger's potential energy (EnergyLedger.hpp), from the bodies' records.
 double kineticEnergyOf(const WorldImpl& w);
-double potentialEnergyOf(const WorldImpl& w);
+double potentialEnergyOf(const WorldImpl& w, GravitationPotential* cache = nullptr);
 
 }  // namespace physim

@@ -30,12 +30,12 @@ void World::restoreEnergyLedger(const EnergyLedger& ledger) {
     impl_->ledger = ledger;
 }
 
-double WorldImpl::ledgerEnergy() const { return kineticEnergyOf(*this) + potentialEnergyOf(*this); }
+double WorldImpl::ledgerEnergy() { return kineticEnergyOf(*this) + potentialEnergyOf(*this, &gravitationPotential); }
 
 void WorldImpl::closeLedgerStep(double before, bool solved) {
     EnergyParts parts = solved ? solver.tally().stepParts() : EnergyParts{};
     ledger.kinetic = kineticEnergyOf(*this);
-    ledger.potential = potentialEnergyOf(*this);
+    ledger.potential = potentialEnergyOf(*this, &gravitationPotential);
     // What the measured parts leave of the measured change.
     parts.residue = (ledger.energy() - before) - parts.sum();
     ledger.step = parts;

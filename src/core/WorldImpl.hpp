@@ -134,12 +134,13 @@ std::uint64_t stateHashOf(const WorldState& s);
 struct WorldImpl : WorldState {
     Executor executor;  // the threads: the machine's, not the state's
     EnergyLedger ledger;  // World::setEnergyLedger: an observer's, not the state's (a restore starts it again)
+    GravitationPotential gravitationPotential;  // the ledger's last all-pairs sum (EnergyTally.hpp)
 
     // --- helpers shared by the stages (defined in the file of their concern) ----------------------------
     BodyData& body(std::uint32_t slot) { return bodies[slot]; }
 
     // WorldEnergy.cpp: the ledger's energy now (kinetic + potential), and a step's close from the energy before it
-    double ledgerEnergy() const;
+    double ledgerEnergy();
     void closeLedgerStep(double before, bool solved);
 
     // World.cpp
