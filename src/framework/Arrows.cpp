@@ -46,9 +46,37 @@ std::vector<JointArrows> jointArrows(const World& world) {
     std::vector<JointArrows> arrows;
     for (const JointId id : world.joints()) {
         const auto [a, b] = world.jointAnchors(id);
-        arrows.push_back({a, b, world.jointReactionForce(id), world.jointType(id) == JointType::Mouse});
+        const auto [bodyA, bodyB] = world.jointBodies(id);
+        arrows.push_back({a, b, world.jointReactionForce(id), bodyA == bodyB});  // B twice: a joint to a point
     }
     return arrows;
+}
+
+Vec2 contactForceOn(const World& world, BodyId body, double dt) {
+    requirePositive("contact force's step", dt);
+    Vec2 force = Vec2::Zero();
+    const std::vector<Manifold> lists[] = {world.contacts(), world.sleepingContacts()};
+    for (const std::vector<Manifold>& list : lists)
+        for (const Manifold& m : list) {
+            if (m.bodyA != body && m.bodyB != body) continue;
+            Vec2 onB = Vec2::Zero();
+            for (int i = 0; i < m.pointCount; ++i) {
+                const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+                onB += p.normalImpulse * m.normal + p.tangentImpulse * perp(m.normal);
+            }
+            force += (m.bodyB == body ? onB : -onB) / dt;
+        }
+    return force;
+}
+
+Vec2 jointForceOn(const World& world, BodyId body) {
+    Vec2 force = Vec2::Zero();
+    for (const JointId id : world.joints()) {
+        const auto [a, b] = world.jointBodies(id);
+        if (b == body) force += world.jointReactionForce(id);
+        else if (a == body) force -= world.jointReactionForce(id);
+    }
+    return force;
 }
 
 double roundScaleUp(double value) {

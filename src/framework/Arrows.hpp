@@ -34,6 +34,12 @@ struct JointArrows {
 };
 std::vector<JointArrows> jointArrows(const World& world);
 
+/// The mean force on one body over the last step of `dt` seconds from its contacts (N; sleeping ones' included),
+/// and from its joints (each joint's World::jointReactionForce, on B, its opposite on A): what --record's
+/// contact_force and joint_force read.
+Vec2 contactForceOn(const World& world, BodyId body, double dt);
+Vec2 jointForceOn(const World& world, BodyId body);
+
 /// The smallest of 1, 2 or 5 times a power of ten at least `value` (> 0, finite; std::invalid_argument otherwise).
 double roundScaleUp(double value);
 

@@ -1,5 +1,7 @@
 #include "Recorder.hpp"
 
+#include "Arrows.hpp"
+
 #include "physim/framework/RigidBody.hpp"
 #include "physim/graphs/TreeFile.hpp"
 
@@ -22,7 +24,9 @@ const RigidBody* bodyOf(const Simulation& sim, int id) {
     return nullptr;
 }
 
-double valueOf(const World& world, const RigidBody& rb, const std::string& q) {
+double valueOf(const World& world, const RigidBody& rb, const std::string& q, double dt) {
+    if (q == "contact_force") return contactForceOn(world, rb.bodyId(), dt).norm();
+    if (q == "joint_force") return jointForceOn(world, rb.bodyId()).norm();
     if (q == "x") return rb.position().x();
     if (q == "y") return rb.position().y();
     if (q == "angle") return rb.angle();
@@ -39,7 +43,7 @@ std::string specText(const RecordSpec& s) { return std::to_string(s.entity) + ":
 
 double recordValue(const Simulation& sim, const RecordSpec& spec) {
     const RigidBody* rb = bodyOf(sim, spec.entity);
-    return rb ? valueOf(sim.world(), *rb, spec.quantity) : std::numeric_limits<double>::quiet_NaN();
+    return rb ? valueOf(sim.world(), *rb, spec.quantity, sim.fixedTimeStep()) : std::numeric_limits<double>::quiet_NaN();
 }
 
 Recorder::Recorder(std::vector<RecordSpec> specs, const Simulation& sim) : specs_(std::move(specs)) {

@@ -38,8 +38,11 @@ RecordSpec parseRecord(const std::string& text) {
 }  // namespace
 
 const std::vector<std::string>& RecordSpec::quantities() {
-    static const std::vector<std::string> names{"x",  "y",     "angle",           "vx",
-                                                "vy", "speed", "angular_velocity", "kinetic_energy"};
+    static const std::vector<std::string> names{"x",     "y",
+                                                "angle", "vx",
+                                                "vy",    "speed",
+                                                "angular_velocity", "kinetic_energy",
+                                                "contact_force",    "joint_force"};
     return names;
 }
 
@@ -49,6 +52,7 @@ const char* RecordSpec::unit(const std::string& q) {
     if (q == "vx" || q == "vy" || q == "speed") return "m/s";
     if (q == "angular_velocity") return "rad/s";
     if (q == "kinetic_energy") return "J";
+    if (q == "contact_force" || q == "joint_force") return "N";
     return "";
 }
 

@@ -61,6 +61,33 @@ TEST(Recorder, FreeFallKineticEnergyIsHalfMTimesGTSquaredAtEveryStep) {
     std::filesystem::remove_all(out);
 }
 
+// A box resting on a floor: its recorded contact force is its weight (the contacts' impulses over the whole step,
+// over the step): 1e-7 relative after 2 s (the soft contact has settled to 8e-9 by then); it has no joint, so its
+// joint force is 0.
+class Rest : public Simulation {
+public:
+    void onCreate() override {
+        auto& floor = spawn<Object>(Vec2(20.0, 1.0));
+        floor.rb.setMass(0.0);
+        floor.setPosition({0.0, -0.5});
+        box = &spawn<Object>(Vec2(1.0, 1.0));
+        box->rb.setMass(3.0);
+        box->setPosition({0.0, 0.5});
+    }
+    Object* box = nullptr;
+};
+
+TEST(Recorder, ARestingBoxsContactForceIsItsWeight) {
+    RunOptions o = parseRunOptions({"--headless", "--seconds", "2", "--quiet"});
+    Runner runner([] { return std::make_unique<Rest>(); }, o);
+    runner.restart();
+    for (int i = 0; i < 80; ++i) runner.frame(1.0 / 40.0, nullptr);
+    const Simulation& sim = runner.simulation();
+    const double weight = 3.0 * -sim.world().settings().gravity.y();
+    EXPECT_NEAR(recordValue(sim, {2, "contact_force"}), weight, 1e-7 * weight);
+    EXPECT_EQ(recordValue(sim, {2, "joint_force"}), 0.0);
+}
+
 TEST(Recorder, AnIdNoEntityHasOrAnEntityWithoutABodyIsRefused) {
     Drop sim;
     sim.onCreate();
