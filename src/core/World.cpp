@@ -262,7 +262,9 @@ BodyId World::createBody(const BodyDef& def) {
     if (b.type == BodyType::Dynamic) ++w.dynamicCount;
     if (b.detection != CollisionDetection::Discrete) ++w.continuousCount;
     w.touchingValid = false;
-    return BodyId{index, b.generation};
+    const BodyId id{index, b.generation};
+    if (!def.awake) setAwake(id, false);  // created asleep (a dynamic body in a world that sleeps: else no effect)
+    return id;
 }
 
 void World::destroyBody(BodyId id) {

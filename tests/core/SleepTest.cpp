@@ -181,3 +181,42 @@ TEST(Sleep, ASettledPyramidSleepsWithinTwoSecondsOfComingToRest) {
 
 }  // namespace
 }  // namespace physim
+
+namespace physim {
+namespace {
+
+// BodyDef::awake = false: a dynamic body starts asleep and stays put, not simulated (its velocity is kept, no
+// gravity acts), until a body striking it wakes it; then it falls like any other. Where the world does not sleep,
+// the flag does nothing.
+TEST(Sleep, ABodyCreatedAsleepWaitsUntilStruck) {
+    World w;
+    BodyDef ground;
+    ground.type = BodyType::Static;
+    ground.shape = makeBox(10.0, 0.5);
+    ground.position = {0.0, -0.5};
+    w.createBody(ground);
+    BodyDef waiting;
+    waiting.shape = makeBox(0.5, 0.5);
+    waiting.position = {0.0, 3.0};  // in the air: awake, it would fall
+    waiting.awake = false;
+    const BodyId still = w.createBody(waiting);
+    EXPECT_FALSE(w.isAwake(still));
+    for (int k = 0; k < 40; ++k) w.step(1.0 / 40.0);
+    EXPECT_EQ(w.position(still), Vec2(0.0, 3.0)) << "asleep: not simulated";
+    BodyDef ball;
+    ball.shape = makeCircle(0.2);
+    ball.position = {0.0, 5.0};
+    w.createBody(ball);  // falls onto it
+    for (int k = 0; k < 80; ++k) w.step(1.0 / 40.0);
+    EXPECT_TRUE(w.isAwake(still) || w.position(still).y() < 1.0);
+    EXPECT_LT(w.position(still).y(), 0.6) << "struck awake, it fell to the ground";
+
+    WorldSettings noSleep;
+    noSleep.enableSleep = false;
+    World awake(noSleep);
+    const BodyId b = awake.createBody(waiting);
+    EXPECT_TRUE(awake.isAwake(b));
+}
+
+}  // namespace
+}  // namespace physim

@@ -49,6 +49,9 @@ struct BodyDef {
     double gravityScale = 1.0;         ///< finite: the body feels gravityScale times the world's gravity
     bool fixedRotation = false;        ///< infinite inertia: contacts and torques do not rotate it
     bool allowSleep = true;            ///< false: this body, and any island it touches, never sleeps
+    /// false: a dynamic body starts asleep (where the world sleeps: WorldSettings::enableSleep), still until
+    /// something touches or wakes it (a grid of bodies waiting to be struck, as Box2D's smash benchmark has)
+    bool awake = true;
     /// Discrete, or continuous (sampled or exact time of impact; dynamic bodies only, docs/ccd.md).
     CollisionDetection collisionDetection = CollisionDetection::Discrete;
     double precision = kDefaultPrecision;  ///< sampled method's spacing, fraction of the step, in (0, 1]
