@@ -8,7 +8,7 @@ namespace physim {
 namespace {
 
 constexpr std::uint32_t kLeafSize = 8;    // points a leaf holds before it splits
-constexpr std::uint32_t kGroupSize = 32;  // points a group holds at most (a leaf of coincident points excepted)
+constexpr std::uint32_t kGroupSize = 64;  // points a group holds at most (a leaf of coincident points excepted)
 constexpr int kMaxDepth = 48;             // coincident points stop splitting here (2^-48 of the root's width)
 constexpr std::size_t kChunk = 256;       // pulls a group's list holds before its points sum them
 

@@ -21,7 +21,7 @@ void validate(const GravitationSettings& s) {
 namespace {
 
 constexpr std::size_t kGrain = 64;      // bodies per task, direct sum
-constexpr std::size_t kGroupGrain = 8;  // tree groups per task (up to 32 bodies each)
+constexpr std::size_t kGroupGrain = 4;  // tree groups per task (up to 64 bodies each)
 
 }  // namespace
 
