@@ -34,7 +34,7 @@ Vec2 directAcceleration(const std::vector<Vec2>& positions, const std::vector<do
 
 class BarnesHutTree {
 public:
-    /// Builds the tree over the points (m) with their masses (kg); both stay the caller's and must outlive it.
+    /// Builds the tree over the points (m) with their masses (kg), which it copies.
     void build(const std::vector<Vec2>& positions, const std::vector<double>& masses);
     /// Groups of neighbouring points; together they hold each point once.
     std::size_t groupCount() const { return groups_.size(); }
@@ -60,11 +60,15 @@ private:
         std::int32_t firstChild = -1;  // four consecutive children; -1: a leaf
         std::uint32_t begin = 0, end = 0;  // its points: order_[begin, end)
     };
+    struct Point {
+        double x, y, m;      // m, m, kg
+        std::uint32_t index;  // in the positions
+    };
     void split(std::uint32_t node, int depth);
     void collectGroups(std::uint32_t node);
 
-    const std::vector<Vec2>* positions_ = nullptr;
-    const std::vector<double>* masses_ = nullptr;
+    std::vector<Point> points_;  // the points, moved into their cells as the tree splits (contiguous, no lookups)
+    std::vector<Point> spare_;   // a split's scratch
     std::vector<Node> nodes_;
     std::vector<std::uint32_t> order_;  // point indices, grouped by leaf
     std::vector<double> x_, y_, m_;     // the points' coordinates (m) and masses (kg) in order_'s order
