@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
 
 namespace physim {
 namespace {
@@ -20,8 +19,8 @@ struct PullList {
 };
 
 // Adds the list's pulls to the group's points, four at a time: point j's acceleration is out[j]. Lane by lane
-// the pull's formula, in its order of operations; a pull with no direction (the point itself, or one on top
-// of it, unsoftened) adds nothing.
+// pull()'s formula, in its order of operations; a pull with no direction (from the point itself, or from one on
+// top of it) adds nothing.
 template <bool Vector>
 [[gnu::always_inline]] inline void sumPulls(const PullList& list, const double* x, const double* y,
                                             std::size_t count, double eps2, Vec2* out) {
@@ -46,7 +45,6 @@ template <bool Vector>
         for (int l = 0; l < kLanes && j + l < count; ++l) out[j + l] = Vec2(ax[l], ay[l]);
     }
 }
-
 
 }  // namespace
 
