@@ -5,10 +5,14 @@
 // forms; each form's time is its fastest round (what load is left, cache and memory contention, only adds time)
 // and each ratio the median over rounds of that round's ratio (the three forms of a round share its load).
 //
+// After the table, one evaluation of the Barnes-Hut gravitation (the tree built and every body's pull summed, one
+// per substep) on 3000 bodies: ms, the fastest of the steps, on one thread and on two (treeEvaluation).
+//
 // Usage: effects_bench [--json FILE] [--rounds N (default 41)] [--steps N per round (default 5)]
 //        [--only NAME]
-// Writes [{"effect":..., "without_ms":x, "unused_ms":x, "used_ms":x, "unused_ratio":x, "used_ratio":x}, ...] to
-// FILE and a Markdown table to stdout.
+// Writes [{"effect":..., "without_ms":x, "unused_ms":x, "used_ms":x, "unused_ratio":x, "used_ratio":x}, ...,
+// {"effect": "gravitation, Barnes-Hut", "bodies": 3000, "ms_per_evaluation": x, "ms_per_evaluation_two_threads": x}]
+// to FILE and Markdown tables to stdout.
 
 #include "physim/core/World.hpp"
 #include "support/Scenes.hpp"
@@ -22,6 +26,7 @@
 #include <memory>
 #include <random>
 #include <stdexcept>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -59,9 +64,10 @@ Scene circles() {
 }
 
 // A cluster of point-like bodies that touch nothing, in a disc of radius 10 m, turning slowly.
-Scene cluster(int count) {
+Scene cluster(int count, int threads = 1) {
     WorldSettings s;
     s.gravity = Vec2::Zero();
+    s.threads = threads;
     Scene scene{std::make_unique<World>(s), {}};
     World& w = *scene.world;
     GravitationSettings g;
@@ -93,6 +99,9 @@ Scene pyramid(bool boxes) {
 }
 
 using Build = std::function<Scene()>;
+
+constexpr const char* kTreeRow = "gravitation, Barnes-Hut";
+constexpr int kTreeBodies = 3000;
 
 struct Row {
     std::string effect, scene, used;  // name, the scene, what "used" means
@@ -168,7 +177,7 @@ std::vector<Row> rows() {
     r.push_back({"gravitation, direct", "200 bodies that touch nothing", "all 200 attract (direct sum)",
                  [] { return cluster(200); }, [attracting] { return attracting(200, false); },
                  [attracting] { return attracting(200, true); }});
-    r.push_back({"gravitation, Barnes-Hut", "3000 bodies that touch nothing", "all 3000 attract (tree, theta 0.5)",
+    r.push_back({kTreeRow, "3000 bodies that touch nothing", "all 3000 attract (tree, theta 0.5)",
                  [] { return cluster(3000); }, [attracting] { return attracting(3000, false); },
                  [attracting] { return attracting(3000, true); }});
     // A joint of definition `def`, made by World member `create`, joining a and b at their midpoint.
@@ -353,6 +362,29 @@ Measured measure(const Row& row, int rounds, int steps) {
     return {fastest(times[0]), fastest(times[1]), fastest(times[2]), median(unusedRatio), median(usedRatio)};
 }
 
+// One gravitation evaluation (ms), the fastest of `steps` steps of worlds of one and two threads stepped in turn
+// (so both see the same load): the effect's wall-clock time per substep from the profile; on one thread also the
+// step's CPU time per substep, which is the evaluation and a little more (integrating the bodies) but leaves out
+// time descheduled, and the smaller of the two counts.
+std::pair<double, double> treeEvaluation(int steps) {
+    Scene worlds[2] = {cluster(kTreeBodies, 1), cluster(kTreeBodies, 2)};
+    double fastest[2] = {1e300, 1e300};
+    for (Scene& s : worlds) {
+        for (const BodyId b : s.bodies) s.world->setAttracting(b, true);
+        for (int i = 0; i < 10; ++i) s.world->step(kDt);
+    }
+    for (int i = 0; i < steps; ++i)
+        for (int k = 0; k < 2; ++k) {
+            World& w = *worlds[k].world;
+            const double start = threadMilliseconds();
+            w.step(kDt);
+            const double cpu = threadMilliseconds() - start, substeps = w.settings().substeps;
+            const double wall = 1e3 * w.profile().secondsOf(Effect::Gravitation);
+            fastest[k] = std::min(fastest[k], (k == 0 ? std::min(cpu, wall) : wall) / substeps);
+        }
+    return {fastest[0], fastest[1]};
+}
+
 [[noreturn]] void usageError(const std::string& message) {
     std::fprintf(stderr, "effects_bench: %s\nusage: effects_bench [--json FILE] [--rounds N] [--steps N] [--only NAME]\n",
                  message.c_str());
@@ -409,6 +441,16 @@ int main(int argc, char** argv) {
                          first ? "" : ",", row.effect.c_str(), m.without, m.unused, m.used, m.unusedRatio, m.usedRatio);
         }
         first = false;
+    }
+    if (only.empty() || only == kTreeRow) {
+        const auto [one, two] = treeEvaluation(rounds * steps);
+        std::printf("\n| effect | bodies | ms per evaluation, 1 thread | 2 threads |\n|---|---:|---:|---:|\n");
+        std::printf("| %s | %d | %.4f | %.4f |\n", kTreeRow, kTreeBodies, one, two);
+        if (out)
+            std::fprintf(out,
+                         "%s\n  {\"effect\": \"%s\", \"bodies\": %d, \"ms_per_evaluation\": %.6f, "
+                         "\"ms_per_evaluation_two_threads\": %.6f}",
+                         first ? "" : ",", kTreeRow, kTreeBodies, one, two);
     }
     if (out) {
         std::fprintf(out, "\n]\n");

@@ -1,7 +1,7 @@
 # cmake -DEFFECTS_BENCH=<effects_bench> -DWORK_DIR=<dir> -P EffectsBenchSmoke.cmake
 # Runs effects_bench on one effect with one short round and checks what it writes, not how fast anything is: the
-# JSON has the one row asked for with the fields docs/effects.md promises, every time positive; bad arguments
-# exit with status 2 and a message.
+# JSON has the one row asked for with the fields docs/effects.md promises, every time positive; the Barnes-Hut
+# gravitation adds its evaluation row (bodies, ms per evaluation); bad arguments exit with status 2 and a message.
 cmake_policy(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/BenchSmoke.cmake)
 bench_smoke_fresh_dir()
@@ -20,6 +20,23 @@ if(NOT effect STREQUAL "drag")
 endif()
 foreach(field without_ms unused_ms used_ms unused_ratio used_ratio)
   bench_smoke_number("${bench_json}" value 0 ${field})
+  if(NOT value GREATER 0)
+    message(FATAL_ERROR "'${field}' is ${value}, not a positive time")
+  endif()
+endforeach()
+bench_smoke_run("${EFFECTS_BENCH}" "${WORK_DIR}/tree.json" "\\| effect \\| bodies \\| ms per evaluation"
+  --only "gravitation, Barnes-Hut" --rounds 1 --steps 1 --json "${WORK_DIR}/tree.json")
+string(JSON rows ERROR_VARIABLE jerr LENGTH "${bench_json}")
+if(jerr OR NOT rows EQUAL 2)
+  message(FATAL_ERROR "expected the step row and the evaluation row (${jerr}):\n${bench_json}")
+endif()
+string(JSON effect GET "${bench_json}" 1 effect)
+bench_smoke_number("${bench_json}" bodies 1 bodies)
+if(NOT effect STREQUAL "gravitation, Barnes-Hut" OR NOT bodies EQUAL 3000)
+  message(FATAL_ERROR "the evaluation row is '${effect}' over ${bodies} bodies:\n${bench_json}")
+endif()
+foreach(field ms_per_evaluation ms_per_evaluation_two_threads)
+  bench_smoke_number("${bench_json}" value 1 ${field})
   if(NOT value GREATER 0)
     message(FATAL_ERROR "'${field}' is ${value}, not a positive time")
   endif()

@@ -6,6 +6,7 @@
 
 #include "physim/core/Validate.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -19,7 +20,8 @@ void validate(const GravitationSettings& s) {
 
 namespace {
 
-constexpr std::size_t kGrain = 64;
+constexpr std::size_t kGrain = 64;      // bodies per task, direct sum
+constexpr std::size_t kGroupGrain = 4;  // tree groups per task (up to 64 bodies each)
 
 }  // namespace
 
@@ -33,15 +35,32 @@ void GravitationEffect::apply(WorldImpl& w, double h) {
         masses_[k] = w.bodies[slots[k]].mass;
     }
     const double G = settings_.G, eps2 = settings_.softening * settings_.softening, theta = settings_.theta;
-    const bool tree = usesTree();
-    if (tree) tree_.build(positions_, masses_);
-    w.executor.parallelFor(n, kGrain, [&](std::size_t begin, std::size_t end, int) {
-        for (std::size_t k = begin; k < end; ++k) {
-            const BodyData& b = w.bodies[slots[k]];
-            if (!b.awake() || b.type != BodyType::Dynamic) continue;
-            const Vec2 a = tree ? tree_.acceleration(k, G, eps2, theta)
-                                : directAcceleration(positions_, masses_, k, G, eps2);
-            w.solver.states()[static_cast<std::size_t>(b.awakeIndex)].v += h * a;
+    auto kick = [&](std::uint32_t member, const Vec2& a) {
+        const BodyData& b = w.bodies[slots[member]];
+        w.solver.states()[static_cast<std::size_t>(b.awakeIndex)].v += h * a;
+    };
+    auto pulled = [&](std::uint32_t member) {
+        const BodyData& b = w.bodies[slots[member]];
+        return b.awake() && b.type == BodyType::Dynamic;
+    };
+    if (!usesTree()) {
+        w.executor.parallelFor(n, kGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t k = begin; k < end; ++k)
+                if (pulled(static_cast<std::uint32_t>(k)))
+                    kick(static_cast<std::uint32_t>(k), directAcceleration(positions_, masses_, k, G, eps2));
+        });
+        return;
+    }
+    tree_.build(positions_, masses_);
+    accelerations_.resize(n);
+    const std::vector<std::uint32_t>& order = tree_.order();
+    w.executor.parallelFor(tree_.groupCount(), kGroupGrain, [&](std::size_t begin, std::size_t end, int) {
+        for (std::size_t g = begin; g < end; ++g) {
+            const std::uint32_t first = tree_.groupBegin(g), last = tree_.groupEnd(g);
+            if (std::none_of(order.begin() + first, order.begin() + last, pulled)) continue;
+            tree_.groupAccelerations(g, G, eps2, theta, accelerations_.data() + first);
+            for (std::uint32_t k = first; k < last; ++k)
+                if (pulled(order[k])) kick(order[k], accelerations_[k]);
         }
     });
 }

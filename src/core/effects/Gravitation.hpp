@@ -39,6 +39,7 @@ private:
     GravitationSettings settings_;
     std::vector<Vec2> positions_;  // per member, this substep
     std::vector<double> masses_;
+    std::vector<Vec2> accelerations_;  // the tree's, in its order (BarnesHutTree::order)
     BarnesHutTree tree_;
 };
 
