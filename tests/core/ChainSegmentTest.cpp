@@ -4,6 +4,7 @@
 // joint's vertex and the shape's meet and their direction is straight up to 1e-12 rad: kStraightUp allows that.
 
 #include "physim/core/Collide.hpp"
+#include "Manifolds.hpp"
 #include "shapes/ChainSegmentKind.hpp"
 
 #include <gtest/gtest.h>
@@ -318,6 +319,52 @@ TEST(ChainSegment, GroundAgainstGroundHasNoContact) {
     EXPECT_EQ(collide(piece, Transform{}, piece, Transform{}).pointCount, 0);
     EXPECT_EQ(collide(piece, Transform{}, makeSegment({-2, -1}, {-2, 1}), Transform{}).pointCount, 0);
     EXPECT_EQ(collide(makeSegment({-2, -1}, {-2, 1}), Transform{}, piece, Transform{}).pointCount, 0);
+}
+
+// A circle's chain collision skips the routine where the circle lies clearly beyond an end of the piece and the
+// neighbour answers (circleLeftToNeighbour): there the routine must give no contact. Random joints turning -60 to
+// 60 degrees (some chains open-ended), random circles near the joint, random piece transforms and margins: every
+// skipped case is checked against collideChainSegment, and the collision with the skip gives the routine's
+// manifold bit for bit in every case (the skip returns only where the routine finds nothing).
+TEST(ChainSegment, CircleShortcutGivesTheRoutinesAnswer) {
+    std::mt19937_64 rng(53);
+    auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+    int skipped = 0, skippedAtConvex = 0, contacts = 0;
+    for (int k = 0; k < 40000; ++k) {
+        const double heading = uniform(-M_PI, M_PI), turn = uniform(-M_PI / 3, M_PI / 3);
+        const Vec2 joint(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+        const Vec2 d1(std::cos(heading), std::sin(heading)), d2(std::cos(heading + turn), std::sin(heading + turn));
+        const double length = uniform(0.1, 1.0);
+        std::vector<ChainSegment> chain = openChain({joint - length * d1, joint, joint + length * d2});
+        if (k % 10 == 0) chain[1].ghost1 = chain[1].segment.point1;  // an open end at the joint: a real corner
+        const Circle circle = makeCircle(uniform(0.05, 0.5));
+        const Transform xa{{uniform(-5.0, 5.0), uniform(-5.0, 5.0)}, Rotation::fromAngle(uniform(-M_PI, M_PI))};
+        const Transform xb{xa.apply(joint + Vec2(uniform(-0.8, 0.8), uniform(-0.8, 0.8))),
+                           Rotation::fromAngle(uniform(-M_PI, M_PI))};
+        const double margin = uniform(0.0, 0.2);
+        for (int i = 0; i < 2; ++i) {
+            SCOPED_TRACE("draw " + std::to_string(k) + ", piece " + std::to_string(i));
+            const NarrowResult full = collideChainSegment(chain[i], xa, coreOf(circle), xb, margin);
+            const NarrowResult got = collideGeometries(chain[i], xa, circle, xb, margin);
+            if (circleLeftToNeighbour(chain[i], xa, circle, xb)) {
+                ++skipped;
+                if (turn < 0.0) ++skippedAtConvex;
+                EXPECT_EQ(full.manifold.pointCount, 0);
+            }
+            contacts += full.manifold.pointCount > 0;
+            ASSERT_EQ(got.manifold.pointCount, full.manifold.pointCount);
+            for (int p = 0; p < full.manifold.pointCount; ++p) {
+                EXPECT_EQ(got.manifold.normal, full.manifold.normal);
+                EXPECT_EQ(got.manifold.points[p].point, full.manifold.points[p].point);
+                EXPECT_EQ(got.manifold.points[p].separation, full.manifold.points[p].separation);
+                EXPECT_EQ(got.manifold.points[p].id, full.manifold.points[p].id);
+            }
+        }
+    }
+    // The draws reach every branch: skips at convex and other joints, and contacts the routine keeps.
+    EXPECT_GT(skipped, 5000);
+    EXPECT_GT(skippedAtConvex, 1000);
+    EXPECT_GT(contacts, 5000);
 }
 
 }  // namespace

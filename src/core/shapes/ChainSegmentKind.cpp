@@ -41,6 +41,7 @@ struct Spread {
 };
 
 Spread spreadOf(const RoundedCore& b, const Transform& relative) {
+    if (b.count == 1) return {Vec2::Zero() + relative.apply(b.vertices[0]), 0.0};  // the loops' bits, unrolled
     std::array<Vec2, Polygon::maxVertices> placed;
     Vec2 centre = Vec2::Zero();
     for (int i = 0; i < b.count; ++i) {
@@ -66,7 +67,8 @@ bool apart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius, doubl
     const Vec2 e = p2 - p1;
     const double t = std::clamp(e.dot(b.centre - p1) / e.squaredNorm(), 0.0, 1.0);
     const double distance = (b.centre - (p1 + t * e)).norm();
-    return distance - std::sqrt(b.reachSquared) - radius > std::max(margin, kSpeculativeMargin);
+    const double reach = b.reachSquared > 0.0 ? std::sqrt(b.reachSquared) : 0.0;  // a circle's is 0: no root
+    return distance - reach - radius > std::max(margin, kSpeculativeMargin);
 }
 
 // apart's answer where it is plain, without its division and square roots: the centre's squared distance from the
@@ -89,6 +91,42 @@ bool clearlyApart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius
         bound *= length2;
     }
     return squared > bound;
+}
+
+// A circle whose centre lies clearly beyond an end of the piece, where a neighbour goes on: the rule below finds
+// that end's vertex closest, a normal off the face normal (sine > 1e-3) leaning towards that end, and keeps no
+// contact where the chain goes on flat or bends left (the neighbour's face answers; collideWithFace keeps nothing
+// outside the span), nor where it bends right and the normal lies beyond the neighbour's face normal. This finds
+// that empty answer without the routines. "Clearly": each side of each test by more than 1e-3 of the lengths
+// involved, far above any rounding of the rule's own tests; a turn >= 0 is never the convex case.
+bool leftToNeighbour(const ChainSegment& a, const Vec2& centre) {
+    const Vec2& p1 = a.segment.point1;
+    const Vec2& p2 = a.segment.point2;
+    const Vec2 along = p2 - p1;
+    const double u = (centre - p1).dot(along), length2 = along.squaredNorm();
+    // Past `end` by `beyondEnd` (along . (centre - end)), the neighbour's direction along the chain, `atStart`.
+    auto past = [&](const Vec2& end, double beyondEnd, const Vec2& neighbour, bool atStart) {
+        const Vec2 toCentre = centre - end;
+        const double distance2 = toCentre.squaredNorm();
+        if (!(beyondEnd * beyondEnd > 1e-6 * length2 * distance2)) return false;
+        const double turn = atStart ? cross(neighbour, along) : cross(along, neighbour);  // < 0: bends right
+        if (turn >= 0.0) return true;
+        const double side = atStart ? cross(perp(neighbour), toCentre) : cross(toCentre, perp(neighbour));
+        return side > 0.0 && side * side > 1e-6 * neighbour.squaredNorm() * distance2;
+    };
+    if (u < 0.0) return a.ghost1 != p1 && past(p1, u, Vec2(p1 - a.ghost1), true);
+    if (u > length2) return a.ghost2 != p2 && past(p2, u - length2, Vec2(a.ghost2 - p2), false);
+    return false;
+}
+
+// A circle's core placed in the piece's frame: relativeCore's vertex, without its copies of the unused entries.
+RoundedCore pointCore(const Vec2& centre, double radius) {
+    RoundedCore k;
+    k.vertices[0] = centre;
+    k.normals[0] = Vec2::Zero();
+    k.count = 1;
+    k.radius = radius;
+    return k;
 }
 
 }  // namespace
@@ -115,13 +153,14 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     const Vec2& p1 = a.segment.point1;
     const Vec2& p2 = a.segment.point2;
     // The cheap rejections first: most pieces near a body are out of its reach or behind it.
-    const Spread spread = spreadOf(b, relativeTransform(xa, xb));
+    const Transform relative = relativeTransform(xa, xb);
+    const Spread spread = spreadOf(b, relative);
     if (clearlyApart(p1, p2, spread, b.radius, margin)) return {};
     if (offsetFromLine(a, spread.centre) < 0.0) return {};  // behind: one-sided
     if (apart(p1, p2, spread, b.radius, margin)) return {};
 
     const RoundedCore piece = coreOf(p1, p2, 0.0);
-    const RoundedCore local = relativeCore(b, xa, xb);
+    const RoundedCore local = b.count == 1 ? pointCore(relative.apply(b.vertices[0]), b.radius) : relativeCore(b, xa, xb);
     const Vec2 face = piece.normals[kFace];
 
     const LocalManifold m = collideCores(piece, local, margin);
@@ -142,6 +181,10 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
         return beyond ? NarrowResult{} : placed(m, xa);
     }
     return placed(collideWithFace(piece, kFace, local, margin), xa);
+}
+
+bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
+    return leftToNeighbour(a, relativeTransform(xa, xb).apply(b.center));
 }
 
 }  // namespace physim

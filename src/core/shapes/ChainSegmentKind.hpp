@@ -16,6 +16,10 @@ double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b,
                                  const Transform& xb, double margin);
 
+/// Whether collideChainSegment surely gives the circle b no contact because its centre lies clearly beyond an end of
+/// the piece where the neighbour answers for it: decided in a few products, without the routines.
+bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb);
+
 template <>
 struct ShapeKind<ChainSegment> {
     static constexpr const char* name = "chain segment";
@@ -67,6 +71,12 @@ struct ShapeKind<ChainSegment> {
     static NarrowResult collide(const ChainSegment&, const Transform&, const ChainSegment&, const Transform&,
                                 double) {
         return {};
+    }
+    // A wheel rolling on a chain meets its piece's neighbours within the margin: most are left to the neighbour.
+    static NarrowResult collide(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb,
+                                double margin) {
+        if (circleLeftToNeighbour(a, xa, b, xb)) return {};
+        return collideChainSegment(a, xa, coreOf(b), xb, margin);
     }
     template <class T>
     static NarrowResult collide(const ChainSegment& a, const Transform& xa, const T& b, const Transform& xb,
