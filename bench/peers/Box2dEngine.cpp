@@ -41,8 +41,8 @@ constexpr double kCapsuleCore = 0.0025;  // m, half the height of a capsule's st
 class Box2dRun final : public EngineRun {
 public:
     explicit Box2dRun(const Scene& scene)
-        : world_(b2Vec2(0.0f, static_cast<float>(kGravity))), collides_(scene.collisions) {
-        world_.SetAllowSleeping(false);
+        : world_(b2Vec2(0.0f, static_cast<float>(scene.gravity))), collides_(scene.collisions) {
+        world_.SetAllowSleeping(scene.sleep);
         std::vector<b2Body*> statics;
         for (const ShapeSpec& s : scene.statics) statics.push_back(add(s, b2_staticBody));
         if (!scene.chain.empty()) addChain(scene.chain);
@@ -82,11 +82,15 @@ private:
         b2BodyDef bd;
         bd.type = type;
         bd.position.Set(static_cast<float>(s.x), static_cast<float>(s.y));
+        if (type == b2_dynamicBody) {
+            bd.linearVelocity.Set(static_cast<float>(s.vx), static_cast<float>(s.vy));
+            bd.awake = !s.asleep;
+        }
         b2Body* body = world_.CreateBody(&bd);  // owned by world_
         b2PolygonShape box;
         b2CircleShape circle;
         b2FixtureDef fd;
-        double density = kDensity;
+        double density = s.density > 0.0 ? s.density : kDensity;
         if (s.isCircle()) {
             circle.m_radius = static_cast<float>(s.radius);
             fd.shape = &circle;

@@ -75,7 +75,7 @@ struct Row {
               << "usage: peer_bench [--scenes a,b,...] [--engines a,b,...] [--repeats n] [--steps n] "
                  "[--substeps a,b,...] [--json FILE] [--profile]\n"
               << "  --scenes   large_pyramid, pyramid<N> (N in 1..400), circles1000, many_pyramids, pyramid_grid<R> "
-                 "(R rows of 20 base-10 pyramids), chain_terrain, joint_grid, cars, scaling (grids of 1k to 21k boxes, "
+                 "(R rows of 20 base-10 pyramids), chain_terrain, joint_grid, cars, smash, scaling (grids of 1k to 21k boxes, "
                  "for the fit), all (default)\n"
               << "  --engines  physim and the peers this build has (default: all of them)\n"
               << "  --repeats  runs of each scene and engine, n >= 1 (default 3)\n"

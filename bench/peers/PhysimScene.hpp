@@ -23,17 +23,27 @@ inline physim::WorldSettings physimSettings(int threads, int substeps = physim::
 /// Adds the scene's bodies (statics, then the chain, then the dynamic bodies), pins and wheel joints to `world`;
 /// returns the dynamic bodies' ids in the scene's order.
 inline std::vector<physim::BodyId> buildPhysim(physim::World& world, const Scene& scene) {
+    if (scene.gravity != kGravity || scene.sleep) {
+        physim::WorldSettings settings = world.settings();
+        settings.gravity = {0.0, scene.gravity};
+        settings.enableSleep = scene.sleep;
+        world.setSettings(settings);
+    }
     auto add = [&](const ShapeSpec& s, physim::BodyType type) {
         physim::BodyDef d;
         d.type = type;
         d.position = {s.x, s.y};
+        if (type == physim::BodyType::Dynamic) {
+            d.velocity = {s.vx, s.vy};
+            d.awake = !s.asleep;
+        }
         if (s.isCircle())
             d.shape = physim::makeCircle(s.radius);
         else if (s.isCapsule())
             d.shape = physim::makeCapsule({-s.halfLength, 0.0}, {s.halfLength, 0.0}, s.radius);
         else
             d.shape = physim::makeBox(s.halfWidth, s.halfHeight);
-        d.density = kDensity;
+        d.density = s.density > 0.0 ? s.density : kDensity;
         d.staticFriction = kFriction;
         d.dynamicFriction = kFriction;
         d.collides = scene.collisions;

@@ -152,6 +152,31 @@ Scene jointGridScene() {
     return s;
 }
 
+Scene smashScene() {
+    Scene s;
+    s.name = "smash";
+    s.gravity = 0.0;
+    s.sleep = true;
+    ShapeSpec ram;
+    ram.x = -20.0;
+    ram.halfWidth = ram.halfHeight = 4.0;
+    ram.vx = 40.0;
+    ram.density = 8.0;
+    s.dynamics.push_back(ram);
+    constexpr int kColumns = 120, kRows = 80;
+    constexpr double kSide = 0.4;
+    for (int i = 0; i < kColumns; ++i)
+        for (int j = 0; j < kRows; ++j) {
+            ShapeSpec square;
+            square.x = 30.0 + i * kSide;
+            square.y = (j - 0.5 * kRows) * kSide;
+            square.halfWidth = square.halfHeight = 0.5 * kSide;
+            square.asleep = true;
+            s.dynamics.push_back(square);
+        }
+    return s;
+}
+
 Scene carsScene() {
     Scene s;
     s.name = "cars";
@@ -229,13 +254,14 @@ Scene makeScene(const std::string& name) {
     if (name == "chain_terrain") return chainTerrainScene();
     if (name == "joint_grid") return jointGridScene();
     if (name == "cars") return carsScene();
+    if (name == "smash") return smashScene();
     const int base = numberAfter("pyramid", name);
     if (base >= 1 && base <= 400) return pyramidScene(name, base);
     const int rows = numberAfter("pyramid_grid", name);
     if (rows >= 1 && rows <= 100) return pyramidGridScene(name, rows);
     throw std::invalid_argument("unknown scene '" + name +
                                 "' (large_pyramid, pyramid<N> with N in 1..400, circles1000, many_pyramids, "
-                                "pyramid_grid<R> with R in 1..100, chain_terrain, joint_grid, cars, scaling, all)");
+                                "pyramid_grid<R> with R in 1..100, chain_terrain, joint_grid, cars, smash, scaling, all)");
 }
 
 std::vector<std::string> defaultScenes() {

@@ -23,6 +23,9 @@ struct ShapeSpec {
     double halfHeight = 0.0;
     double radius = 0.0;
     double halfLength = 0.0;
+    double vx = 0.0, vy = 0.0;  ///< starting velocity, m/s (dynamic bodies)
+    double density = 0.0;       ///< kg/m^2; 0: kDensity
+    bool asleep = false;        ///< a dynamic body created asleep (scenes with `sleep` on)
 
     bool isCircle() const { return radius > 0.0 && halfLength == 0.0; }
     bool isCapsule() const { return radius > 0.0 && halfLength > 0.0; }
@@ -81,6 +84,10 @@ struct Scene {
     /// drove and how many stayed upright at the end.
     std::vector<WheelSpec> wheels;
     std::vector<std::size_t> cars;
+    /// Gravity along y (m/s^2), and whether bodies may sleep: the scenes run with kGravity and sleep off, but for
+    /// smash (zero gravity, a grid created asleep).
+    double gravity = kGravity;
+    bool sleep = false;
 };
 
 /// The pyramid of base `base` (base * (base + 1) / 2 boxes of half-size 0.5) standing on the ground at
@@ -99,6 +106,9 @@ Scene pyramidGridScene(const std::string& name, int rows);
 /// (0.25 m each, a sum of three sines, steep at both ends), where they roll into its valleys.
 Scene chainTerrainScene();
 
+/// smash, Box2D v3's benchmark of that name: no gravity, sleep on; an 8 m box of density 8 at (-20, 0) moving at
+/// 40 m/s along x into a grid of 120 x 80 squares of 0.4 m, created asleep, 0.4 m apart from x = 30, centred on y = 0.
+Scene smashScene();
 /// joint_grid, Box2D's benchmark of that name: 100 x 100 discs (radius 0.4 m) 1 m apart, column k at x = k, row i
 /// at y = -i, each pinned to the disc below and the disc to its right halfway between them; the discs of row 0 in
 /// columns 47 to 53 are static, and the grid hangs from them. No collisions. Box2D's six pins between two of those

@@ -259,6 +259,7 @@ template <bool V>
                                               bool touching) {
     if (hadPoints != (c.manifold.pointCount > 0)) p.pointsChanged->store(true, std::memory_order_relaxed);
     if (touching != c.touching) p.flags[i] = touching ? kBegan : kEnded;
+    else if (!hadPoints && c.manifold.pointCount > 0) p.flags[i] = kReached;  // speculative points, not touching
     c.touching = touching;
 }
 
@@ -589,6 +590,11 @@ void WorldImpl::updateContacts() {
         } else if (flag == kEnded) {
             events.end.push_back(event);
             if (dynamicPair) unlinkBodies(c.a(), c.b());
+        } else if (flag == kReached) {
+            // Speculative points reach a sleeper before the pair touches: it wakes now, so this step's rows move
+            // it (asleep, it would stand as immovable and stop whatever comes at it, however heavy).
+            if (!bodies[c.a()].awake() && bodies[c.a()].type == BodyType::Dynamic) wakeBody(c.a());
+            if (!bodies[c.b()].awake() && bodies[c.b()].type == BodyType::Dynamic) wakeBody(c.b());
         }
     }
 }

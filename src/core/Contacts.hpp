@@ -16,7 +16,7 @@ struct ShapeData;
 class BroadPhase;
 
 /// What the narrow phase found changed about an awake contact.
-enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4, kDeferred = 8 };
+enum ContactChange : std::uint8_t { kNone = 0, kBegan = 1, kEnded = 2, kParted = 4, kDeferred = 8, kReached = 16 };
 
 /// One narrow phase: contact i of the loop is contacts[awakeContacts[i]], its change goes to flags[i].
 struct RefreshPass {

@@ -69,6 +69,10 @@ void WorldImpl::linkBodies(std::uint32_t a, std::uint32_t b) {
     if (!settings.enableSleep) return;
     std::int32_t big = bodies[a].island, small = bodies[b].island;
     if (big == small || big == kNullIndex || small == kNullIndex) return;
+    // An awake body linking to a sleeping island wakes it first: merged into an awake island, its bodies would
+    // otherwise count as awake without being simulated (an awake ram struck a grid created asleep and bounced off).
+    if (islands[static_cast<std::size_t>(big)].awake != islands[static_cast<std::size_t>(small)].awake)
+        wakeIsland(static_cast<std::uint32_t>(islands[static_cast<std::size_t>(big)].awake ? small : big));
     if (islands[static_cast<std::size_t>(big)].bodyCount < islands[static_cast<std::size_t>(small)].bodyCount)
         std::swap(big, small);
     IslandData& to = islands[static_cast<std::size_t>(big)];
