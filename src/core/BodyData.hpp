@@ -73,6 +73,8 @@ struct BodyData {
     bool movable() const { return type != BodyType::Static; }
     /// Multiplies the world's gravity for this body.
     double gravityFactor() const { return useGravity ? gravityScale : 0.0; }
+    /// J, translation and rotation (0 for an immovable body: no mass).
+    double kineticEnergy() const { return 0.5 * mass * v.squaredNorm() + 0.5 * inertia * w * w; }
     bool canSleep() const { return allowSleep && !attracting; }
     bool awake() const { return awakeIndex != kNullIndex; }
 };

@@ -11,7 +11,7 @@ void EnergyTally::startStep(std::size_t bodies, std::size_t groups, std::size_t 
     start_.assign(bodies, {});
     cursor_.assign(bodies, {});
     moved_.assign(bodies, {});
-    for (auto& e : effect_) e.assign(bodies, {});
+    drag_.assign(bodies, {});
     totals_.assign(blocks * kLanes * 3, 0.0);  // the step's totals start from nothing (prepareContacts)
     groups_.assign(groups, {});
     damping_.clear();
@@ -21,15 +21,16 @@ void EnergyTally::markStart(const SolverBody* st, const std::uint32_t* list, std
     for (std::size_t k = 0; k < count; ++k) {
         const std::uint32_t i = list[k];
         start_[i] = cursor_[i] = {st[i].v, st[i].w};
-        for (auto& e : effect_) e[i] = {};
+        drag_[i] = {};
     }
 }
 
 void EnergyTally::markEffect(LedgerEffect e, const SolverBody* st, std::size_t count) {
-    std::vector<LedgerMotion>& change = effect_[static_cast<std::size_t>(e)];
     for (std::size_t i = 0; i < count; ++i) {
-        change[i].v += st[i].v - cursor_[i].v;
-        change[i].w += st[i].w - cursor_[i].w;
+        if (e == LedgerEffect::Drag) {
+            drag_[i].v += st[i].v - cursor_[i].v;
+            drag_[i].w += st[i].w - cursor_[i].w;
+        }
         cursor_[i] = {st[i].v, st[i].w};
     }
 }
@@ -150,7 +151,7 @@ void EnergyTally::closeSubstep(const WorldImpl& w, std::size_t g, const SolverBo
         const BodyData& b = w.bodies[sim.body];
         const LedgerMotion at = mean(static_cast<std::int32_t>(i));
         parts.work += h * (b.force.dot(at.v) + b.torque * at.w);
-        parts.drag += work(b.mass, b.inertia, effect_[static_cast<std::size_t>(LedgerEffect::Drag)][i], at);
+        parts.drag += work(b.mass, b.inertia, drag_[i], at);
     }
 }
 
@@ -163,7 +164,7 @@ EnergyParts EnergyTally::stepParts() const {
 double kineticEnergyOf(const WorldImpl& w) {
     double e = 0.0;
     for (const BodyData& b : w.bodies)
-        if (b.alive && b.type == BodyType::Dynamic) e += 0.5 * b.mass * b.v.squaredNorm() + 0.5 * b.inertia * b.w * b.w;
+        if (b.alive && b.type == BodyType::Dynamic) e += b.kineticEnergy();
     return e;
 }
 

@@ -9,7 +9,6 @@
 #include "physim/core/EnergyLedger.hpp"
 #include "physim/core/Math.hpp"
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -44,7 +43,8 @@ public:
     void startStep(std::size_t bodies, std::size_t groups, std::size_t blocks);
     /// The listed bodies' velocities now start a substep (before the force effects and the kick).
     void markStart(const SolverBody* st, const std::uint32_t* list, std::size_t count);
-    /// Effect e has just acted on every awake body (0 .. count): what it changed since the last mark is its impulse.
+    /// Effect e has just acted on every awake body (0 .. count): what it changed since the last mark is its impulse
+    /// (kept for drag, whose work the ledger counts).
     void markEffect(LedgerEffect e, const SolverBody* st, std::size_t count);
     /// The listed bodies have moved: their velocities now are the ones the move used.
     void markMoved(const SolverBody* st, const std::uint32_t* list, std::size_t count);
@@ -61,7 +61,8 @@ public:
 
 private:
     std::vector<LedgerMotion> start_, cursor_, moved_;
-    std::array<std::vector<LedgerMotion>, 3> effect_;  // per LedgerEffect, per awake body: this substep's change
+    std::vector<LedgerMotion> drag_;  // per awake body: drag's change of its motion in this substep (the effects
+                                      // before it only move the cursor, their work is the residue's)
     // Per block lane, at the last close: the step's normal totals of its two points and its tangent total (the
     // substep's impulses are what they grew by).
     std::vector<double> totals_;

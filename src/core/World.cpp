@@ -348,8 +348,7 @@ Vec2 World::centerOfMass(BodyId id) const { return at(id).center; }
 Vec2 World::localCenterOfMass(BodyId id) const { return at(id).localCenter; }
 Vec2 World::velocity(BodyId id) const { return at(id).v; }
 double World::kineticEnergy(BodyId id) const {
-    const BodyData& b = at(id);
-    return 0.5 * b.mass * b.v.squaredNorm() + 0.5 * b.inertia * b.w * b.w;
+    return at(id).kineticEnergy();
 }
 Vec2 World::velocityAt(BodyId id, const Vec2& worldPoint) const {
     const BodyData& b = at(id);

@@ -8,6 +8,21 @@
 
 namespace physim {
 
+namespace {
+
+// What a contact's points passed to body B over the last step, N s (the normal points from A to B: A got the
+// opposite).
+Vec2 impulseOnB(const Manifold& m) {
+    Vec2 onB = Vec2::Zero();
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
+        onB += p.normalImpulse * m.normal + p.tangentImpulse * perp(m.normal);
+    }
+    return onB;
+}
+
+}  // namespace
+
 std::vector<BodyArrows> bodyArrows(const World& world, double dt) {
     requirePositive("arrows' step", dt);
     std::vector<BodyArrows> arrows;
@@ -27,12 +42,7 @@ std::vector<BodyArrows> bodyArrows(const World& world, double dt) {
     };
     const auto addAll = [&](const std::vector<Manifold>& contacts) {
         for (const Manifold& m : contacts) {
-            Vec2 onB = Vec2::Zero();  // the normal points from A to B: what B gets, A gets the opposite
-            for (int i = 0; i < m.pointCount; ++i) {
-                const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
-                onB += p.normalImpulse * m.normal + p.tangentImpulse * perp(m.normal);
-            }
-            onB /= dt;
+            const Vec2 onB = impulseOnB(m) / dt;
             add(m.bodyB, onB);
             add(m.bodyA, -onB);
         }
@@ -59,11 +69,7 @@ Vec2 contactForceOn(const World& world, BodyId body, double dt) {
     for (const std::vector<Manifold>& list : lists)
         for (const Manifold& m : list) {
             if (m.bodyA != body && m.bodyB != body) continue;
-            Vec2 onB = Vec2::Zero();
-            for (int i = 0; i < m.pointCount; ++i) {
-                const ContactPoint& p = m.points[static_cast<std::size_t>(i)];
-                onB += p.normalImpulse * m.normal + p.tangentImpulse * perp(m.normal);
-            }
+            const Vec2 onB = impulseOnB(m);
             force += (m.bodyB == body ? onB : -onB) / dt;
         }
     return force;
