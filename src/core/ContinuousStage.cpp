@@ -166,6 +166,11 @@ void ContinuousStage::run(WorldImpl& w) {
         return sweeps_[slot];
     };
     const auto& radius = batch_.shapes.boundingRadius;  // per shape slot (the shape table's order), about the origin
+    // A fast discrete body meets only still bodies (static, sleeping or resting kinematic ones): while no movable
+    // body is still, the static tree alone holds what it can meet (a cloud of fast debris skips the movable tree).
+    const bool movableStill = std::any_of(w.bodies.begin(), w.bodies.end(), [](const BodyData& o) {
+        return o.alive && o.type != BodyType::Static && !o.awake();
+    });
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
@@ -175,10 +180,12 @@ void ContinuousStage::run(WorldImpl& w) {
             if (shape.sensor) return;  // sensors stop nothing and are stopped by nothing
             const Geometry& myGeometry = shape.geometry;
             found_.clear();
-            w.broadPhase.query(sweptAabb(myGeometry, c.sweep), [&](std::uint32_t other) {
+            auto keep = [&](std::uint32_t other) {
                 if (w.shapes[other].body != slot && !w.shapes[other].sensor) found_.push_back(other);
                 return true;
-            });
+            };
+            if (c.continuous || movableStill) w.broadPhase.query(sweptAabb(myGeometry, c.sweep), keep);
+            else w.broadPhase.queryStatic(sweptAabb(myGeometry, c.sweep), keep);
             for (const std::uint32_t otherShape : found_) {
                 // Shapes that may not collide (Filter.hpp) pass through each other here too; a pair with a contact
                 // was allowed when it was made, one without is asked.
