@@ -60,6 +60,7 @@ public:
         tree_[1].query(box, forward);
     }
 
+    std::size_t staticProxyCount() const { return tree_[1].proxyCount(); }
     /// Shapes of static bodies whose boxes overlap `box` (the static tree alone, in query's order).
     template <class Callback>
     void queryStatic(const Aabb& box, Callback&& callback) const {

@@ -116,13 +116,27 @@ void ContinuousStage::run(WorldImpl& w) {
     impacts_ = 0;
     const double slop = w.settings.linearSlop;
     candidates_.clear();
+    // A fast discrete body meets only still bodies (static, sleeping or resting kinematic ones). While no movable
+    // body is still, the static tree alone holds what it can meet; with no static shape either, it meets nothing
+    // here (a cloud of debris in empty space). Asked once, at the first fast discrete body.
+    enum class Still { Unknown, None, StaticOnly, Any } still = Still::Unknown;
+    auto stillness = [&] {
+        if (still == Still::Unknown) {
+            const bool movable = std::any_of(w.bodies.begin(), w.bodies.end(), [](const BodyData& o) {
+                return o.alive && o.type != BodyType::Static && !o.awake();
+            });
+            still = movable ? Still::Any : w.broadPhase.staticProxyCount() > 0 ? Still::StaticOnly : Still::None;
+        }
+        return still;
+    };
     for (std::uint32_t i = 0; i < w.awake.size(); ++i) {
         const BodyData& b = w.bodies[w.awake[i]];
         if (b.type != BodyType::Dynamic || !b.collides || b.shapeHead == kNullIndex) continue;  // touches nothing
         const Sweep s = sweepOf(w, w.awake[i]);
         const bool continuous = b.detection != CollisionDetection::Discrete;
         const double travel = (s.p1 - s.p0).norm() + std::abs(s.a1 - s.a0) * b.extent;
-        if (continuous || travel > 0.5 * b.coreRadius) candidates_.push_back({i, s, continuous, 1.0});
+        if (continuous || (travel > 0.5 * b.coreRadius && stillness() != Still::None))
+            candidates_.push_back({i, s, continuous, 1.0});
     }
     if (candidates_.empty()) return;
 
@@ -166,11 +180,6 @@ void ContinuousStage::run(WorldImpl& w) {
         return sweeps_[slot];
     };
     const auto& radius = batch_.shapes.boundingRadius;  // per shape slot (the shape table's order), about the origin
-    // A fast discrete body meets only still bodies (static, sleeping or resting kinematic ones): while no movable
-    // body is still, the static tree alone holds what it can meet (a cloud of fast debris skips the movable tree).
-    const bool movableStill = std::any_of(w.bodies.begin(), w.bodies.end(), [](const BodyData& o) {
-        return o.alive && o.type != BodyType::Static && !o.awake();
-    });
     for (std::uint32_t k = 0; k < candidates_.size(); ++k) {
         Candidate& c = candidates_[k];
         const std::uint32_t slot = w.awake[c.awakeIndex];
@@ -184,7 +193,7 @@ void ContinuousStage::run(WorldImpl& w) {
                 if (w.shapes[other].body != slot && !w.shapes[other].sensor) found_.push_back(other);
                 return true;
             };
-            if (c.continuous || movableStill) w.broadPhase.query(sweptAabb(myGeometry, c.sweep), keep);
+            if (c.continuous || stillness() == Still::Any) w.broadPhase.query(sweptAabb(myGeometry, c.sweep), keep);
             else w.broadPhase.queryStatic(sweptAabb(myGeometry, c.sweep), keep);
             for (const std::uint32_t otherShape : found_) {
                 // Shapes that may not collide (Filter.hpp) pass through each other here too; a pair with a contact
