@@ -4,6 +4,7 @@
 #include "Contacts.hpp"
 #include "BodyLanes.hpp"
 #include "ContinuousKernel.hpp"
+#include "KernelBridge.hpp"
 #include "Manifolds.hpp"
 #include "Prefetch.hpp"
 #include "Slots.hpp"
@@ -35,6 +36,44 @@ bool shouldCollide(const BodyData& a, const BodyData& b) {
         return kernel::Motion{{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle};
     };
     return !kernel::boundsStayApart(path(A), A.extent, path(B), B.extent, gap);
+}
+
+// A shape in the kernel's terms about its body's centre of mass, about which the body turns: over a step at the
+// present velocities the centre moves on a straight line, as a kernel Motion's origin does.
+kernel::Shape aboutCenter(const Geometry& g, const Vec2& localCenter) {
+    kernel::Shape s = toKernel(g);
+    if (localCenter.isZero()) return s;
+    double reach = 0.0;
+    for (int i = 0; i < s.count; ++i) {
+        s.vertices[i] = s.vertices[i] - kernel::Vec{localCenter.x(), localCenter.y()};
+        reach = std::max(reach, std::sqrt(kernel::lengthSquared(s.vertices[i])));
+    }
+    s.boundingRadius = reach + s.radius;
+    return s;
+}
+
+// Whether speculative points of a turning pair with an exact continuous body are phantoms: the shapes, moved over
+// the step at the present velocities with their true turn, stay apart (conservative advancement proves the gap
+// stays above kToiTolerance / 2). A point's row predicts the approach along a normal fixed at the step's start with
+// its anchors' linear speed, so a corner sweeping past a ball on an arc is taken to go through it and throws it.
+// Should a velocity change in the step bring them together after all, the Continuous stage stops the continuous
+// body at the impact. Points at most kToiTolerance apart touch already and are kept; so are those of pairs that do
+// not turn their outlines (a spinning circle's outline turns onto itself), where the linear prediction stands.
+bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
+                        const BodyData& B, double dt) {
+    if (A.detection != CollisionDetection::ContinuousExact && B.detection != CollisionDetection::ContinuousExact)
+        return false;
+    if (A.w == 0.0 && B.w == 0.0) return false;
+    for (int p = 0; p < m.pointCount; ++p)
+        if (!(m.points[p].separation > kToiTolerance)) return false;
+    const kernel::Shape a = aboutCenter(shapeA, A.localCenter), b = aboutCenter(shapeB, B.localCenter);
+    if (A.w * kernel::turningReach(a) == 0.0 && B.w * kernel::turningReach(b) == 0.0) return false;
+    auto motion = [dt](const BodyData& body) {
+        const Vec2 end = body.center + body.v * dt;
+        return kernel::Motion{{body.center.x(), body.center.y()}, {end.x(), end.y()}, body.angle,
+                              body.angle + body.w * dt};
+    };
+    return kernel::timeOfImpact(a, motion(A), b, motion(B), kToiTolerance, 100).state == kernel::kSeparated;
 }
 
 [[gnu::always_inline]] inline bool moving(const BodyData& b) {
@@ -251,7 +290,13 @@ template <bool V>
         const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
         reuse = motion <= tolerance && margin + motion <= k.margin;
     }
-    return placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+    const bool touching = placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+    if (c.manifold.pointCount > 0 &&
+        turnsPastItsPoints(c.manifold, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, dt)) {
+        c.manifold.pointCount = 0;
+        return false;
+    }
+    return touching;
 }
 
 // Records what the refresh of contact i changed: its flag, and whether it gained its first point or lost its last.
