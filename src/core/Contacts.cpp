@@ -61,8 +61,11 @@ kernel::Shape aboutCenter(const Geometry& g, const Vec2& localCenter) {
 // not turn their outlines (a spinning circle's outline turns onto itself), where the linear prediction stands.
 bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
                         const BodyData& B, double dt) {
-    if (A.detection != CollisionDetection::ContinuousExact && B.detection != CollisionDetection::ContinuousExact)
-        return false;
+    // The Continuous stage sweeps dynamic bodies only.
+    auto exact = [](const BodyData& b) {
+        return b.detection == CollisionDetection::ContinuousExact && b.type == BodyType::Dynamic;
+    };
+    if (!exact(A) && !exact(B)) return false;
     if (A.w == 0.0 && B.w == 0.0) return false;
     for (int p = 0; p < m.pointCount; ++p)
         if (!(m.points[p].separation > kToiTolerance)) return false;
