@@ -52,13 +52,20 @@ kernel::Shape aboutCenter(const Geometry& g, const Vec2& localCenter) {
     return s;
 }
 
-// Whether speculative points of a turning pair with an exact continuous body are phantoms: the shapes, moved over
-// the step at the present velocities with their true turn, stay apart (conservative advancement proves the gap
-// stays above kToiTolerance / 2). A point's row predicts the approach along a normal fixed at the step's start with
-// its anchors' linear speed, so a corner sweeping past a ball on an arc is taken to go through it and throws it.
-// Should a velocity change in the step bring them together after all, the Continuous stage stops the continuous
-// body at the impact. Points at most kToiTolerance apart touch already and are kept; so are those of pairs that do
-// not turn their outlines (a spinning circle's outline turns onto itself), where the linear prediction stands.
+// A body's centre of mass over the step at its present velocities: a straight line, and the body's turn about it.
+kernel::Motion stepAhead(const BodyData& b, double dt) {
+    const Vec2 end = b.center + b.v * dt;
+    return {{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle + b.w * dt};
+}
+
+// Whether the speculative points of a turning pair with an exact continuous body are phantoms: the shapes, moved
+// over the step at the present velocities with their true turn, stay apart (the bodies' extents, or conservative
+// advancement, prove the gap stays above kToiTolerance / 2). A point's row predicts the approach along a normal
+// fixed at the step's start with its anchors' linear speed, so a corner sweeping past a ball on an arc is taken to
+// go through it and throws it. Should a velocity change in the step bring them together after all, the Continuous
+// stage stops the continuous body at the impact. Kept as they are: points at most kToiTolerance apart (touching),
+// points the centres' approach alone closes within the step (the linear prediction is a translation's, and right),
+// and pairs that do not turn their outlines (a spinning circle's outline turns onto itself).
 bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
                         const BodyData& B, double dt) {
     // The Continuous stage sweeps dynamic bodies only.
@@ -67,16 +74,14 @@ bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyDat
     };
     if (!exact(A) && !exact(B)) return false;
     if (A.w == 0.0 && B.w == 0.0) return false;
+    const double approach = -m.normal.dot(B.v - A.v) * dt;  // m the centres close along the normal in the step
     for (int p = 0; p < m.pointCount; ++p)
-        if (!(m.points[p].separation > kToiTolerance)) return false;
+        if (!(m.points[p].separation > std::max(kToiTolerance, approach))) return false;
+    const kernel::Motion ma = stepAhead(A, dt), mb = stepAhead(B, dt);
+    if (kernel::boundsStayApart(ma, A.extent, mb, B.extent, kToiTolerance)) return true;
     const kernel::Shape a = aboutCenter(shapeA, A.localCenter), b = aboutCenter(shapeB, B.localCenter);
     if (A.w * kernel::turningReach(a) == 0.0 && B.w * kernel::turningReach(b) == 0.0) return false;
-    auto motion = [dt](const BodyData& body) {
-        const Vec2 end = body.center + body.v * dt;
-        return kernel::Motion{{body.center.x(), body.center.y()}, {end.x(), end.y()}, body.angle,
-                              body.angle + body.w * dt};
-    };
-    return kernel::timeOfImpact(a, motion(A), b, motion(B), kToiTolerance, 100).state == kernel::kSeparated;
+    return kernel::timeOfImpact(a, ma, b, mb, kToiTolerance, 100).state == kernel::kSeparated;
 }
 
 [[gnu::always_inline]] inline bool moving(const BodyData& b) {
