@@ -52,6 +52,15 @@ kernel::Shape aboutCenter(const Geometry& g, const Vec2& localCenter) {
     return s;
 }
 
+// Whether a pair may be asked turnsPastItsPoints: an exact continuous body (the Continuous stage sweeps dynamic
+// bodies only) and something turning.
+[[gnu::always_inline]] inline bool exactAndTurning(const BodyData& A, const BodyData& B) {
+    auto exact = [](const BodyData& b) {
+        return b.detection == CollisionDetection::ContinuousExact && b.type == BodyType::Dynamic;
+    };
+    return (exact(A) || exact(B)) && (A.w != 0.0 || B.w != 0.0);
+}
+
 // A body's centre of mass over the step at its present velocities: a straight line, and the body's turn about it.
 kernel::Motion stepAhead(const BodyData& b, double dt) {
     const Vec2 end = b.center + b.v * dt;
@@ -66,14 +75,9 @@ kernel::Motion stepAhead(const BodyData& b, double dt) {
 // stage stops the continuous body at the impact. Kept as they are: points at most kToiTolerance apart (touching),
 // points the centres' approach alone closes within the step (the linear prediction is a translation's, and right),
 // and pairs that do not turn their outlines (a spinning circle's outline turns onto itself).
-bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
-                        const BodyData& B, double dt) {
-    // The Continuous stage sweeps dynamic bodies only.
-    auto exact = [](const BodyData& b) {
-        return b.detection == CollisionDetection::ContinuousExact && b.type == BodyType::Dynamic;
-    };
-    if (!exact(A) && !exact(B)) return false;
-    if (A.w == 0.0 && B.w == 0.0) return false;
+// Out of line: the narrow phase asks it only of the pairs exactAndTurning lets through.
+[[gnu::noinline]] bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A,
+                                          const Geometry& shapeB, const BodyData& B, double dt) {
     const double approach = -m.normal.dot(B.v - A.v) * dt;  // m the centres close along the normal in the step
     for (int p = 0; p < m.pointCount; ++p)
         if (!(m.points[p].separation > std::max(kToiTolerance, approach))) return false;
@@ -299,7 +303,7 @@ template <bool V>
         reuse = motion <= tolerance && margin + motion <= k.margin;
     }
     const bool touching = placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
-    if (c.manifold.pointCount > 0 &&
+    if (c.manifold.pointCount > 0 && exactAndTurning(A, B) &&
         turnsPastItsPoints(c.manifold, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, dt)) {
         c.manifold.pointCount = 0;
         return false;
