@@ -4,6 +4,7 @@
 #include "Contacts.hpp"
 #include "BodyLanes.hpp"
 #include "ContinuousKernel.hpp"
+#include "KernelBridge.hpp"
 #include "Manifolds.hpp"
 #include "Prefetch.hpp"
 #include "Slots.hpp"
@@ -35,6 +36,56 @@ bool shouldCollide(const BodyData& a, const BodyData& b) {
         return kernel::Motion{{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle};
     };
     return !kernel::boundsStayApart(path(A), A.extent, path(B), B.extent, gap);
+}
+
+// A shape in the kernel's terms about its body's centre of mass, about which the body turns: over a step at the
+// present velocities the centre moves on a straight line, as a kernel Motion's origin does.
+kernel::Shape aboutCenter(const Geometry& g, const Vec2& localCenter) {
+    kernel::Shape s = toKernel(g);
+    if (localCenter.isZero()) return s;
+    double reach = 0.0;
+    for (int i = 0; i < s.count; ++i) {
+        s.vertices[i] = s.vertices[i] - kernel::Vec{localCenter.x(), localCenter.y()};
+        reach = std::max(reach, std::sqrt(kernel::lengthSquared(s.vertices[i])));
+    }
+    s.boundingRadius = reach + s.radius;
+    return s;
+}
+
+// Whether a pair may be asked turnsPastItsPoints: an exact continuous body (the Continuous stage sweeps dynamic
+// bodies only) and something turning.
+[[gnu::always_inline]] inline bool exactAndTurning(const BodyData& A, const BodyData& B) {
+    auto exact = [](const BodyData& b) {
+        return b.detection == CollisionDetection::ContinuousExact && b.type == BodyType::Dynamic;
+    };
+    return (exact(A) || exact(B)) && (A.w != 0.0 || B.w != 0.0);
+}
+
+// A body's centre of mass over the step at its present velocities: a straight line, and the body's turn about it.
+kernel::Motion stepAhead(const BodyData& b, double dt) {
+    const Vec2 end = b.center + b.v * dt;
+    return {{b.center.x(), b.center.y()}, {end.x(), end.y()}, b.angle, b.angle + b.w * dt};
+}
+
+// Whether the speculative points of a turning pair with an exact continuous body are phantoms: the shapes, moved
+// over the step at the present velocities with their true turn, stay apart (the bodies' extents, or conservative
+// advancement, prove the gap stays above kToiTolerance / 2). A point's row predicts the approach along a normal
+// fixed at the step's start with its anchors' linear speed, so a corner sweeping past a ball on an arc is taken to
+// go through it and throws it. Should a velocity change in the step bring them together after all, the Continuous
+// stage stops the continuous body at the impact. Kept as they are: points at most kToiTolerance apart (touching),
+// points the centres' approach alone closes within the step (the linear prediction is a translation's, and right),
+// and pairs that do not turn their outlines (a spinning circle's outline turns onto itself).
+// Out of line: the narrow phase asks it only of the pairs exactAndTurning lets through.
+[[gnu::noinline]] bool turnsPastItsPoints(const Manifold& m, const Geometry& shapeA, const BodyData& A,
+                                          const Geometry& shapeB, const BodyData& B, double dt) {
+    const double approach = -m.normal.dot(B.v - A.v) * dt;  // m the centres close along the normal in the step
+    for (int p = 0; p < m.pointCount; ++p)
+        if (!(m.points[p].separation > std::max(kToiTolerance, approach))) return false;
+    const kernel::Motion ma = stepAhead(A, dt), mb = stepAhead(B, dt);
+    if (kernel::boundsStayApart(ma, A.extent, mb, B.extent, kToiTolerance)) return true;
+    const kernel::Shape a = aboutCenter(shapeA, A.localCenter), b = aboutCenter(shapeB, B.localCenter);
+    if (A.w * kernel::turningReach(a) == 0.0 && B.w * kernel::turningReach(b) == 0.0) return false;
+    return kernel::timeOfImpact(a, ma, b, mb, kToiTolerance, 100).state == kernel::kSeparated;
 }
 
 [[gnu::always_inline]] inline bool moving(const BodyData& b) {
@@ -251,7 +302,13 @@ template <bool V>
         const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
         reuse = motion <= tolerance && margin + motion <= k.margin;
     }
-    return placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+    const bool touching = placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
+    if (c.manifold.pointCount > 0 && exactAndTurning(A, B) &&
+        turnsPastItsPoints(c.manifold, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, dt)) {
+        c.manifold.pointCount = 0;
+        return false;
+    }
+    return touching;
 }
 
 // Records what the refresh of contact i changed: its flag, and whether it gained its first point or lost its last.
