@@ -29,6 +29,10 @@ public:
         slots_[i] = k;
         ++count_;
     }
+    std::size_t size() const { return count_; }
+    /// Slots in the table (entries, tombstones and empty ones): at most 4 (size() + 1) after a rebuild, and the
+    /// table is rebuilt once entries and tombstones fill half of it.
+    std::size_t tableSize() const { return slots_.size(); }
     void erase(std::uint64_t k) {
         for (std::size_t i = slot(k);; i = (i + 1) & mask_) {
             if (slots_[i] == kEmpty) return;
