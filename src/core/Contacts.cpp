@@ -273,15 +273,6 @@ constexpr std::size_t kAhead = 4;
         const ContactData& ahead = p.contacts[p.awakeContacts[i + kAhead]];
         prefetchLines(&p.bodies[ahead.a()], sizeof(BodyData));
         prefetchLines(&p.bodies[ahead.b()], sizeof(BodyData));
-        if (!p.overlapsKnown) {
-            __builtin_prefetch(&p.broadPhase->fatBox(ahead.proxyA));
-            __builtin_prefetch(&p.broadPhase->fatBox(ahead.proxyB));
-        }
-        // A shape's record starts with what the pair reads first; its geometry's kind lies at the geometry's end.
-        for (const std::uint32_t shape : {ahead.shapeA(), ahead.shapeB()}) {
-            __builtin_prefetch(&p.shapes[shape]);
-            __builtin_prefetch(reinterpret_cast<const char*>(&p.shapes[shape].geometry + 1) - 1);
-        }
     }
 }
 
@@ -568,7 +559,7 @@ void WorldImpl::updateContacts() {
     const bool overlapsKnown = !awakeContactsChanged && broadPhase.boxRevision() == checkedBoxRevision;
     awakeContactsChanged = false;
     checkedBoxRevision = broadPhase.boxRevision();
-    constexpr std::size_t kPrefetchFromContacts = 256;
+    constexpr std::size_t kPrefetchFromContacts = 8192;
     const RefreshPass pass{contacts.data(), awakeContacts.data(), bodies.data(), shapes.data(), &broadPhase,
                            contactFlags.data(),
                            speculative, reuseTolerance, dt, overlapsKnown, n >= kPrefetchFromContacts,
