@@ -71,6 +71,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         constexpr std::uint32_t kAllColours = (std::uint32_t{1} << kColours) - 1;
         constraintColour.assign(w.awakeContacts.size(), -1);
         rowRefs.resize(w.awakeContacts.size());
+        rowList.clear();
         const bool hooked = static_cast<bool>(w.preSolve);  // contacts may be disabled (WorldImpl::runPreSolve)
         for (std::size_t k = 0; k < w.awakeContacts.size(); ++k) {
             // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead.
@@ -101,6 +102,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             }
             constraintColour[k] = colour;
             rowRefs[k] = {w.awakeContacts[k], A.awakeIndex, B.awakeIndex};
+            rowList.push_back(static_cast<std::uint32_t>(k));
             if (A.detection == CollisionDetection::ContinuousExact) keepRowsWarmStart(A.awakeIndex);
             if (B.detection == CollisionDetection::ContinuousExact) keepRowsWarmStart(B.awakeIndex);
             if (byIsland) joinBodies(A.awakeIndex, B.awakeIndex);
@@ -162,23 +164,22 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             return std::min<std::size_t>(std::min(a, b), n);
         };
         rowOrder.assign(n + 1, 0);  // a counting sort by first body: where each body's rows start
-        for (std::size_t k = 0; k < w.awakeContacts.size(); ++k)
+        for (const std::uint32_t k : rowList)
             if (coloured(k)) ++rowOrder[firstBody(k)];
         std::uint32_t sum = 0;
         for (std::uint32_t& count : rowOrder) sum += std::exchange(count, sum);
         sortedRows.resize(sum);
-        for (std::size_t k = 0; k < w.awakeContacts.size(); ++k)
-            if (coloured(k)) sortedRows[rowOrder[firstBody(k)]++] = static_cast<std::uint32_t>(k);
+        for (const std::uint32_t k : rowList)
+            if (coloured(k)) sortedRows[rowOrder[firstBody(k)]++] = k;
         segmentStart.assign(groups * kSegments + 1, 0);
-        for (std::size_t k = 0; k < w.awakeContacts.size(); ++k)
-            if (constraintColour[k] >= 0) ++segmentStart[segmentOf(k) + 1];
+        for (const std::uint32_t k : rowList) ++segmentStart[segmentOf(k) + 1];
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s) segmentStart[s + 1] += segmentStart[s];
         rowContacts.resize(rowCount);
         segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
         for (const std::uint32_t k : sortedRows) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s)
             if (s % kSegments < kColours) putOnePointRowsFirst(w, segmentStart[s], segmentStart[s + 1]);
-        for (std::size_t k = 0; k < w.awakeContacts.size(); ++k)
+        for (const std::uint32_t k : rowList)
             if (constraintColour[k] == kColours) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).
         blockStart.assign(groups * kSegments + 1, 0);

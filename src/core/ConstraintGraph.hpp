@@ -69,6 +69,7 @@ struct ConstraintGraph {
     std::vector<std::uint32_t> bodyColours;      // per awake body, a bit per colour its rows already have
     std::vector<std::int32_t> constraintColour;  // per awake contact with points; -1: none
     std::vector<RowRef> rowRefs;                 // per awake contact with points: its row's contact and bodies
+    std::vector<std::uint32_t> rowList;          // the awake contacts with rows (as rowRefs' indices), in order
     std::vector<std::uint32_t> rowOrder;         // layOut's counting sort: per awake body, where its rows go
     std::vector<std::uint32_t> sortedRows;       // the coloured rows (as rowRefs' indices) by first body
     std::vector<JointConstraint> jointConstraints;  // group by group

@@ -101,10 +101,13 @@ inline bool jointColoured(const JointData& joint) {
                       joint.params);
 }
 
-/// Whether the joint's row is a pin solved in lanes (PinLanes.hpp).
-inline bool jointInLanes(const JointData& joint) {
-    const RevoluteJoint* pin = std::get_if<RevoluteJoint>(&joint.params);
-    return pin != nullptr && pin->pointOnly();
+/// Whether the joint's row is solved in lanes: a pin (PinLanes.hpp) or a wheel (WheelLanes.hpp).
+inline RowLanes jointLanes(const JointData& joint) {
+    if (const RevoluteJoint* pin = std::get_if<RevoluteJoint>(&joint.params); pin && pin->pointOnly())
+        return RowLanes::Pin;
+    if (const WheelJoint* wheel = std::get_if<WheelJoint>(&joint.params); wheel && wheel->solvesInLanes())
+        return RowLanes::Wheel;
+    return RowLanes::None;
 }
 
 inline void prepareJoint(JointConstraint& row, const JointData& joint, const std::vector<BodyData>& bodies,
@@ -130,7 +133,7 @@ inline void prepareJoint(JointConstraint& row, const JointData& joint, const std
         row.deltaCenter = B.center - A.center;
     }
     detail::visitRow(joint.params, [&](const auto& kind) { kind.prepare(row, A, B, h, rodSoftness); });
-    row.inLanes = jointInLanes(joint);
+    row.lanes = jointLanes(joint);
 }
 
 inline void warmStartJoint(const JointConstraint& row, const JointData& joint, SolverBody* states) {

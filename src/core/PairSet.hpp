@@ -1,7 +1,9 @@
 #pragma once
 // A set of body pairs for "does this pair have a contact already": open addressing with linear probing over a
-// power-of-two table, tombstones on erase, grown at half load. No allocation while the number of contacts stays
-// within what it has held. Internal.
+// power-of-two table, tombstones on erase. Once entries and tombstones fill half the table it is rebuilt at four
+// times the entries: contacts made and destroyed every step (wheels rolling over a chain) leave tombstones, which
+// must not grow the table (a sparse table misses the cache on every look-up). No allocation while the number of
+// contacts stays within what it has held. Internal.
 
 #include <cstdint>
 #include <vector>
@@ -20,13 +22,17 @@ public:
         }
     }
     void insert(std::uint64_t k) {
-        if (2 * (count_ + tombstones_ + 1) > slots_.size()) rehash(slots_.empty() ? 64 : 2 * slots_.size());
+        if (2 * (count_ + tombstones_ + 1) > slots_.size()) rehash(sizeFor(count_ + 1));
         std::size_t i = slot(k);
         while (slots_[i] != kEmpty && slots_[i] != kTombstone) i = (i + 1) & mask_;
         if (slots_[i] == kTombstone) --tombstones_;
         slots_[i] = k;
         ++count_;
     }
+    std::size_t size() const { return count_; }
+    /// Slots in the table (entries, tombstones and empty ones): at most 4 (size() + 1) after a rebuild, and the
+    /// table is rebuilt once entries and tombstones fill half of it.
+    std::size_t tableSize() const { return slots_.size(); }
     void erase(std::uint64_t k) {
         for (std::size_t i = slot(k);; i = (i + 1) & mask_) {
             if (slots_[i] == kEmpty) return;
@@ -50,13 +56,18 @@ private:
         k ^= k >> 33;
         return static_cast<std::size_t>(k) & mask_;
     }
+    // The table for `entries`: a quarter full at most, so as many erases again fit before the next rebuild.
+    static std::size_t sizeFor(std::size_t entries) {
+        std::size_t size = 64;
+        while (size < 4 * entries) size *= 2;
+        return size;
+    }
     void rehash(std::size_t size) {
-        std::vector<std::uint64_t> old;
-        old.swap(slots_);
+        spare_.swap(slots_);  // the old entries; the last rebuild's buffer (if large enough) becomes the table
         slots_.assign(size, kEmpty);
         mask_ = size - 1;
         count_ = tombstones_ = 0;
-        for (const std::uint64_t k : old)
+        for (const std::uint64_t k : spare_)
             if (k != kEmpty && k != kTombstone) insert(k);
     }
 
@@ -64,6 +75,7 @@ private:
     std::size_t mask_ = 0;
     std::size_t count_ = 0;
     std::size_t tombstones_ = 0;
+    std::vector<std::uint64_t> spare_;  // rehash's other buffer (no state: its contents are the last table's)
 };
 
 }  // namespace physim

@@ -169,11 +169,13 @@ void Solver::solve(WorldImpl& w) {
     graph_.laidOutByIsland = byIsland;
     w.profile.rowsLaidOut = !keep && (rowCount > 0 || !graph_.jointConstraints.empty());
     const std::size_t groups = graph_.groupBodyStart.size() - 1;
+    // The ledger reads the wheels' motor impulses after each substep, in their joints: it keeps them out of lanes.
+    const bool wheelsInLanes = !w.ledger.enabled;
     if (graph_.jointConstraints.empty()) {
-        sortJointRows();  // no rows: nothing to time (a step without rows runs no Solve stage)
+        sortJointRows(wheelsInLanes);  // no rows: nothing to time (a step without rows runs no Solve stage)
     } else {
         StageTimer timer(w.profile, Stage::Solve);
-        sortJointRows();
+        sortJointRows(wheelsInLanes);
     }
 
     contactPassSettings_.h = h;
@@ -228,25 +230,32 @@ void Solver::solve(WorldImpl& w) {
     }
 }
 
-void Solver::sortJointRows() {
+void Solver::sortJointRows(bool wheelsInLanes) {
     const std::vector<std::uint32_t>& segments = graph_.jointSegmentStart;
     pinBlockStart_.assign(segments.size(), 0);
+    wheelBlockStart_.assign(segments.size(), 0);
     otherJointStart_.assign(segments.size(), 0);
     pinRows_.clear();
+    wheelRows_.clear();
     otherJointRows_.clear();
     for (std::size_t s = 0; s + 1 < segments.size(); ++s) {
         if (s % kSegments < kColours) {
             for (std::uint32_t r = segments[s]; r < segments[s + 1]; ++r) {
                 const JointConstraint& row = graph_.jointConstraints[r];
-                if (row.inLanes) pinRows_.push_back(&row);
+                if (row.lanes == RowLanes::Pin) pinRows_.push_back(&row);
+                else if (row.lanes == RowLanes::Wheel && wheelsInLanes) wheelRows_.push_back(&row);
                 else otherJointRows_.push_back(r);
             }
-            while (pinRows_.size() % kLanes != 0) pinRows_.push_back(nullptr);  // the colour's last block's free lanes
+            // The colour's last blocks' free lanes.
+            while (pinRows_.size() % kLanes != 0) pinRows_.push_back(nullptr);
+            while (wheelRows_.size() % kLanes != 0) wheelRows_.push_back(nullptr);
         }
         pinBlockStart_[s + 1] = static_cast<std::uint32_t>(pinRows_.size() / kLanes);
+        wheelBlockStart_[s + 1] = static_cast<std::uint32_t>(wheelRows_.size() / kLanes);
         otherJointStart_[s + 1] = static_cast<std::uint32_t>(otherJointRows_.size());
     }
     pinBlocks_.resize(pinRows_.size() / kLanes);  // each group packs its own (solveGroup)
+    wheelBlocks_.resize(wheelRows_.size() / kLanes);
 }
 
 void Solver::startBody(WorldImpl& w, std::size_t i) {
@@ -350,15 +359,20 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         return share == 0 ? (head ? std::make_pair(cut, mid) : std::make_pair(first, cut))
                           : (head ? std::make_pair(mid, cut) : std::make_pair(cut, end));
     };
-    // Joint rows: colour by colour, each colour's pin blocks (pinsWork(begin, end)) and other rows in parallel,
-    // then the joints' overflow row after row, then the chains (chainsWork(), which solve passes give).
-    auto jointPass = [&](auto&& pinsWork, auto&& jointWork, auto&& chainsWork) {
+    // Joint rows: colour by colour, each colour's pin blocks (pinsWork(begin, end)), wheel blocks (wheelsWork) and
+    // other rows in parallel, then the joints' overflow row after row, then the chains (chainsWork(), which solve
+    // passes give).
+    auto jointPass = [&](auto&& pinsWork, auto&& wheelsWork, auto&& jointWork, auto&& chainsWork) {
         for (std::size_t col = 0; col < kColours; ++col) {
             const std::size_t s = g * kSegments + col;
-            const std::size_t firstBlock = pinBlockStart_[s], blocks = pinBlockStart_[s + 1] - firstBlock;
+            const std::size_t firstPin = pinBlockStart_[s], pins = pinBlockStart_[s + 1] - firstPin;
+            const std::size_t firstWheel = wheelBlockStart_[s], wheels = wheelBlockStart_[s + 1] - firstWheel;
             const std::size_t firstOther = otherJointStart_[s], others = otherJointStart_[s + 1] - firstOther;
+            const std::size_t blocks = pins + wheels;
             w.executor.parallelFor(blocks + others, kJointGrain, [&](std::size_t begin, std::size_t end, int) {
-                if (begin < blocks) pinsWork(firstBlock + begin, firstBlock + std::min(end, blocks));
+                if (begin < pins) pinsWork(firstPin + begin, firstPin + std::min(end, pins));
+                if (begin < blocks && end > pins)
+                    wheelsWork(firstWheel + std::max(begin, pins) - pins, firstWheel + std::min(end, blocks) - pins);
                 for (std::size_t k = std::max(begin, blocks); k < end; ++k) {
                     JointConstraint& row = graph_.jointConstraints[otherJointRows_[firstOther + k - blocks]];
                     jointWork(row, w.joints[row.joint]);
@@ -370,8 +384,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             jointWork(graph_.jointConstraints[j], w.joints[graph_.jointConstraints[j].joint]);
         chainsWork();
     };
-    auto pass = [&](auto&& rowsWork, auto&& pinsWork, auto&& jointWork, auto&& chainsWork) {
-        jointPass(pinsWork, jointWork, chainsWork);
+    auto pass = [&](auto&& rowsWork, auto&& pinsWork, auto&& wheelsWork, auto&& jointWork, auto&& chainsWork) {
+        jointPass(pinsWork, wheelsWork, jointWork, chainsWork);
         if (ordered) {
             w.executor.forLoopsInOrder(colourCount, [&](std::size_t loop, int share, bool head) {
                 const auto [begin, end] = halfOf(loop, share, head);
@@ -410,10 +424,11 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
             }
     };
     const bool storeInRelax = w.settings.relaxIterations > 0;
-    // Block k's pins: kLanes, but for a colour's last block, whose free lanes hold no row.
-    auto pinBlockCount = [&](std::size_t k) {
+    // Block k's rows in `rows` (pinRows_, wheelRows_): kLanes, but for a colour's last block, whose free lanes hold
+    // no row.
+    auto laneRows = [&](const std::vector<const JointConstraint*>& rows, std::size_t k) {
         std::uint32_t count = 0;
-        while (count < kLanes && pinRows_[k * kLanes + count] != nullptr) ++count;
+        while (count < kLanes && rows[k * kLanes + count] != nullptr) ++count;
         return count;
     };
     ContactPass contactPass = contactPassSettings_;
@@ -443,6 +458,10 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
              [&](std::size_t b, std::size_t e) {
                  solvePins(pinBlocks_.data() + b, pinBlocks_.data() + e, st, useBias);
                  if (store) storePins(pinBlocks_.data() + b, pinBlocks_.data() + e, w.joints);
+             },
+             [&](std::size_t b, std::size_t e) {
+                 solveWheels(wheelBlocks_.data() + b, wheelBlocks_.data() + e, st, useBias);
+                 if (store) storeWheels(wheelBlocks_.data() + b, wheelBlocks_.data() + e, w.joints);
              },
              [&](const JointConstraint& row, JointData& joint) {
                  if (!row.chained) solveJoint(row, joint, st, useBias);
@@ -544,8 +563,15 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                      if (sub == 0)
                                          for (std::size_t k = b; k < e; ++k)
                                              packPins(pinBlocks_[k], pinRows_.data() + k * kLanes,
-                                                      pinBlockCount(k), w.joints);
+                                                      laneRows(pinRows_, k), w.joints);
                                      warmStartPins(pinBlocks_.data() + b, pinBlocks_.data() + e, st);
+                                 },
+                                 [&](std::size_t b, std::size_t e) {
+                                     if (sub == 0)
+                                         for (std::size_t k = b; k < e; ++k)
+                                             packWheels(wheelBlocks_[k], wheelRows_.data() + k * kLanes,
+                                                        laneRows(wheelRows_, k), w.joints);
+                                     warmStartWheels(wheelBlocks_.data() + b, wheelBlocks_.data() + e, st);
                                  },
                                  [&](const JointConstraint& row, JointData& joint) { warmStartJoint(row, joint, st); },
                                  [] {});
@@ -599,6 +625,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     if (!storeInRelax) {
         const std::size_t first = pinBlockStart_[g * kSegments], end = pinBlockStart_[(g + 1) * kSegments];
         storePins(pinBlocks_.data() + first, pinBlocks_.data() + end, w.joints);
+        const std::size_t firstWheel = wheelBlockStart_[g * kSegments], endWheel = wheelBlockStart_[(g + 1) * kSegments];
+        storeWheels(wheelBlocks_.data() + firstWheel, wheelBlocks_.data() + endWheel, w.joints);
     }
     {
         auto timer = stage(Stage::Integrate);

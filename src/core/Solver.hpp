@@ -11,6 +11,7 @@
 #include "EnergyTally.hpp"
 #include "SolverData.hpp"
 #include "joints/PinLanes.hpp"
+#include "joints/WheelLanes.hpp"
 
 #include "physim/core/Aabb.hpp"
 
@@ -52,7 +53,7 @@ private:
     std::size_t solveGroup(WorldImpl& w, std::size_t g, bool timed, int worker);
 
     /// This step's split of each joint colour into pins solved in lanes and the other rows (Solver.cpp).
-    void sortJointRows();
+    void sortJointRows(bool wheelsInLanes);
 
     ConstraintGraph graph_;
     EnergyTally tally_;
@@ -71,12 +72,16 @@ private:
     std::vector<std::int8_t> rowImpact_;         // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed_;         // per block lane with an impact: how fast it met, m/s
     ContactPass contactPassSettings_;            // this step's pass constants
-    // Each joint colour's rows this step (sortJointRows): its pins, kLanes to a block, and its other rows. Segment s
-    // (as ConstraintGraph numbers them) has blocks [pinBlockStart_[s], pinBlockStart_[s + 1]) and other rows
-    // otherJointRows_[otherJointStart_[s] ...] (indices into graph_.jointConstraints); the overflow has none here.
+    // Each joint colour's rows this step (sortJointRows): its pins and its wheels, kLanes to a block, and its other
+    // rows. Segment s (as ConstraintGraph numbers them) has pin blocks [pinBlockStart_[s], pinBlockStart_[s + 1]),
+    // wheel blocks likewise, and other rows otherJointRows_[otherJointStart_[s] ...] (indices into
+    // graph_.jointConstraints); the overflow has none here.
     std::vector<PinBlock> pinBlocks_;
     std::vector<const JointConstraint*> pinRows_;  // block b's rows: pinRows_[kLanes b ...], pinBlocks_[b].count
     std::vector<std::uint32_t> pinBlockStart_;
+    std::vector<WheelBlock> wheelBlocks_;
+    std::vector<const JointConstraint*> wheelRows_;  // as pinRows_
+    std::vector<std::uint32_t> wheelBlockStart_;
     std::vector<std::uint32_t> otherJointRows_;
     std::vector<std::uint32_t> otherJointStart_;
     std::vector<ChainScratch> chainScratch_;  // per worker: solveChain's scratch

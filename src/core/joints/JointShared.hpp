@@ -20,12 +20,16 @@ struct JointEnds {
     bool toWorld = false;
 };
 
+/// How a joint's row is solved this step: alone (its kind's warmStart and solve), or with others of its colour in
+/// lanes, as a pin (PinLanes.hpp) or a wheel (WheelLanes.hpp).
+enum class RowLanes : std::uint8_t { None, Pin, Wheel };
+
 /// A joint's row for one step: where its ends are and how they move, the same fields for every kind (a kind uses
 /// those it needs). The solver keeps these rows group by group, each naming its joint.
 struct JointConstraint {
     std::uint32_t joint = 0;
     std::int32_t indexA = kNullIndex, indexB = kNullIndex;  // awake body indices; kNullIndex: fixed
-    bool inLanes = false;  // a pin solved in lanes this step (Joints.hpp's jointInLanes, PinLanes.hpp)
+    RowLanes lanes = RowLanes::None;  // Joints.hpp's jointLanes
     bool chained = false;  // a pin of a chain solved as one block (PinChains.hpp); kept with the layout
     Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero();    // lever arms from the centres of mass at the start, m
     Vec2 deltaCenter = Vec2::Zero();  // centre of B minus centre of A at the start (a world end: minus its point)

@@ -66,7 +66,7 @@ void PinChains::find(std::vector<JointConstraint>& jointRows, std::size_t bodies
     // Pins, then those of a body pinned three times or more are left to the colours (a tree's fork).
     for (std::uint32_t k = 0; k < n; ++k) {
         const JointConstraint& r = jointRows[k];
-        if (!r.inLanes || !(rowMoves(r.indexA, r.invMassA) || rowMoves(r.indexB, r.invMassB))) continue;
+        if (r.lanes != RowLanes::Pin || !(rowMoves(r.indexA, r.invMassA) || rowMoves(r.indexB, r.invMassB))) continue;
         state_[k] = 1;
         count(k, false);
     }

@@ -22,7 +22,7 @@ struct PinChains {
     std::vector<std::uint32_t> chainStart{0};
     std::vector<std::uint32_t> groupChainStart;  // group g's chains: [groupChainStart[g], groupChainStart[g + 1])
 
-    /// Finds the chains among `jointRows` (laid-out order): runs of at least two pins (rows with inLanes) in which
+    /// Finds the chains among `jointRows` (laid-out order): runs of at least two pins (rows in RowLanes::Pin) in which
     /// each moving body has at most two of the pins and whose moving bodies' masses differ by massRatio or more.
     /// Marks their rows chained (they are then solved here, not coloured). `bodies`: awake bodies.
     void find(std::vector<JointConstraint>& jointRows, std::size_t bodies, double massRatio);

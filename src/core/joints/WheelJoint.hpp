@@ -35,6 +35,9 @@ struct WheelJoint {
                  const Softness& rodSoftness) const;
     void warmStart(const JointConstraint& row, MotionSide& A, MotionSide& B) const;
     void solve(const JointConstraint& row, MotionSide& A, MotionSide& B, bool useBias);
+    /// Whether solve does no more than WheelLanes.hpp's lanes do (no limits): such rows are solved kLanes at a time.
+    /// Whatever else solve comes to do must make this false.
+    bool solvesInLanes() const { return !enableLimit; }
     JointReaction reaction(const JointEndsNow& now, double invH) const;
     /// World::jointMotorTorque: the motor's torque on B over the last step, N m (0 while it is off).
     double motorTorque(double invH) const { return motorImpulse * invH; }
