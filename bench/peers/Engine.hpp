@@ -35,6 +35,8 @@ struct Engine {
     int threads = 1;   ///< threads the engine was asked to use
     std::function<std::unique_ptr<EngineRun>(const Scene&)> start;
     int substeps = 0;  ///< physim's substeps per step; 0 for a peer, whose solver counts differently
+    /// Why the engine does not run a scene (empty, or no function: it does).
+    std::function<std::string(const Scene&)> skips;
 };
 
 /// physim at its default settings with one thread, and (when the machine has more than one) with every hardware

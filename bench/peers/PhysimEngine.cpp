@@ -3,6 +3,7 @@
 
 #include "physim/core/World.hpp"
 
+#include <cmath>
 #include <string>
 #include <thread>
 #include <vector>
@@ -14,16 +15,25 @@ namespace {
 class PhysimRun final : public EngineRun {
 public:
     PhysimRun(const Scene& scene, int threads, int substeps)
-        : world_(physimSettings(threads, substeps)), ids_(buildPhysim(world_, scene)) {}
+        : world_(physimSettings(threads, substeps)), scene_(scene), bodies_(buildPhysimBodies(world_, scene)) {}
 
-    void step() override { world_.step(kTimeStep); }
+    void step() override {
+        physimBeforeStep(world_, scene_, bodies_, steps_++);
+        world_.step(kTimeStep);
+    }
 
+    // A wave's body before its wave first came: NaN.
     Point position(std::size_t index) const override {
-        const physim::Vec2 p = world_.position(ids_[index]);
+        const physim::BodyId id = bodies_.dynamics[index];
+        if (id.isNull()) return {std::nan(""), std::nan("")};
+        const physim::Vec2 p = world_.position(id);
         return {p.x(), p.y()};
     }
 
-    double angle(std::size_t index) const override { return world_.angle(ids_[index]); }
+    double angle(std::size_t index) const override {
+        const physim::BodyId id = bodies_.dynamics[index];
+        return id.isNull() ? std::nan("") : world_.angle(id);
+    }
 
     std::vector<std::pair<std::string, double>> lastStepStages() const override {
         std::vector<std::pair<std::string, double>> out;
@@ -37,13 +47,15 @@ public:
 
 private:
     physim::World world_;
-    std::vector<physim::BodyId> ids_;
+    Scene scene_;  // a copy: what it does between steps
+    PhysimBodies bodies_;
+    long steps_ = 0;
 };
 
 Engine physim(const std::string& name, int threads, int reported, int substeps) {
     return {name, reported,
             [threads, substeps](const Scene& s) { return std::make_unique<PhysimRun>(s, threads, substeps); },
-            substeps};
+            substeps, {}};
 }
 
 }  // namespace
