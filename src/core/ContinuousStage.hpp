@@ -8,7 +8,9 @@
 //     against static bodies only, exactly, so nothing is knocked through a wall.
 // Candidates come from the broad phase's trees (the swept box as the query), never from a loop over all bodies.
 // A pair touching at the start (a resting contact, or one just placed by an impact) is the contacts' business,
-// unless turning or approaching would carry it more than the linear slop into each other within the step.
+// unless turning or approaching would carry it more than the linear slop into each other within the step (a
+// continuous body), or a fast body's centroid would come within a small circle of a static shape it touches (pressed
+// through a chain piece or a segment by a heavy neighbour).
 // A body that hits something is put back at the pose of its first impact, with its velocity kept: the contact is
 // then in the next step's manifold, and the solver answers it like every contact (restitution, friction, joints
 // all consistent). Exact pairs against moving bodies are solved as one batch by the ContinuousSolver (the CPU,

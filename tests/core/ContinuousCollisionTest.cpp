@@ -612,6 +612,37 @@ TEST(ContinuousStruck, AStruckBodyNeverPassesAStaticWall) {
         }
 }
 
+// The two-sided case of Chain.ADiscPressedIntoAChainByAHeavyBoxStaysInFront: a discrete disc (r = 0.1 m) resting on a
+// static segment, struck from above by a 1 m box falling at 10 to 40 m/s, 300 to 30 000 times its mass. Driven past
+// half its radius in the step while touching the segment, the disc would otherwise end with its centre below the
+// segment's line, where the contact's normal points down and pushes it out underneath (without the check it ends metres below).
+// Its centre stays above the line in every step (y > 0, no tolerance: the Continuous stage stops it before its
+// centroid reaches the segment).
+TEST(ContinuousStruck, ADiscPressedIntoAStaticSegmentByAHeavyBoxStaysAboveIt) {
+    for (const double speed : {10.0, 20.0, 40.0})
+        for (const double density : {10.0, 1000.0}) {
+            World world;
+            BodyDef ground;
+            ground.type = BodyType::Static;
+            ground.shape = makeSegment({-5.0, 0.0}, {5.0, 0.0});
+            world.createBody(ground);
+            BodyDef disc;
+            disc.shape = makeCircle(0.1);
+            disc.position = {0.3, 0.1};
+            const BodyId id = world.createBody(disc);
+            BodyDef box;
+            box.shape = makeBox(0.5, 0.5);
+            box.position = {0.3, 0.7};
+            box.velocity = {0.0, -speed};
+            box.density = density;
+            world.createBody(box);
+            for (int i = 0; i < 60; ++i) {
+                world.step(1.0 / 60.0);
+                ASSERT_GT(world.position(id).y(), 0.0) << speed << " m/s, density " << density << ", step " << i;
+            }
+        }
+}
+
 // Two hundred exact bullets (circles and thin spinning boxes, 150 to 600 m/s) in a closed 4 m box of 1 cm walls:
 // none leaves it over 60 steps, and their kinetic energy never rises above its start by 1% (restitution 1: the
 // bounces keep it, friction takes some; 1% catches any runaway).
