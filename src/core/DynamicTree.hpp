@@ -45,8 +45,8 @@ public:
     std::int32_t createProxy(const Aabb& fatBox, std::uint32_t userData);
     /// Removes a proxy; its id may be handed out again. Throws std::invalid_argument if `proxy` is not live.
     void destroyProxy(std::int32_t proxy);
-    /// Gives a proxy a new box: removes and reinserts its leaf (the id stays). Throws like createProxy and
-    /// destroyProxy, before touching anything.
+    /// Gives a proxy a new box (the id stays): refitted in place if it overlaps the old box, else reinserted.
+    /// Throws like createProxy and destroyProxy, before touching anything.
     void moveProxy(std::int32_t proxy, const Aabb& fatBox);
     /// Gives proxies[i] the box boxes[i], for every i. When they are a quarter of the tree or more (and at least
     /// kRebuildAtLeast), the boxes are set in place and the tree rebuilt; otherwise each moves as by moveProxy.
@@ -141,7 +141,7 @@ private:
     void freeNode(std::int32_t index);
     void replaceChild(std::int32_t parent, std::int32_t from, std::int32_t to);  // parent kNull: the root
     void insertLeaf(std::int32_t leaf);
-    void reinsert(std::int32_t proxy, const Aabb& fatBox);  // checked already: out, new box, back in
+    void reinsert(std::int32_t proxy, const Aabb& fatBox);  // checked already: refit in place, or out and back in
     void removeLeaf(std::int32_t leaf);
     std::int32_t findBestSibling(const Aabb& box);
     void refitNode(std::int32_t index);  // box and height from the children
