@@ -79,6 +79,28 @@ inline BodyId addBox(World& world, const Vec2& position, double halfWidth, doubl
     return world.createBody(def);
 }
 
+/// A discrete disc (r = 0.1 m) resting at x = 0.3 on a ground whose surface is the line y = 0 (the caller's), struck
+/// from above by a 1 m box falling at `speed` m/s with `density` kg/m^2 (the disc has density 1). Returns the lowest
+/// height of the disc's centre over 60 steps at 60 Hz.
+inline double lowestDiscUnderAFallingBox(World& world, double speed, double density) {
+    BodyDef disc;
+    disc.shape = makeCircle(0.1);
+    disc.position = {0.3, 0.1};
+    const BodyId id = world.createBody(disc);
+    BodyDef box;
+    box.shape = makeBox(0.5, 0.5);
+    box.position = {0.3, 0.7};
+    box.velocity = {0.0, -speed};
+    box.density = density;
+    world.createBody(box);
+    double lowest = world.position(id).y();
+    for (int i = 0; i < 60; ++i) {
+        world.step(1.0 / 60.0);
+        lowest = std::min(lowest, world.position(id).y());
+    }
+    return lowest;
+}
+
 /// A pyramid of touching 1 m boxes (scenes::forEachPyramidBox), `base` in its bottom row, standing on y = 0 centred on
 /// x = centerX. Returns the boxes in creation order: the top one last.
 inline std::vector<BodyId> addPyramid(World& world, int base, double centerX = 0.0) {
