@@ -56,10 +56,9 @@ bool impactAllowed(const WorldImpl& w, std::uint32_t mine, const Sweep& mySweep,
 // contact pushes it back out in front. A body sliding or rolling along keeps its centroid a core radius away. Under a
 // crowd's lasting pressure (the spinner's, 20 g along its loop) the gap may halve step after step; the tolerance
 // shrinks with it, so the centroid comes ever closer but never crosses (unless it starts on the shape).
-double coreImpact(const Geometry& mine, const Sweep& mySweep, const Geometry& theirs, const Sweep& theirSweep) {
-    const auto [centroid, core] = withKind(mine, [](auto kind, const auto& s) {
-        return std::make_pair(kind.mass(s).centroid, kind.coreRadius(s));
-    });
+double coreImpact(const ShapeData& mine, const Sweep& mySweep, const Geometry& theirs, const Sweep& theirSweep) {
+    const Vec2& centroid = mine.unitMass.centroid;
+    const double core = withKind(mine.geometry, [](auto kind, const auto& s) { return kind.coreRadius(s); });
     if (!(core > 0.0)) return 1.0;  // no area (a segment): no centre to keep out
     const Transform start = mySweep.at(0.0), ground = theirSweep.at(0.0);
     const DistanceOutput gap = shapeDistance(Circle{centroid, 0.0}, start, theirs, ground);  // centroid to shape
@@ -289,7 +288,7 @@ void ContinuousStage::run(WorldImpl& w) {
             const double before = c.t;
             consider(c, r, mine, theirs, theirSweep, slop);
             if (r.state == ToiState::Touching && !c.continuous && w.bodies[pairPartner_[p]].type == BodyType::Static)
-                c.t = std::min(c.t, coreImpact(mine, c.sweep, theirs, theirSweep));
+                c.t = std::min(c.t, coreImpact(w.shapes[mineShape], c.sweep, theirs, theirSweep));
             if (w.preSolve && c.t < before && !impactAllowed(w, mineShape, c.sweep, otherShape, theirSweep, c.t))
                 c.t = before;
             if (pairPartnerCandidate_[p] >= 0) {
