@@ -25,9 +25,15 @@ namespace physim {
 /// colliding the shapes again (Contacts.cpp).
 struct ManifoldCache {
     double margin = -1.0;           // speculative distance the shapes were collided with, m; < 0: nothing kept
-    int pointCount = 0;
+    std::int16_t pointCount = 0;
+    // With pointCount 0, how long the routine's empty answer holds (StaysEmpty, Manifolds.hpp): while the point of
+    // b it measured, `quietArm` (m, rounded up) from b's centre of mass, moves less than `quiet` (m) in a's frame
+    // (`quietAtAnyMargin`), or while the margin plus that move stays below it. In the record's padding.
+    bool quietAtAnyMargin = false;
+    float quietArm = 0.0f;
     Vec2 offset = Vec2::Zero();     // b's centre of mass in a's frame, m
     double angle = 0.0;             // b's angle minus a's, rad
+    double quiet = 0.0;
     Vec2 normal = Vec2::Zero();     // in a's frame
     struct Point {
         Vec2 onA = Vec2::Zero();    // the point on a's surface, in a's frame about its centre of mass, m

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 namespace physim {
 namespace {
@@ -100,8 +101,17 @@ kernel::Motion stepAhead(const BodyData& b, double dt) {
     return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
-void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData& B, double margin) {
+void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData& B, double margin,
+          const StaysEmpty& empty) {
     k.margin = margin;
+    k.quiet = m.pointCount == 0 ? empty.distance : 0.0;
+    k.quietAtAnyMargin = empty.anyMargin;
+    k.quietArm = 0.0f;
+    if (k.quiet > 0.0) {
+        const double arm = (empty.about - B.localCenter).norm();
+        k.quietArm = static_cast<float>(arm);
+        if (k.quietArm < arm) k.quietArm = std::nextafter(k.quietArm, std::numeric_limits<float>::infinity());
+    }
     k.offset = A.xf.q.applyInverse(B.center - A.center);
     k.angle = B.angle - A.angle;
     k.normal = A.xf.q.applyInverse(m.normal);
@@ -191,12 +201,26 @@ template <class T>
 
 // The pair's manifold with every point up to `margin` (m) apart, from the shapes collided again: with 2 tolerances
 // to spare, so a pair at rest keeps its cache though its closing speed, and so its margin, jitters.
-Manifold collide(ManifoldCache& k, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
-                 const BodyData& B, double margin, double tolerance) {
+// The whole result, so that it is returned in place (a manifold is 160 bytes).
+NarrowResult collide(ManifoldCache& k, const Geometry& shapeA, const BodyData& A, const Geometry& shapeB,
+                     const BodyData& B, double margin, double tolerance) {
     const double wider = margin + 2.0 * tolerance;
-    const NarrowResult r = collideGeometries(shapeA, A.xf, shapeB, B.xf, wider);
-    keep(k, r.manifold, A, B, wider);
-    return r.manifold;
+    NarrowResult r = collideGeometries(shapeA, A.xf, shapeB, B.xf, wider);
+    keep(k, r.manifold, A, B, wider, r.empty);
+    return r;
+}
+
+// Whether a cache holds an empty answer with a promise (StaysEmpty); 0 promises nothing, even to a pair at rest.
+[[gnu::always_inline]] inline bool promisesEmpty(const ManifoldCache& k) { return k.pointCount == 0 && k.quiet > 0.0; }
+// Whether that promise still holds: the routine, asked with `margin` (m) now, would answer empty again, its point
+// having moved at most the shift of B's centre plus the turn times the arm in A's frame.
+[[gnu::always_inline]] inline bool staysEmpty(const ManifoldCache& k, double margin, const PairSide<double>& A,
+                                              const PairSide<double>& B) {
+    const double dx = B.cx - A.cx, dy = B.cy - A.cy;
+    const double x = A.qc * dx + A.qs * dy - k.offset.x(), y = -A.qs * dx + A.qc * dy - k.offset.y();
+    const double moved = std::sqrt(x * x + y * y) + std::abs(B.angle - A.angle - k.angle) * double{k.quietArm};
+    if (k.quietAtAnyMargin) return moved < k.quiet;
+    return std::max(margin, kSpeculativeMargin) + moved < k.quiet;
 }
 
 // What a manifold's points held before the narrow phase placed them anew.
@@ -268,8 +292,9 @@ template <class Side>
             placed[p].id = cached.id;
         }
     } else {
-        const Manifold fresh =
+        const NarrowResult result =
             collide(k, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, margin, tolerance);
+        const Manifold& fresh = result.manifold;
         m.normal = fresh.normal;
         found = fresh.pointCount;
         for (int p = 0; p < found; ++p) {
@@ -300,7 +325,8 @@ template <bool V>
     bool reuse = false;
     if (k.margin >= 0.0) {
         const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
-        reuse = motion <= tolerance && margin + motion <= k.margin;
+        reuse = (motion <= tolerance && margin + motion <= k.margin) ||
+                (promisesEmpty(k) && staysEmpty(k, margin + 2.0 * tolerance, a, b));
     }
     const bool touching = placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
     if (c.manifold.pointCount > 0 && exactAndTurning(A, B) &&
@@ -420,9 +446,11 @@ template <bool V>
     unsigned reused = 0;  // a bit per contact whose cache holds
     int points = 0;       // the most points a kept manifold has: many pairs in a pile have none
     for (int k = 0; k < kLanes; ++k)
-        if (reuse[k] != 0 && (lanes >> k & 1u)) {
+        if ((lanes >> k & 1u) &&
+            (reuse[k] != 0 || (promisesEmpty(c[k]->cache) && staysEmpty(c[k]->cache, margin[k] + 2.0 * p.tolerance,
+                                                                          sideOf(*A[k]), sideOf(*B[k]))))) {
             reused |= 1u << k;
-            points = std::max(points, c[k]->cache.pointCount);
+            points = std::max(points, int{c[k]->cache.pointCount});
         }
     const Wide nx = a.qc * turn[2] - a.qs * turn[3], ny = a.qs * turn[2] + a.qc * turn[3];
     Wide px[2], py[2], separation[2];

@@ -14,9 +14,21 @@
 
 namespace physim {
 
+/// How long a routine's empty answer stays empty, from the routine's own tests: while the point `about` of the
+/// second shape (in its body's frame) moves less than `distance` (m) relative to the first (`anyMargin`: at any
+/// margin), or while the margin, at least kSpeculativeMargin, plus that move stays below `distance` (the shapes'
+/// gap, less rounding's due). Zero: nothing known. The narrow phase then skips the routine and has the same answer
+/// (Contacts.cpp).
+struct StaysEmpty {
+    double distance = 0.0;
+    bool anyMargin = false;
+    Vec2 about = Vec2::Zero();
+};
+
 struct NarrowResult {
     Manifold manifold;
     double separation = 0.0;  ///< m along manifold.normal; only meaningful when manifold.pointCount > 0
+    StaysEmpty empty;         ///< only meaningful when manifold.pointCount == 0
 };
 
 /// Dispatch on the pair of shape kinds (NarrowPhase.cpp); the normal points from a to b.

@@ -12,8 +12,10 @@ namespace physim {
 namespace {
 
 NarrowResult swapped(NarrowResult r) {
-    // The routine ran with the shapes swapped: the same points, the normal reversed to run from a to b.
+    // The routine ran with the shapes swapped: the same points, the normal reversed to run from a to b. Its
+    // StaysEmpty measured a's motion relative to b, which the narrow phase does not track: nothing known.
     r.manifold.normal = -r.manifold.normal;
+    r.empty = {};
     return r;
 }
 

@@ -60,15 +60,37 @@ double offsetFromLine(const ChainSegment& a, const Vec2& p) {
     return perp(along).dot(p - a.segment.point1) / along.norm();
 }
 
-// Whether a core of this spread and radius lies farther from the segment p1-p2 than any kept point may: its bounding
-// circle is apart by more than the margin (points are kept up to max(margin, kSpeculativeMargin), Manifolds.hpp).
-// Most pieces near a body are such; the routines below would find nothing.
-bool apart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius, double margin) {
+// The gap (m) between the segment p1-p2 and the bounding circle of a core of this spread and radius.
+double gapTo(const Vec2& p1, const Vec2& p2, const Spread& b, double radius) {
     const Vec2 e = p2 - p1;
     const double t = std::clamp(e.dot(b.centre - p1) / e.squaredNorm(), 0.0, 1.0);
     const double distance = (b.centre - (p1 + t * e)).norm();
     const double reach = b.reachSquared > 0.0 ? std::sqrt(b.reachSquared) : 0.0;  // a circle's is 0: no root
-    return distance - reach - radius > std::max(margin, kSpeculativeMargin);
+    return distance - reach - radius;
+}
+
+// Whether a core of this spread and radius lies farther from the segment p1-p2 than any kept point may: its bounding
+// circle is apart by more than the margin (points are kept up to max(margin, kSpeculativeMargin), Manifolds.hpp).
+// Most pieces near a body are such; the routines below would find nothing.
+bool apart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius, double margin) {
+    return gapTo(p1, p2, b, radius) > std::max(margin, kSpeculativeMargin);
+}
+
+// What StaysEmpty keeps back from a distance for rounding: the slack clearlyApart allows its own tests (a
+// micrometre, and 1e-12 of the coordinates), far above the few units of 1e-16 of the coordinates that any of
+// these tests, or the narrow phase's measure of the motion, can be off by.
+double roundingDue(const Vec2& p1, const Vec2& p2, const Vec2& centre) {
+    return 1e-6 + 1e-12 * std::max({p1.cwiseAbs().maxCoeff(), p2.cwiseAbs().maxCoeff(), centre.cwiseAbs().maxCoeff()});
+}
+
+// An empty answer that stays empty while the core's centre moves less than `distance` (anyMargin), or while the
+// margin plus that move stays below it: the allowance less rounding's due, never negative.
+NarrowResult emptyFor(const RoundedCore& b, double distance, bool anyMargin, double due) {
+    Vec2 centre = Vec2::Zero();  // the spread's centre in b's body frame
+    for (int i = 0; i < b.count; ++i) centre += b.vertices[i];
+    NarrowResult r;
+    r.empty = {std::max(distance - due, 0.0), anyMargin, centre / b.count};
+    return r;
 }
 
 // apart's answer where it is plain, without its division and square roots: the centre's squared distance from the
@@ -99,7 +121,11 @@ bool clearlyApart(const Vec2& p1, const Vec2& p2, const Spread& b, double radius
 // outside the span), nor where it bends right and the normal lies beyond the neighbour's face normal. This finds
 // that empty answer without the routines. "Clearly": each side of each test by more than 1e-3 of the lengths
 // involved, far above any rounding of the rule's own tests; a turn >= 0 is never the convex case.
-bool leftToNeighbour(const ChainSegment& a, const Vec2& centre) {
+// Returns -1 where the rule does not apply; else how far (m) the centre may move with each test still passing
+// (StaysEmpty), 0 where that is below rounding's due. Each test is a distance h beyond a line through the end
+// (along the piece, or the neighbour's normal) greater than 1e-3 of the centre's distance d from the end; a move
+// by x changes both by at most x, so the test holds while x < (h - 1e-3 d) / (1 + 1e-3).
+double leftToNeighbour(const ChainSegment& a, const Vec2& centre) {
     const Vec2& p1 = a.segment.point1;
     const Vec2& p2 = a.segment.point2;
     const Vec2 along = p2 - p1;
@@ -108,15 +134,21 @@ bool leftToNeighbour(const ChainSegment& a, const Vec2& centre) {
     auto past = [&](const Vec2& end, double beyondEnd, const Vec2& neighbour, bool atStart) {
         const Vec2 toCentre = centre - end;
         const double distance2 = toCentre.squaredNorm();
-        if (!(beyondEnd * beyondEnd > 1e-6 * length2 * distance2)) return false;
+        if (!(beyondEnd * beyondEnd > 1e-6 * length2 * distance2)) return -1.0;
+        const double d = std::sqrt(distance2);
+        auto allowance = [d](double h) { return (h - 1e-3 * d) / (1.0 + 1e-3); };
+        double still = allowance(std::abs(beyondEnd) / std::sqrt(length2));
         const double turn = atStart ? cross(neighbour, along) : cross(along, neighbour);  // < 0: bends right
-        if (turn >= 0.0) return true;
-        const double side = atStart ? cross(perp(neighbour), toCentre) : cross(toCentre, perp(neighbour));
-        return side > 0.0 && side * side > 1e-6 * neighbour.squaredNorm() * distance2;
+        if (turn < 0.0) {
+            const double side = atStart ? cross(perp(neighbour), toCentre) : cross(toCentre, perp(neighbour));
+            if (!(side > 0.0 && side * side > 1e-6 * neighbour.squaredNorm() * distance2)) return -1.0;
+            still = std::min(still, allowance(side / neighbour.norm()));
+        }
+        return std::max(still - roundingDue(p1, p2, centre), 0.0);
     };
-    if (u < 0.0) return a.ghost1 != p1 && past(p1, u, Vec2(p1 - a.ghost1), true);
-    if (u > length2) return a.ghost2 != p2 && past(p2, u - length2, Vec2(a.ghost2 - p2), false);
-    return false;
+    if (u < 0.0) return a.ghost1 != p1 ? past(p1, u, Vec2(p1 - a.ghost1), true) : -1.0;
+    if (u > length2) return a.ghost2 != p2 ? past(p2, u - length2, Vec2(a.ghost2 - p2), false) : -1.0;
+    return -1.0;
 }
 
 // A circle's core placed in the piece's frame: relativeCore's vertex, without its copies of the unused entries.
@@ -155,9 +187,16 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     // The cheap rejections first: most pieces near a body are out of its reach or behind it.
     const Transform relative = relativeTransform(xa, xb);
     const Spread spread = spreadOf(b, relative);
-    if (clearlyApart(p1, p2, spread, b.radius, margin)) return {};
-    if (offsetFromLine(a, spread.centre) < 0.0) return {};  // behind: one-sided
-    if (apart(p1, p2, spread, b.radius, margin)) return {};
+    const bool clearly = clearlyApart(p1, p2, spread, b.radius, margin);
+    const double offset = clearly ? 0.0 : offsetFromLine(a, spread.centre);
+    if (clearly || apart(p1, p2, spread, b.radius, margin)) {
+        // Apart until the gap closes to the margin; behind as well, until the centre crosses the line.
+        const double due = roundingDue(p1, p2, spread.centre), gap = gapTo(p1, p2, spread, b.radius);
+        if (offset < 0.0 && -offset > gap - std::max(margin, kSpeculativeMargin))
+            return emptyFor(b, -offset, true, due);
+        return emptyFor(b, gap, false, due);
+    }
+    if (offset < 0.0) return emptyFor(b, -offset, true, roundingDue(p1, p2, spread.centre));  // behind: one-sided
 
     const RoundedCore piece = coreOf(p1, p2, 0.0);
     const RoundedCore local = b.count == 1 ? pointCore(relative.apply(b.vertices[0]), b.radius) : relativeCore(b, xa, xb);
@@ -183,8 +222,12 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     return placed(collideWithFace(piece, kFace, local, margin), xa);
 }
 
-bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
+double circleLeftToNeighbourFor(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
     return leftToNeighbour(a, relativeTransform(xa, xb).apply(b.center));
+}
+
+bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
+    return circleLeftToNeighbourFor(a, xa, b, xb) >= 0.0;
 }
 
 }  // namespace physim
