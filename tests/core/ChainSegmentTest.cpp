@@ -252,6 +252,24 @@ TEST(ChainSegment, RandomJointsGiveOnlyFaceOrCornerNormals) {
     EXPECT_GT(cornerNormals, 100);
 }
 
+// Two pieces 0.1 to 1 m long meeting at a joint within 1 m of the origin and turning there by -60 to 60 degrees,
+// drawn from `uniform`; draw k % 10 == 0 has an open end at the joint (a real corner).
+struct RandomJoint {
+    std::vector<ChainSegment> chain;
+    Vec2 joint;
+    double turn;
+};
+template <class Uniform>
+RandomJoint randomJoint(Uniform& uniform, int k) {
+    const double heading = uniform(-M_PI, M_PI), turn = uniform(-M_PI / 3, M_PI / 3);
+    const Vec2 joint(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
+    const Vec2 d1(std::cos(heading), std::sin(heading)), d2(std::cos(heading + turn), std::sin(heading + turn));
+    const double length = uniform(0.1, 1.0);
+    std::vector<ChainSegment> chain = openChain({joint - length * d1, joint, joint + length * d2});
+    if (k % 10 == 0) chain[1].ghost1 = chain[1].segment.point1;
+    return {chain, joint, turn};
+}
+
 // An empty answer's StaysEmpty is a promise the narrow phase acts on (it skips the routine while the promise
 // holds): the routine must answer empty again at any pose and margin within it. Random joints (as above), circles
 // and boxes off their bodies' origins, random margins; each empty answer with a promise is asked again after a
@@ -264,12 +282,9 @@ TEST(ChainSegment, AnEmptyAnswerStaysEmptyWithinItsPromise) {
     auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     int empties = 0, promised = 0, anyMargin = 0, checked = 0;
     for (int k = 0; k < 40000; ++k) {
-        const double heading = uniform(-M_PI, M_PI), turn = uniform(-M_PI / 3, M_PI / 3);
-        const Vec2 joint(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
-        const Vec2 d1(std::cos(heading), std::sin(heading)), d2(std::cos(heading + turn), std::sin(heading + turn));
-        const double length = uniform(0.1, 1.0);
-        std::vector<ChainSegment> chain = openChain({joint - length * d1, joint, joint + length * d2});
-        if (k % 10 == 0) chain[1].ghost1 = chain[1].segment.point1;  // an open end at the joint
+        const RandomJoint drawn = randomJoint(uniform, k);
+        const std::vector<ChainSegment>& chain = drawn.chain;
+        const Vec2& joint = drawn.joint;
         const Vec2 off(uniform(-0.3, 0.3), uniform(-0.3, 0.3));
         const Geometry shape = k % 2 == 0 ? Geometry{makeCircle(uniform(0.05, 0.5), off)}
                                           : Geometry{makeBox(uniform(0.05, 0.5), uniform(0.05, 0.5), off,
@@ -386,12 +401,10 @@ TEST(ChainSegment, CircleShortcutGivesTheRoutinesAnswer) {
     auto uniform = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
     int skipped = 0, skippedAtConvex = 0, contacts = 0;
     for (int k = 0; k < 40000; ++k) {
-        const double heading = uniform(-M_PI, M_PI), turn = uniform(-M_PI / 3, M_PI / 3);
-        const Vec2 joint(uniform(-1.0, 1.0), uniform(-1.0, 1.0));
-        const Vec2 d1(std::cos(heading), std::sin(heading)), d2(std::cos(heading + turn), std::sin(heading + turn));
-        const double length = uniform(0.1, 1.0);
-        std::vector<ChainSegment> chain = openChain({joint - length * d1, joint, joint + length * d2});
-        if (k % 10 == 0) chain[1].ghost1 = chain[1].segment.point1;  // an open end at the joint: a real corner
+        const RandomJoint drawn = randomJoint(uniform, k);
+        const std::vector<ChainSegment>& chain = drawn.chain;
+        const Vec2& joint = drawn.joint;
+        const double turn = drawn.turn;
         const Circle circle = makeCircle(uniform(0.05, 0.5));
         const Transform xa{{uniform(-5.0, 5.0), uniform(-5.0, 5.0)}, Rotation::fromAngle(uniform(-M_PI, M_PI))};
         const Transform xb{xa.apply(joint + Vec2(uniform(-0.8, 0.8), uniform(-0.8, 0.8))),
