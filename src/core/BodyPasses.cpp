@@ -128,54 +128,31 @@ template <class Record>
         integrateVelocityOne(states[list[k]], base[list[k]], warm ? &warm[list[k]] : nullptr, sims[list[k]], h, again);
 }
 
-void integrateBaseline(SolverBody* states, const std::uint32_t* list, std::size_t count, double h) {
-    integrateLoop(states, list, count, h);
-}
-void integrateVelocityBaseline(SolverBody* states, RowsBase* base, WarmStartVelocity* warm, const SolverBodySim* sims,
-                               const std::uint32_t* list, std::size_t count, double h, bool again) {
-    integrateVelocityLoop(states, base, warm, sims, list, count, h, again);
-}
-#if PHYSIM_HAS_AVX2_CODE
-PHYSIM_AVX2_CODE void integrateAvx2(SolverBody* states, const std::uint32_t* list, std::size_t count, double h) {
-    integrateLoop(states, list, count, h);
-}
-PHYSIM_AVX512_CODE void integrateAvx512(SolverBody* states, const std::uint32_t* list, std::size_t count,
-                                        double h) {
-    integrateLoop(states, list, count, h);
-}
-PHYSIM_AVX2_CODE void integrateVelocityAvx2(SolverBody* states, RowsBase* base, WarmStartVelocity* warm,
-                                            const SolverBodySim* sims, const std::uint32_t* list, std::size_t count,
-                                            double h, bool again) {
-    integrateVelocityLoop(states, base, warm, sims, list, count, h, again);
-}
-PHYSIM_AVX512_CODE void integrateVelocityAvx512(SolverBody* states, RowsBase* base, WarmStartVelocity* warm,
-                                                const SolverBodySim* sims, const std::uint32_t* list,
-                                                std::size_t count, double h, bool again) {
-    integrateVelocityLoop(states, base, warm, sims, list, count, h, again);
-}
-#endif
+struct IntegratePositions {
+    template <bool>
+    [[gnu::always_inline]] static void run(SolverBody* states, const std::uint32_t* list, std::size_t count,
+                                           double h) {
+        integrateLoop(states, list, count, h);
+    }
+};
+struct IntegrateVelocities {
+    template <bool>
+    [[gnu::always_inline]] static void run(SolverBody* states, RowsBase* base, WarmStartVelocity* warm,
+                                           const SolverBodySim* sims, const std::uint32_t* list, std::size_t count,
+                                           double h, bool again) {
+        integrateVelocityLoop(states, base, warm, sims, list, count, h, again);
+    }
+};
 
 }  // namespace
 
 void integratePositions(SolverBody* states, const std::uint32_t* list, std::size_t count, double h, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return integrateAvx512(states, list, count, h);
-    case WideCode::Avx2: return integrateAvx2(states, list, count, h);
-#endif
-    default: return integrateBaseline(states, list, count, h);
-    }
+    runWide<IntegratePositions>(code, states, list, count, h);
 }
 
 void integrateVelocities(SolverBody* states, RowsBase* base, WarmStartVelocity* warm, const SolverBodySim* sims,
                          const std::uint32_t* list, std::size_t count, double h, bool again, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return integrateVelocityAvx512(states, base, warm, sims, list, count, h, again);
-    case WideCode::Avx2: return integrateVelocityAvx2(states, base, warm, sims, list, count, h, again);
-#endif
-    default: return integrateVelocityBaseline(states, base, warm, sims, list, count, h, again);
-    }
+    runWide<IntegrateVelocities>(code, states, base, warm, sims, list, count, h, again);
 }
 
 }  // namespace physim

@@ -875,63 +875,39 @@ template <bool V>
     else solveLoopWith<V, false>(begin, end, cold, states, pass);
 }
 
-// The same loops built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp).
-PreparedRows prepareBaseline(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
-                             const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
-                             const BodyData* bodies, const ContactCores* cores, const ShapeData* shapes,
-                             ContactBlockEnds* ends) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-}
-void warmStartBaseline(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop<false>(begin, end, states);
-}
-void solveBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                   const ContactPass& pass) {
-    solveLoop<false>(begin, end, cold, states, pass);
-}
-// The relax pass with surface-material terms: functions of their own, so the loops above stay as they were.
-void relaxMaterialBaseline(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                           const ContactPass& pass, ContactBlockMaterial* material) {
-    relaxLoopMaterial<false>(begin, end, cold, states, pass, material);
-}
-#if PHYSIM_HAS_AVX2_CODE
-PHYSIM_AVX2_CODE PreparedRows prepareAvx2(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
-                                          std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                          const SolverBodySim* sims, const BodyData* bodies,
-                                          const ContactCores* cores, const ShapeData* shapes, ContactBlockEnds* ends) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-}
-PHYSIM_AVX512_CODE PreparedRows prepareAvx512(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
-                                              std::size_t count, const RowRef* refs, const ContactData* contacts,
-                                              const SolverBodySim* sims, const BodyData* bodies,
-                                              const ContactCores* cores, const ShapeData* shapes,
-                                              ContactBlockEnds* ends) {
-    return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-}
-PHYSIM_AVX2_CODE void warmStartAvx2(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop<true>(begin, end, states);
-}
-PHYSIM_AVX2_CODE void solveAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
-                                const ContactPass& pass) {
-    solveLoop<true>(begin, end, cold, states, pass);
-}
-PHYSIM_AVX2_CODE void relaxMaterialAvx2(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                        SolverBody* states, const ContactPass& pass, ContactBlockMaterial* material) {
-    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
-}
-PHYSIM_AVX512_CODE void warmStartAvx512(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
-    warmStartLoop<true>(begin, end, states);
-}
-PHYSIM_AVX512_CODE void solveAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                    SolverBody* states, const ContactPass& pass) {
-    solveLoop<true>(begin, end, cold, states, pass);
-}
-PHYSIM_AVX512_CODE void relaxMaterialAvx512(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
-                                            SolverBody* states, const ContactPass& pass,
-                                            ContactBlockMaterial* material) {
-    relaxLoopMaterial<true>(begin, end, cold, states, pass, material);
-}
-#endif
+// The loops, each built for baseline x86-64, AVX2 and AVX-512 (Wide.hpp, runWide).
+struct PrepareContacts {
+    template <bool>
+    [[gnu::always_inline]] static PreparedRows run(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows,
+                                                   std::size_t count, const RowRef* refs, const ContactData* contacts,
+                                                   const SolverBodySim* sims, const BodyData* bodies,
+                                                   const ContactCores* cores, const ShapeData* shapes,
+                                                   ContactBlockEnds* ends) {
+        return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
+    }
+};
+struct WarmStartContacts {
+    template <bool V>
+    [[gnu::always_inline]] static void run(ContactBlock* begin, ContactBlock* end, SolverBody* states) {
+        warmStartLoop<V>(begin, end, states);
+    }
+};
+struct SolveContacts {
+    template <bool V>
+    [[gnu::always_inline]] static void run(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                           SolverBody* states, const ContactPass& pass) {
+        solveLoop<V>(begin, end, cold, states, pass);
+    }
+};
+// The relax pass with surface-material terms: a loop of its own, so the loops above stay as they were.
+struct RelaxMaterial {
+    template <bool V>
+    [[gnu::always_inline]] static void run(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold,
+                                           SolverBody* states, const ContactPass& pass,
+                                           ContactBlockMaterial* material) {
+        relaxLoopMaterial<V>(begin, end, cold, states, pass, material);
+    }
+};
 
 }  // namespace
 
@@ -939,15 +915,8 @@ PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
                              const BodyData* bodies, WideCode code, const ContactCores* cores,
                              const ShapeData* shapes, ContactBlockEnds* ends) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512:
-        return prepareAvx512(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-    case WideCode::Avx2:
-        return prepareAvx2(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-#endif
-    default: return prepareBaseline(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
-    }
+    return runWide<PrepareContacts>(code, blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes,
+                                    ends);
 }
 
 void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,
@@ -957,34 +926,14 @@ void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, 
 }
 
 void warmStartContacts(ContactBlock* begin, ContactBlock* end, SolverBody* states, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return warmStartAvx512(begin, end, states);
-    case WideCode::Avx2: return warmStartAvx2(begin, end, states);
-#endif
-    default: return warmStartBaseline(begin, end, states);
-    }
+    runWide<WarmStartContacts>(code, begin, end, states);
 }
 
 void solveContacts(ContactBlock* begin, ContactBlock* end, ContactBlockCold* cold, SolverBody* states,
                    const ContactPass& pass, WideCode code, ContactBlockMaterial* material) {
     // The material terms act in the relax pass only (friction's pass): the solve pass is the same without them.
-    if (material && !pass.useBias) {
-        switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-        case WideCode::Avx512: return relaxMaterialAvx512(begin, end, cold, states, pass, material);
-        case WideCode::Avx2: return relaxMaterialAvx2(begin, end, cold, states, pass, material);
-#endif
-        default: return relaxMaterialBaseline(begin, end, cold, states, pass, material);
-        }
-    }
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return solveAvx512(begin, end, cold, states, pass);
-    case WideCode::Avx2: return solveAvx2(begin, end, cold, states, pass);
-#endif
-    default: return solveBaseline(begin, end, cold, states, pass);
-    }
+    if (material && !pass.useBias) return runWide<RelaxMaterial>(code, begin, end, cold, states, pass, material);
+    runWide<SolveContacts>(code, begin, end, cold, states, pass);
 }
 
 void warmStartRolling(const ContactBlock* begin, const ContactBlock* end, const ContactBlockMaterial* material,

@@ -296,7 +296,7 @@ template <class Side>
             collide(k, shapes[c.shapeA()].geometry, A, shapes[c.shapeB()].geometry, B, margin, tolerance);
         const Manifold& fresh = result.manifold;
         m.normal = fresh.normal;
-        found = fresh.pointCount;
+        found = std::min(fresh.pointCount, 2);  // always: said so that the compiler sees `placed` is large enough
         for (int p = 0; p < found; ++p) {
             const ContactPoint& cp = fresh.points[p];
             placed[p] = {cp.point.x(), cp.point.y(), cp.separation, cp.id, false};

@@ -66,6 +66,36 @@ inline WideCode pickWideCode(WideCode code) {
     return WideCode::Baseline;
 }
 
+// The three builds of a loop (runWide). `Loop` names it: a type with an always-inline static `run<V>(args...)`,
+// which each build below compiles with its own instructions; V says whether the build has vector instructions.
+template <class Loop, class... Args>
+decltype(auto) buildBaseline(Args&&... args) {
+    return Loop::template run<false>(static_cast<Args&&>(args)...);
+}
+#if PHYSIM_HAS_AVX2_CODE
+template <class Loop, class... Args>
+PHYSIM_AVX2_CODE decltype(auto) buildAvx2(Args&&... args) {
+    return Loop::template run<true>(static_cast<Args&&>(args)...);
+}
+template <class Loop, class... Args>
+PHYSIM_AVX512_CODE decltype(auto) buildAvx512(Args&&... args) {
+    return Loop::template run<true>(static_cast<Args&&>(args)...);
+}
+#endif
+
+/// Runs the loop `Loop` (see buildBaseline) in the build `code` picks: the loop is written once, and built three
+/// times.
+template <class Loop, class... Args>
+decltype(auto) runWide(WideCode code, Args&&... args) {
+    switch (pickWideCode(code)) {
+#if PHYSIM_HAS_AVX2_CODE
+    case WideCode::Avx512: return buildAvx512<Loop>(static_cast<Args&&>(args)...);
+    case WideCode::Avx2: return buildAvx2<Loop>(static_cast<Args&&>(args)...);
+#endif
+    default: return buildBaseline<Loop>(static_cast<Args&&>(args)...);
+    }
+}
+
 constexpr int kLanes = 4;
 
 using Wide = double __attribute__((vector_size(kLanes * sizeof(double))));

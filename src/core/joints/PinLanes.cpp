@@ -79,29 +79,19 @@ template <bool UseBias>
     }
 }
 
-void warmStartBaseline(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-void solveBaseline(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-#if PHYSIM_HAS_AVX2_CODE
-PHYSIM_AVX2_CODE void warmStartAvx2(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-PHYSIM_AVX2_CODE void solveAvx2(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-PHYSIM_AVX512_CODE void warmStartAvx512(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-PHYSIM_AVX512_CODE void solveAvx512(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-#endif
+struct WarmStartPins {
+    template <bool>
+    [[gnu::always_inline]] static void run(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
+        warmStartLoop(begin, end, states);
+    }
+};
+struct SolvePins {
+    template <bool>
+    [[gnu::always_inline]] static void run(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
+        if (useBias) solveLoop<true>(begin, end, states);
+        else solveLoop<false>(begin, end, states);
+    }
+};
 
 }  // namespace
 
@@ -140,23 +130,11 @@ void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t
 }
 
 void warmStartPins(const PinBlock* begin, const PinBlock* end, SolverBody* states, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return warmStartAvx512(begin, end, states);
-    case WideCode::Avx2: return warmStartAvx2(begin, end, states);
-#endif
-    default: return warmStartBaseline(begin, end, states);
-    }
+    runWide<WarmStartPins>(code, begin, end, states);
 }
 
 void solvePins(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return solveAvx512(begin, end, states, useBias);
-    case WideCode::Avx2: return solveAvx2(begin, end, states, useBias);
-#endif
-    default: return solveBaseline(begin, end, states, useBias);
-    }
+    runWide<SolvePins>(code, begin, end, states, useBias);
 }
 
 void storePins(const PinBlock* begin, const PinBlock* end, std::vector<JointData>& joints) {

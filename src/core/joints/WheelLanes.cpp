@@ -112,29 +112,19 @@ template <bool UseBias>
     }
 }
 
-void warmStartBaseline(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-void solveBaseline(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-#if PHYSIM_HAS_AVX2_CODE
-PHYSIM_AVX2_CODE void warmStartAvx2(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-PHYSIM_AVX2_CODE void solveAvx2(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-PHYSIM_AVX512_CODE void warmStartAvx512(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
-    warmStartLoop(begin, end, states);
-}
-PHYSIM_AVX512_CODE void solveAvx512(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias) {
-    if (useBias) solveLoop<true>(begin, end, states);
-    else solveLoop<false>(begin, end, states);
-}
-#endif
+struct WarmStartWheels {
+    template <bool>
+    [[gnu::always_inline]] static void run(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
+        warmStartLoop(begin, end, states);
+    }
+};
+struct SolveWheels {
+    template <bool>
+    [[gnu::always_inline]] static void run(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias) {
+        if (useBias) solveLoop<true>(begin, end, states);
+        else solveLoop<false>(begin, end, states);
+    }
+};
 
 }  // namespace
 
@@ -184,23 +174,11 @@ void packWheels(WheelBlock& block, const JointConstraint* const* rows, std::uint
 }
 
 void warmStartWheels(const WheelBlock* begin, const WheelBlock* end, SolverBody* states, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return warmStartAvx512(begin, end, states);
-    case WideCode::Avx2: return warmStartAvx2(begin, end, states);
-#endif
-    default: return warmStartBaseline(begin, end, states);
-    }
+    runWide<WarmStartWheels>(code, begin, end, states);
 }
 
 void solveWheels(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias, WideCode code) {
-    switch (pickWideCode(code)) {
-#if PHYSIM_HAS_AVX2_CODE
-    case WideCode::Avx512: return solveAvx512(begin, end, states, useBias);
-    case WideCode::Avx2: return solveAvx2(begin, end, states, useBias);
-#endif
-    default: return solveBaseline(begin, end, states, useBias);
-    }
+    runWide<SolveWheels>(code, begin, end, states, useBias);
 }
 
 void storeWheels(const WheelBlock* begin, const WheelBlock* end, std::vector<JointData>& joints) {
