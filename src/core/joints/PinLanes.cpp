@@ -1,4 +1,5 @@
 #include "PinLanes.hpp"
+#include "LaneBlocks.hpp"
 
 #include "../BodyLanes.hpp"
 #include "../Impulse.hpp"
@@ -97,35 +98,16 @@ struct SolvePins {
 
 void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t count,
               const std::vector<JointData>& joints) {
-    block = PinBlock{};
-    for (int k = 0; k < kLanes; ++k) block.indexA[k] = block.indexB[k] = kNullIndex;
-    block.count = count;
+    startBlock(block, count);
     for (std::uint32_t lane = 0; lane < count; ++lane) {
         const JointConstraint& row = *rows[lane];
         const RevoluteJoint& pin = std::get<RevoluteJoint>(joints[row.joint].params);
         const int k = static_cast<int>(lane);
-        block.anchorAx[k] = row.anchorA.x();
-        block.anchorAy[k] = row.anchorA.y();
-        block.anchorBx[k] = row.anchorB.x();
-        block.anchorBy[k] = row.anchorB.y();
-        block.deltaX[k] = row.deltaCenter.x();
-        block.deltaY[k] = row.deltaCenter.y();
-        block.invMassA[k] = row.invMassA;
-        block.invMassB[k] = row.invMassB;
-        block.invIA[k] = row.invIA;
-        block.invIB[k] = row.invIB;
-        block.biasRate[k] = row.softness.biasRate;
-        block.massScale[k] = row.softness.massScale;
-        block.impulseScale[k] = row.softness.impulseScale;
+        packRowFields(block, row, lane);
         block.impulseX[k] = pin.linearImpulse.x();
         block.impulseY[k] = pin.linearImpulse.y();
         // As RevoluteJoint::warmStart sums it (from +0.0).
         block.turnImpulse[k] = 0.0 + pin.springImpulse + pin.motorImpulse + pin.lowerImpulse - pin.upperImpulse;
-        block.indexA[k] = row.indexA;
-        block.indexB[k] = row.indexB;
-        block.joint[k] = row.joint;
-        if (rowMoves(row.indexA, row.invMassA)) block.writesA |= 1u << lane;
-        if (rowMoves(row.indexB, row.invMassB)) block.writesB |= 1u << lane;
     }
 }
 

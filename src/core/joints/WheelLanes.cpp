@@ -1,4 +1,5 @@
 #include "WheelLanes.hpp"
+#include "LaneBlocks.hpp"
 
 #include "../BodyLanes.hpp"
 #include "../Impulse.hpp"
@@ -130,28 +131,14 @@ struct SolveWheels {
 
 void packWheels(WheelBlock& block, const JointConstraint* const* rows, std::uint32_t count,
                 const std::vector<JointData>& joints) {
-    block = WheelBlock{};
-    for (int k = 0; k < kLanes; ++k) block.indexA[k] = block.indexB[k] = kNullIndex;
-    block.count = count;
+    startBlock(block, count);
     for (std::uint32_t lane = 0; lane < count; ++lane) {
         const JointConstraint& row = *rows[lane];
         const WheelJoint& wheel = std::get<WheelJoint>(joints[row.joint].params);
         const int k = static_cast<int>(lane);
-        block.anchorAx[k] = row.anchorA.x();
-        block.anchorAy[k] = row.anchorA.y();
-        block.anchorBx[k] = row.anchorB.x();
-        block.anchorBy[k] = row.anchorB.y();
-        block.deltaX[k] = row.deltaCenter.x();
-        block.deltaY[k] = row.deltaCenter.y();
+        packRowFields(block, row, lane);
         block.axisX[k] = row.axis.x();
         block.axisY[k] = row.axis.y();
-        block.invMassA[k] = row.invMassA;
-        block.invMassB[k] = row.invMassB;
-        block.invIA[k] = row.invIA;
-        block.invIB[k] = row.invIB;
-        block.biasRate[k] = row.softness.biasRate;
-        block.massScale[k] = row.softness.massScale;
-        block.impulseScale[k] = row.softness.impulseScale;
         block.springBias[k] = row.spring.biasRate;
         block.springMass[k] = row.spring.massScale;
         block.springImpulseScale[k] = row.spring.impulseScale;
@@ -165,11 +152,6 @@ void packWheels(WheelBlock& block, const JointConstraint* const* rows, std::uint
         block.motorImpulse[k] = wheel.motorImpulse;
         block.lastAxisX[k] = wheel.lastAxis.x();
         block.lastAxisY[k] = wheel.lastAxis.y();
-        block.indexA[k] = row.indexA;
-        block.indexB[k] = row.indexB;
-        block.joint[k] = row.joint;
-        if (rowMoves(row.indexA, row.invMassA)) block.writesA |= 1u << lane;
-        if (rowMoves(row.indexB, row.invMassB)) block.writesB |= 1u << lane;
     }
 }
 
