@@ -119,15 +119,20 @@ void DynamicTree::moveProxy(std::int32_t proxy, const Aabb& fatBox) {
     reinsert(proxy, fatBox);
 }
 
-// A moving body's new box overlaps its old one: the leaf keeps its place and the boxes above it are refitted, with
-// rotations where they lower the perimeter (refitUpward). That costs about a third of out and back in, and every
-// query finds the same leaves: only the tree's shape differs. A box that jumped (a teleport) goes in anew, at its
-// best place.
+// A moving body's new box overlaps its old one: the leaf keeps its place and the boxes above it are refitted. While
+// it still overlaps its sibling (a wheel beside its car's other parts, a body in its pile) the place stays good and
+// only the boxes change, up to the first that does not (refitOnly); one that has drifted away from its sibling is
+// refitted with rotations where they lower the perimeter (refitUpward), which move it towards its new neighbours.
+// Either costs a fraction of out and back in, and every query finds the same leaves: only the tree's shape differs.
+// A box that jumped (a teleport) goes in anew, at its best place.
 void DynamicTree::reinsert(std::int32_t proxy, const Aabb& fatBox) {
     const std::int32_t parent = at(proxy).parent;
     if (parent != kNull && at(proxy).box.overlaps(fatBox)) {
         at(proxy).box = fatBox;
-        refitUpward(parent);
+        const Node& p = at(parent);
+        const std::int32_t sibling = p.child1 == proxy ? p.child2 : p.child1;
+        if (at(sibling).box.overlaps(fatBox)) refitOnly(parent);
+        else refitUpward(parent);
         return;
     }
     removeLeaf(proxy);
@@ -284,6 +289,15 @@ void DynamicTree::refitNode(std::int32_t index) {
 // grandchildren as before, so the walk stops there. (A node above that rotated on its last visit might find a
 // second rotation if visited again; skipping it leaves the tree's area within 0.1% and visits a third of the
 // levels.)
+// The boxes from `index` up, each the union of its children's, until one comes out the same (those above then do).
+void DynamicTree::refitOnly(std::int32_t index) {
+    for (std::int32_t i = index; i != kNull; i = at(i).parent) {
+        const Aabb before = at(i).box;
+        refitNode(i);
+        if (sameBox(before, at(i).box)) return;
+    }
+}
+
 void DynamicTree::refitUpward(std::int32_t index) {
     int unchanged = 0;
     for (std::int32_t i = index; i != kNull && unchanged < 2; i = at(i).parent) {

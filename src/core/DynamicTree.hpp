@@ -145,6 +145,7 @@ private:
     void removeLeaf(std::int32_t leaf);
     std::int32_t findBestSibling(const Aabb& box);
     void refitNode(std::int32_t index);  // box and height from the children
+    void refitOnly(std::int32_t index);    // boxes from index up until one is unchanged; no rotations
     void refitUpward(std::int32_t index);
     bool rotate(std::int32_t index);  // true if it rotated
     void checkProxy(std::int32_t proxy, const char* call) const;
