@@ -207,6 +207,7 @@ NarrowResult collide(ManifoldCache& k, const Geometry& shapeA, const BodyData& A
     const double wider = margin + 2.0 * tolerance;
     NarrowResult r = collideGeometries(shapeA, A.xf, shapeB, B.xf, wider);
     keep(k, r.manifold, A, B, wider, r.empty);
+    if (r.empty.fragile) k.margin = -1.0;  // not kept: collided again next step
     return r;
 }
 

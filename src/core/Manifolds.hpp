@@ -23,6 +23,7 @@ struct StaysEmpty {
     double distance = 0.0;
     bool anyMargin = false;
     Vec2 about = Vec2::Zero();
+    bool fragile = false;  // emptied by a rule on directions (a chain's joints): the answer is not kept at all
 };
 
 struct NarrowResult {

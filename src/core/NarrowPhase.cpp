@@ -13,9 +13,12 @@ namespace {
 
 NarrowResult swapped(NarrowResult r) {
     // The routine ran with the shapes swapped: the same points, the normal reversed to run from a to b. Its
-    // StaysEmpty measured a's motion relative to b, which the narrow phase does not track: nothing known.
+    // StaysEmpty measured a's motion relative to b, which the narrow phase does not track: nothing known, but a
+    // fragile answer stays fragile.
     r.manifold.normal = -r.manifold.normal;
+    const bool fragile = r.empty.fragile;
     r.empty = {};
+    r.empty.fragile = fragile;
     return r;
 }
 

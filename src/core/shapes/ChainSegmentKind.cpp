@@ -83,6 +83,13 @@ double roundingDue(const Vec2& p1, const Vec2& p2, const Vec2& centre) {
     return 1e-6 + 1e-12 * std::max({p1.cwiseAbs().maxCoeff(), p2.cwiseAbs().maxCoeff(), centre.cwiseAbs().maxCoeff()});
 }
 
+// An answer the rules on directions emptied (a corner dropped beyond the neighbour's normal, a face manifold clipped
+// to nothing) is fragile: a move far below any gap can bring the point back, so it promises nothing (StaysEmpty).
+NarrowResult fragileIfEmpty(NarrowResult r) {
+    r.empty.fragile = r.manifold.pointCount == 0;
+    return r;
+}
+
 // An empty answer that stays empty while the core's centre moves less than `distance` (anyMargin), or while the
 // margin plus that move stays below it: the allowance less rounding's due, never negative.
 NarrowResult emptyFor(const RoundedCore& b, double distance, bool anyMargin, double due) {
@@ -204,7 +211,7 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
 
     const LocalManifold m = collideCores(piece, local, margin);
     if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);
-    if (m.normal.dot(face) <= 0.0) return placed(collideWithFace(piece, kFace, local, margin), xa);
+    if (m.normal.dot(face) <= 0.0) return fragileIfEmpty(placed(collideWithFace(piece, kFace, local, margin), xa));
 
     const Vec2 along = p2 - p1;
     const bool atStart = m.normal.dot(along) < 0.0;
@@ -217,9 +224,9 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     if (turn < -kFlatSine * neighbour.norm() * along.norm()) {
         const Vec2 neighbourNormal = perp(neighbour).normalized();
         const bool beyond = atStart ? cross(neighbourNormal, m.normal) > 0.0 : cross(m.normal, neighbourNormal) > 0.0;
-        return beyond ? NarrowResult{} : placed(m, xa);
+        return beyond ? fragileIfEmpty(NarrowResult{}) : placed(m, xa);
     }
-    return placed(collideWithFace(piece, kFace, local, margin), xa);
+    return fragileIfEmpty(placed(collideWithFace(piece, kFace, local, margin), xa));
 }
 
 double circleLeftToNeighbourFor(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
