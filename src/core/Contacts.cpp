@@ -165,14 +165,19 @@ template <bool V, class T>
     return (squareRoot<V>(dx * dx + dy * dy) + turn) * dt;
 }
 
-// How far (m) any point of B can have moved in A's frame since the cache was made (its offset and angle): the
-// shift of B's centre plus the turn times B's extent.
+// How B has moved in A's frame since the cache was made (its offset and angle): its centre's shift (m) and its
+// turn (rad). A point of B at distance r from its centre has moved at most shift + turn r.
+template <class T>
+struct MovedSinceCache {
+    T shift, turn;
+    T reachingOut(const T& r) const { return shift + turn * r; }
+};
 template <bool V, class T>
-[[gnu::always_inline]] inline T motionSinceCache(const T& offsetX, const T& offsetY, const T& angle,
-                                                 const PairSide<T>& A, const PairSide<T>& B) {
+[[gnu::always_inline]] inline MovedSinceCache<T> movedSinceCache(const T& offsetX, const T& offsetY, const T& angle,
+                                                                 const PairSide<T>& A, const PairSide<T>& B) {
     const T dx = B.cx - A.cx, dy = B.cy - A.cy;
     const T x = A.qc * dx + A.qs * dy - offsetX, y = -A.qs * dx + A.qc * dy - offsetY;
-    return squareRoot<V>(x * x + y * y) + magnitude(B.angle - A.angle - angle) * B.extent;
+    return {squareRoot<V>(x * x + y * y), magnitude(B.angle - A.angle - angle)};
 }
 
 // A cached point at the present poses: each surface point moves with its body, the contact point is midway, the
@@ -214,12 +219,10 @@ NarrowResult collide(ManifoldCache& k, const Geometry& shapeA, const BodyData& A
 // Whether a cache holds an empty answer with a promise (StaysEmpty); 0 promises nothing, even to a pair at rest.
 [[gnu::always_inline]] inline bool promisesEmpty(const ManifoldCache& k) { return k.pointCount == 0 && k.quiet > 0.0; }
 // Whether that promise still holds: the routine, asked with `margin` (m) now, would answer empty again, its point
-// having moved at most the shift of B's centre plus the turn times the arm in A's frame.
-[[gnu::always_inline]] inline bool staysEmpty(const ManifoldCache& k, double margin, const PairSide<double>& A,
-                                              const PairSide<double>& B) {
-    const double dx = B.cx - A.cx, dy = B.cy - A.cy;
-    const double x = A.qc * dx + A.qs * dy - k.offset.x(), y = -A.qs * dx + A.qc * dy - k.offset.y();
-    const double moved = std::sqrt(x * x + y * y) + std::abs(B.angle - A.angle - k.angle) * double{k.quietArm};
+// (the arm from B's centre) having moved as `sinceCache` says.
+[[gnu::always_inline]] inline bool staysEmpty(const ManifoldCache& k, double margin,
+                                              const MovedSinceCache<double>& sinceCache) {
+    const double moved = sinceCache.reachingOut(double{k.quietArm});
     if (k.quietAtAnyMargin) return moved < k.quiet;
     return std::max(margin, kSpeculativeMargin) + moved < k.quiet;
 }
@@ -325,9 +328,10 @@ template <bool V>
     const double margin = speculative + reach<V>(a, b, dt);
     bool reuse = false;
     if (k.margin >= 0.0) {
-        const double motion = motionSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
+        const MovedSinceCache<double> moved = movedSinceCache<V>(k.offset.x(), k.offset.y(), k.angle, a, b);
+        const double motion = moved.reachingOut(b.extent);  // of any point of B
         reuse = (motion <= tolerance && margin + motion <= k.margin) ||
-                (promisesEmpty(k) && staysEmpty(k, margin + 2.0 * tolerance, a, b));
+                (promisesEmpty(k) && staysEmpty(k, margin + 2.0 * tolerance, moved));
     }
     const bool touching = placePoints(c, shapes, A, B, a, b, margin, reuse, speculative, tolerance, dt);
     if (c.manifold.pointCount > 0 && exactAndTurning(A, B) &&
@@ -442,14 +446,15 @@ template <bool V>
     fourLanes(c, kCacheAt, head);
     fourLanes(c, kCacheAt + 32, turn);
     const Wide margin = p.speculative + reach<V>(a, b, p.dt);
-    const Wide motion = motionSinceCache<V>(head[2], head[3], turn[0], a, b);
+    const MovedSinceCache<Wide> moved = movedSinceCache<V>(head[2], head[3], turn[0], a, b);
+    const Wide motion = moved.reachingOut(b.extent);
     const WideMask reuse = (motion <= p.tolerance) & (margin + motion <= head[0]);
     unsigned reused = 0;  // a bit per contact whose cache holds
     int points = 0;       // the most points a kept manifold has: many pairs in a pile have none
     for (int k = 0; k < kLanes; ++k)
         if ((lanes >> k & 1u) &&
             (reuse[k] != 0 || (promisesEmpty(c[k]->cache) && staysEmpty(c[k]->cache, margin[k] + 2.0 * p.tolerance,
-                                                                          sideOf(*A[k]), sideOf(*B[k]))))) {
+                                                                          {moved.shift[k], moved.turn[k]})))) {
             reused |= 1u << k;
             points = std::max(points, int{c[k]->cache.pointCount});
         }

@@ -281,14 +281,6 @@ void DynamicTree::refitNode(std::int32_t index) {
     n.height = 1 + std::max(at(n.child1).height, at(n.child2).height);
 }
 
-// From `index` towards the root: each node's box and height from its children, then a rotation if one lowers the
-// perimeter below it. A rotation at a node keeps that node's box (same leaves), so the walk stays valid.
-// A node's rotation choices depend on its children's and grandchildren's boxes only. `index` is always treated
-// as changed (it is the new leaf's new parent). Once two consecutive nodes come out unchanged (same box, same height, no
-// rotation), the boxes and heights above cannot change and the nodes above see the same children and
-// grandchildren as before, so the walk stops there. (A node above that rotated on its last visit might find a
-// second rotation if visited again; skipping it leaves the tree's area within 0.1% and visits a third of the
-// levels.)
 // The boxes from `index` up, each the union of its children's, until one comes out the same (those above then do).
 void DynamicTree::refitOnly(std::int32_t index) {
     for (std::int32_t i = index; i != kNull; i = at(i).parent) {
@@ -298,6 +290,14 @@ void DynamicTree::refitOnly(std::int32_t index) {
     }
 }
 
+// From `index` towards the root: each node's box and height from its children, then a rotation if one lowers the
+// perimeter below it. A rotation at a node keeps that node's box (same leaves), so the walk stays valid.
+// A node's rotation choices depend on its children's and grandchildren's boxes only. `index` is always treated
+// as changed (it is the new leaf's new parent). Once two consecutive nodes come out unchanged (same box, same height, no
+// rotation), the boxes and heights above cannot change and the nodes above see the same children and
+// grandchildren as before, so the walk stops there. (A node above that rotated on its last visit might find a
+// second rotation if visited again; skipping it leaves the tree's area within 0.1% and visits a third of the
+// levels.)
 void DynamicTree::refitUpward(std::int32_t index) {
     int unchanged = 0;
     for (std::int32_t i = index; i != kNull && unchanged < 2; i = at(i).parent) {

@@ -294,7 +294,7 @@ TEST(Chain, ASpinnerKeepsItsCrowdInsideTheLoop) {
 // behind pieces as they jump, boxes across joints). Each step, every body is collided afresh with every piece near
 // it at the poses the step started from: each point closer than half the speculative distance (the narrow phase
 // keeps any point closer than the whole) must be in the world's contacts of that step with its feature id. A
-// promise that held too long would drop such a point (three times too long: 424 missed), and so did the reuse of a
+// promise that held too long would drop such a point (three times too long: hundreds missed), and so did the reuse of a
 // fragile empty answer for a box resting across a joint (292 missed, corner points 45 micrometres deep).
 TEST(Chain, NoPieceThatTouchesIsSkipped) {
     WorldSettings settings;

@@ -229,12 +229,8 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     return fragileIfEmpty(placed(collideWithFace(piece, kFace, local, margin), xa));
 }
 
-double circleLeftToNeighbourFor(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
+double circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
     return leftToNeighbour(a, relativeTransform(xa, xb).apply(b.center));
-}
-
-bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
-    return circleLeftToNeighbourFor(a, xa, b, xb) >= 0.0;
 }
 
 }  // namespace physim

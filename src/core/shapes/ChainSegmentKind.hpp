@@ -17,11 +17,10 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
                                  const Transform& xb, double margin);
 
 /// Whether collideChainSegment surely gives the circle b no contact because its centre lies clearly beyond an end of
-/// the piece where the neighbour answers for it: decided in a few products, without the routines.
-bool circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb);
-/// The same, with how long it stays so: -1 where circleLeftToNeighbour is false; else how far (m) the circle's centre
-/// may move relative to the piece with it still true (StaysEmpty, at any margin; 0: below rounding's due).
-double circleLeftToNeighbourFor(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb);
+/// the piece where the neighbour answers for it, decided in a few products without the routines, and for how long:
+/// -1 where it does not; else how far (m) the circle's centre may move relative to the piece with it still so
+/// (StaysEmpty, at any margin; 0: below rounding's due).
+double circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb);
 
 template <>
 struct ShapeKind<ChainSegment> {
@@ -78,7 +77,7 @@ struct ShapeKind<ChainSegment> {
     // A wheel rolling on a chain meets its piece's neighbours within the margin: most are left to the neighbour.
     static NarrowResult collide(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb,
                                 double margin) {
-        if (const double still = circleLeftToNeighbourFor(a, xa, b, xb); still >= 0.0) {
+        if (const double still = circleLeftToNeighbour(a, xa, b, xb); still >= 0.0) {
             NarrowResult r;
             r.empty = {still, true, b.center};
             return r;
