@@ -240,7 +240,7 @@ PHYSIM_FIELDS(Segment, r.point1, r.point2);
 PHYSIM_FIELDS(Capsule, r.center1, r.center2, r.radius);
 PHYSIM_FIELDS(ChainSegment, r.ghost1, r.segment, r.ghost2);
 PHYSIM_FIELDS(WorldSettings, r.gravity, r.substeps, r.velocityIterations, r.relaxIterations, r.contactHertz,
-              r.contactDampingRatio, r.contactPushMaxVelocity, r.jointHertz, r.jointDampingRatio,
+              r.contactDampingRatio, r.contactPushMaxVelocity, r.jointHertz, r.jointDampingRatio, r.jointArcs,
               r.directChainMassRatio, r.linearSlop, r.restitutionThreshold, r.impactSpeedThreshold, r.enableSleep,
               r.sleepLinearTolerance, r.sleepAngularTolerance, r.timeToSleep, r.threads, r.frictionMixing,
               r.restitutionMixing);

@@ -150,7 +150,11 @@ void solveChain(const std::uint32_t* order, std::size_t count, const JointConstr
         p.rA = p.a.dq.apply(r.anchorA);
         p.rB = p.b.dq.apply(r.anchorB);
         p.rhs = relativeVelocity(p.a, p.b, p.rA, p.rB);
-        if (useBias) p.rhs += r.softness.biasRate * (r.deltaCenter + (p.b.dp - p.a.dp) + p.rB - p.rA);
+        if (useBias) {
+            const Vec2 separation = r.deltaCenter + (p.b.dp - p.a.dp) + p.rB - p.rA;
+            p.bend = pointBend(r, p.a.w, p.b.w, p.rA, p.rB);
+            p.rhs = r.softness.massScale * (p.rhs + r.softness.biasRate * separation) + p.bend;
+        }
         Eigen::Matrix2d d = bodyShare(r.invMassA, r.invIA, p.rA, p.rA) + bodyShare(r.invMassB, r.invIB, p.rB, p.rB);
         if (i > 0) {
             const Eigen::Matrix2d below = shared(i);  // K(i, i-1)
@@ -176,10 +180,9 @@ void solveChain(const std::uint32_t* order, std::size_t count, const JointConstr
         pins[i].rhs = pins[i].invD * pins[i].rhs - pins[i + 1].lower.transpose() * pins[i + 1].rhs;
     for (std::size_t i = 0; i < count; ++i) {
         const JointConstraint& r = rows[order[i]];
-        const double massScale = useBias ? r.softness.massScale : 1.0;
         const double impulseScale = useBias ? r.softness.impulseScale : 0.0;
         Vec2& accumulated = std::get<RevoluteJoint>(joints[r.joint].params).linearImpulse;
-        const Vec2 impulse = -massScale * pins[i].rhs - impulseScale * accumulated;
+        const Vec2 impulse = -pins[i].rhs - impulseScale * accumulated;
         accumulated += impulse;
         if (rowMoves(r.indexA, r.invMassA)) {
             SolverBody& a = states[r.indexA];
@@ -191,6 +194,20 @@ void solveChain(const std::uint32_t* order, std::size_t count, const JointConstr
             b.v += r.invMassB * impulse;
             b.w += r.invIB * cross(pins[i].rB, impulse);
         }
+    }
+    if (!useBias || count == 0 || rows[order[0]].h == 0.0) return;
+    // The bend again with the turns the block gave, pin by pin (a small correction: solvePoint's second solve).
+    for (std::size_t i = 0; i < count; ++i) {
+        const JointConstraint& r = rows[order[i]];
+        MotionSide A = loadSide(states, r.indexA), B = loadSide(states, r.indexB);
+        Vec2 solved;
+        if (!solvePointMass(r, pins[i].rA, pins[i].rB, pointBend(r, A.w, B.w, pins[i].rA, pins[i].rB) - pins[i].bend, solved))
+            continue;
+        const Vec2 again = -solved;
+        std::get<RevoluteJoint>(joints[r.joint].params).linearImpulse += again;
+        applyImpulse(r, A, B, pins[i].rA, pins[i].rB, again);
+        storeSide(states, r.indexA, r.invMassA, A);
+        storeSide(states, r.indexB, r.invMassB, B);
     }
 }
 

@@ -42,13 +42,14 @@ struct ChainScratch {
     struct Pin {
         MotionSide a, b;
         Vec2 rA, rB, rhs;
+        Vec2 bend;  // the anchors' bend the solve pass aimed at (pointBend)
         Eigen::Matrix2d invD, lower;  // the elimination's D^-1 and L = K(i, i-1) D(i-1)^-1
     };
     std::vector<Pin> pins;
 };
 
-/// One pass over a chain's pins (rows in chain order), exactly: with the bias and softness (solve pass) or rigid
-/// (relax pass). Falls back to pin after pin where the chain's block is singular (pins at one point).
+/// One pass over a chain's pins (rows in chain order), exactly: with the bias and softness and the anchors' bend
+/// (solve pass, as solvePoint; the bend taken again pin by pin) or rigid (relax pass). Falls back to pin after pin where the chain's block is singular (pins at one point).
 void solveChain(const std::uint32_t* order, std::size_t count, const JointConstraint* rows,
                 std::vector<JointData>& joints, SolverBody* states, bool useBias, ChainScratch& scratch);
 

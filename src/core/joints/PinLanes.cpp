@@ -42,6 +42,16 @@ struct Arms {
     }
 }
 
+// JointShared.hpp's pointBend: B's arm's bend less A's, for bodies turning at wA and wB.
+[[gnu::always_inline]] inline void bend(const PinBlock& p, Wide wA, Wide wB, const Arms& r, Wide& x, Wide& y) {
+    const Wide cap = splat(kMaxBendTurn), h = splat(p.h), invH = splat(p.invH);
+    Wide ax, ay, bx, by;
+    bendRate(clamp(h * wA, -cap, cap), invH, r.rAx, r.rAy, ax, ay);
+    bendRate(clamp(h * wB, -cap, cap), invH, r.rBx, r.rBy, bx, by);
+    x = bx - ax;
+    y = by - ay;
+}
+
 // JointShared.hpp's solvePoint and solvePointMass.
 template <bool UseBias>
 [[gnu::always_inline]] inline void solveLoop(PinBlock* begin, PinBlock* end, SolverBody* states) {
@@ -51,26 +61,35 @@ template <bool UseBias>
         // The relative velocity of the points, B.v + w x rB - A.v - w x rA.
         const Wide cdotX = ((B.vx + -B.w * r.rBy) - A.vx) - -A.w * r.rAy;
         const Wide cdotY = ((B.vy + B.w * r.rBx) - A.vy) - A.w * r.rAx;
-        Wide biasX = splat(0.0), biasY = splat(0.0), massScale = splat(1.0), impulseScale = splat(0.0);
+        Wide rhsX = cdotX, rhsY = cdotY, bendX = splat(0.0), bendY = splat(0.0), impulseScale = splat(0.0);
         if constexpr (UseBias) {
             const Wide sepX = ((p->deltaX + (B.dpx - A.dpx)) + r.rBx) - r.rAx;
             const Wide sepY = ((p->deltaY + (B.dpy - A.dpy)) + r.rBy) - r.rAy;
-            biasX = p->biasRate * sepX;
-            biasY = p->biasRate * sepY;
-            massScale = p->massScale;
+            if (p->h > 0.0) bend(*p, A.w, B.w, r, bendX, bendY);
+            rhsX = p->massScale * (cdotX + p->biasRate * sepX) + bendX;
+            rhsY = p->massScale * (cdotY + p->biasRate * sepY) + bendY;
             impulseScale = p->impulseScale;
         }
-        const Wide rhsX = cdotX + biasX, rhsY = cdotY + biasY;
         const Wide m = p->invMassA + p->invMassB;
         const Wide k11 = (m + p->invIA * r.rAy * r.rAy) + p->invIB * r.rBy * r.rBy;
         const Wide k12 = -p->invIA * r.rAx * r.rAy - p->invIB * r.rBx * r.rBy;
         const Wide k22 = (m + p->invIA * r.rAx * r.rAx) + p->invIB * r.rBx * r.rBx;
         const Wide det = k11 * k22 - k12 * k12;
         const WideMask solvable = det > splat(0.0);  // else the scalar row does nothing (an unused lane)
-        const Wide safeDet = solvable ? det : splat(1.0);
-        const Wide solvedX = (k22 * rhsX - k12 * rhsY) / safeDet, solvedY = (k11 * rhsY - k12 * rhsX) / safeDet;
-        const Wide ix = -massScale * solvedX - impulseScale * p->impulseX;
-        const Wide iy = -massScale * solvedY - impulseScale * p->impulseY;
+        const Wide invDet = splat(1.0) / (solvable ? det : splat(1.0));
+        const Wide solvedX = (k22 * rhsX - k12 * rhsY) * invDet, solvedY = (k11 * rhsY - k12 * rhsX) * invDet;
+        Wide ix = -solvedX - impulseScale * p->impulseX;
+        Wide iy = -solvedY - impulseScale * p->impulseY;
+        if (UseBias && p->h > 0.0) {
+            const Wide wA = A.w - p->invIA * (r.rAx * iy - r.rAy * ix);
+            const Wide wB = B.w + p->invIB * (r.rBx * iy - r.rBy * ix);
+            Wide againX, againY;
+            bend(*p, wA, wB, r, againX, againY);
+            againX = againX - bendX;
+            againY = againY - bendY;
+            ix = ix - (k22 * againX - k12 * againY) * invDet;
+            iy = iy - (k11 * againY - k12 * againX) * invDet;
+        }
         const Wide Px = solvable ? ix : splat(0.0), Py = solvable ? iy : splat(0.0);
         p->impulseX = solvable ? p->impulseX + Px : p->impulseX;
         p->impulseY = solvable ? p->impulseY + Py : p->impulseY;
@@ -104,6 +123,8 @@ void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t
         const RevoluteJoint& pin = std::get<RevoluteJoint>(joints[row.joint].params);
         const int k = static_cast<int>(lane);
         packRowFields(block, row, lane);
+        block.h = row.h;
+        block.invH = row.invH;
         block.impulseX[k] = pin.linearImpulse.x();
         block.impulseY[k] = pin.linearImpulse.y();
         // As RevoluteJoint::warmStart sums it (from +0.0).

@@ -28,6 +28,7 @@ struct alignas(64) PinBlock {  // 64: the AVX builds assume their vectors aligne
     std::uint32_t joint[kLanes];
     unsigned writesA = 0, writesB = 0;  // a bit per lane whose side the row moves (Impulse.hpp's rowMoves)
     std::uint32_t count = 0;            // lanes in use
+    double h = 0.0, invH = 0.0;         // the substep (s) and its inverse, the same for every row of a step
 };
 
 /// Fills `block` from `count` (1..kLanes) prepared rows of revolute joints whose pointOnly() holds.
