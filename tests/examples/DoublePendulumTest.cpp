@@ -3,7 +3,7 @@
 // a positive exponent; a chaotic double pendulum released from 150 degrees has one of order 1/s (measured 0.92 at 40
 // Hz; 0.6 to 2.3 at 160 to 2560 Hz, a fit over one stretch of one orbit), so the check asks for 0.5 to 10 1/s: a fit
 // of noise, or of a branch that never left the first run, falls outside. At about 1/s the distance reaches the fit's
-// 1 mm after some 15 s, so the run lasts 30 s.
+// 1 mm after about 11 s (later on other orbits), so the run lasts 30 s.
 
 #include "Results.hpp"
 #include "RunProgram.hpp"

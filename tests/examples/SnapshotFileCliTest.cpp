@@ -65,7 +65,7 @@ void expectResumesExactly(const std::string& program, const std::string& name, i
 TEST(SnapshotFileCli, GasResumedFromItsSnapshotEndsAsOneRun) { expectResumesExactly(PHYSIM_GAS, "gas", 60, 60); }
 
 // The branch and the members double_pendulum writes (writeState) carry the Lyapunov fit across: it is made after
-// the resume (the distance reaches 1 mm at about 9 s) and must equal the straight run's.
+// the resume (the distance reaches 1 mm at about 11 s) and must equal the straight run's.
 TEST(SnapshotFileCli, DoublePendulumResumedFromItsSnapshotEndsAsOneRun) {
     expectResumesExactly(PHYSIM_DOUBLE_PENDULUM, "double_pendulum", 160, 480);
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Rows of one joint kind for the tests that hold the four-lane joint loops (joints/PinLanes, joints/WheelLanes) to
-// the scalar rows' bits: 24 moving bodies with random velocities and substep motion; blocks of 4, 3, 4, 1 and 2
-// rows, each block's rows on distinct bodies and later blocks reusing them; body 23 kinematic (no mass: read, never
-// written) and a static end (kNullIndex) in every fifth row. The kind's own terms come from the test.
+// the scalar rows' bits: 24 moving bodies with random velocities (every sixth spinning fast, past the pins' arc cap)
+// and substep motion; blocks of 4, 3, 4, 1 and 2 rows, each block's rows on distinct bodies and later blocks reusing
+// them; body 23 kinematic (no mass: read, never written) and a static end (kNullIndex) in every fifth row. The
+// kind's own terms come from the test.
 
 #include "JointData.hpp"
 #include "Joints.hpp"
@@ -38,7 +39,7 @@ JointLaneCase makeJointLaneCase(unsigned seed, double h, Kind&& kind) {
     for (int i = 1; i <= kBodies; ++i) {
         SolverBody& s = c.bodies[i];
         s.v = {u(), u()};
-        s.w = 3.0 * u();
+        s.w = (i % 6 == 0 ? 600.0 : 3.0) * u();  // every sixth spins fast: its turn a substep passes the arcs' cap
         s.dAngle = 0.1 * u();
         s.dp = {0.01 * u(), 0.01 * u()};
         s.dq = Rotation::fromAngle(s.dAngle);
@@ -62,6 +63,7 @@ JointLaneCase makeJointLaneCase(unsigned seed, double h, Kind&& kind) {
             row.anchorB = {0.5 * u(), 0.5 * u()};
             row.deltaCenter = {u(), u()};
             row.softness = rod;
+            row.h = h;  // the pin's arcs (solvePoint)
             row.invH = 1.0 / h;
             JointData joint;
             kind(row, joint, next, u);

@@ -20,7 +20,8 @@
 //             the substep's start, their potentials follow the move), friction's share of the velocity change
 //             beyond the distance slid, the continuous stage's put-backs, and the joints' rows: an ideal joint does
 //             no work, so what the method's joint rows do to the energy (a pendulum's swing of a few 1e-3 of its
-//             energy at 40 Hz, the soft joints' slow drain) is the method's, limits' and joint springs' included.
+//             energy at 40 Hz; WorldSettings::jointArcs keeps it from drifting) is the method's, limits' and joint
+//             springs' included.
 // Potential energy: gravity (-m g . x for every dynamic body that feels it), spring joints ((k/2) stretch^2) and
 // gravitation between attracting bodies (-G m1 m2 / sqrt(r^2 + softening^2), summed over all pairs: O(n^2) per
 // step while the ledger is on). Kinetic energy: every dynamic body's, translation and rotation.

@@ -152,7 +152,7 @@ void solveChain(const std::uint32_t* order, std::size_t count, const JointConstr
         p.rhs = relativeVelocity(p.a, p.b, p.rA, p.rB);
         if (useBias) {
             const Vec2 separation = r.deltaCenter + (p.b.dp - p.a.dp) + p.rB - p.rA;
-            p.bend = pointBend(r, p.a.w, p.b.w, p.rA, p.rB);
+            p.bend = r.h > 0.0 ? pointBend(r, p.a.w, p.b.w, p.rA, p.rB) : Vec2::Zero();
             p.rhs = r.softness.massScale * (p.rhs + r.softness.biasRate * separation) + p.bend;
         }
         Eigen::Matrix2d d = bodyShare(r.invMassA, r.invIA, p.rA, p.rA) + bodyShare(r.invMassB, r.invIB, p.rB, p.rB);
@@ -200,9 +200,9 @@ void solveChain(const std::uint32_t* order, std::size_t count, const JointConstr
     for (std::size_t i = 0; i < count; ++i) {
         const JointConstraint& r = rows[order[i]];
         MotionSide A = loadSide(states, r.indexA), B = loadSide(states, r.indexB);
+        const Vec2 change = pointBend(r, A.w, B.w, pins[i].rA, pins[i].rB) - pins[i].bend;
         Vec2 solved;
-        if (!solvePointMass(r, pins[i].rA, pins[i].rB, pointBend(r, A.w, B.w, pins[i].rA, pins[i].rB) - pins[i].bend, solved))
-            continue;
+        if (!solvePointMass(r, pins[i].rA, pins[i].rB, change, solved)) continue;
         const Vec2 again = -solved;
         std::get<RevoluteJoint>(joints[r.joint].params).linearImpulse += again;
         applyImpulse(r, A, B, pins[i].rA, pins[i].rB, again);

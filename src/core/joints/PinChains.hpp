@@ -49,7 +49,8 @@ struct ChainScratch {
 };
 
 /// One pass over a chain's pins (rows in chain order), exactly: with the bias and softness and the anchors' bend
-/// (solve pass, as solvePoint; the bend taken again pin by pin) or rigid (relax pass). Falls back to pin after pin where the chain's block is singular (pins at one point).
+/// (solve pass, as solvePoint; the bend's correction for the turns the block gave is then taken pin by pin) or
+/// rigid (relax pass). Falls back to pin after pin where the chain's block is singular (pins at one point).
 void solveChain(const std::uint32_t* order, std::size_t count, const JointConstraint* rows,
                 std::vector<JointData>& joints, SolverBody* states, bool useBias, ChainScratch& scratch);
 
