@@ -99,11 +99,10 @@ inline Vec2 pointBend(const JointConstraint& row, double wA, double wB, const Ve
 
 // The shared point of a revolute or weld joint. Solve pass: the separation pulled back softly (a spring of
 // jointHertz), and the anchors' bend over the substep taken rigidly, so that the row aims where the anchors will be:
-// semi-implicit Euler's straight steps otherwise part a turning arm's anchors by about h^2 w^2 r / 2 a substep, and
-// the soft pull-back damps what it pulls (a frictionless pendulum lost 2e-5 of its energy a second; now about 1e-10).
-// The bend is taken once more at the turns the impulse gives, which the pendulum's swing needs (taking the bend at
-// the turns before it, or to first order in their change, still drains 1e-6 or 2e-8 a second). Relax pass: rigid.
-// `accumulated`: the point's impulse, N s.
+// straight steps would part a turning arm's anchors by about h^2 w^2 r / 2 a substep, and the soft pull-back's
+// damping would drain a swing (docs/dynamics.md, "Joints keep a swing's energy"). The bend is taken once more at the
+// turns the impulse itself gives: the swing's energy depends on that too. Relax pass: rigid. `accumulated`: the
+// point's impulse, N s.
 inline void solvePoint(const JointConstraint& row, Vec2& accumulated, MotionSide& A, MotionSide& B, bool useBias) {
     const Vec2 rA = A.dq.apply(row.anchorA), rB = B.dq.apply(row.anchorB);
     const Vec2 Cdot = relativeVelocity(A, B, rA, rB);
