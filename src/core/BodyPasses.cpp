@@ -51,7 +51,7 @@ namespace {
 }
 
 // The velocity rule, out of line like integrateOne.
-[[gnu::noinline]] void integrateVelocityOne(SolverBody& s, RowsBase& base, WarmStartVelocity* warm,
+[[gnu::noinline]] void integrateVelocityOne(SolverBody& s, RowsBase* base, WarmStartVelocity* warm,
                                             const SolverBodySim& sim, double h, bool again) {
     if (sim.dynamic)
         integrateVelocity(s, base, warm, h * sim.acceleration, h * sim.angularAcceleration, sim.turns, again);
@@ -115,7 +115,7 @@ template <class Record>
         g.vx = g.vx + h * ax;
         g.vy = g.vy + h * ay;
         g.w = turns ? g.w + h * alpha : g.w;
-        scatterMotions(base, index, dynamic, g.vx, g.vy, g.w);
+        if (base) scatterMotions(base, index, dynamic, g.vx, g.vy, g.w);
         if (again) {
             g.vx = g.vx + rowsX;
             g.vy = g.vy + rowsY;
@@ -125,7 +125,8 @@ template <class Record>
         scatter(index, dynamic, g, states);
     }
     for (; k < count; ++k)
-        integrateVelocityOne(states[list[k]], base[list[k]], warm ? &warm[list[k]] : nullptr, sims[list[k]], h, again);
+        integrateVelocityOne(states[list[k]], base ? &base[list[k]] : nullptr, warm ? &warm[list[k]] : nullptr,
+                             sims[list[k]], h, again);
 }
 
 struct IntegratePositions {

@@ -14,9 +14,10 @@ namespace physim {
 void integratePositions(SolverBody* states, const std::uint32_t* list, std::size_t count, double h,
                         WideCode code = WideCode::Best);
 
-/// A substep's velocity integration (integrateVelocity: gravity and forces from sims, the rows' base and the warm
-/// start on the bodies with `again`, kept in warm if given) of the dynamic bodies among list[0 .. count), four at a
-/// time; a lane's bits are integrateVelocity's for its body, in every build. The others are left as they are.
+/// A substep's velocity integration (integrateVelocity: gravity and forces from sims, the rows' base unless null and
+/// the warm start on the bodies with `again`, kept in warm if given) of the dynamic bodies among list[0 .. count),
+/// four at a time; a lane's bits are integrateVelocity's for its body, in every build. The others are left as they
+/// are.
 void integrateVelocities(SolverBody* states, RowsBase* base, WarmStartVelocity* warm, const SolverBodySim* sims,
                          const std::uint32_t* list, std::size_t count, double h, bool again,
                          WideCode code = WideCode::Best);

@@ -445,6 +445,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
     const bool bodiesWarmStart = !graph_.groupRowsWarmStart[g] && !w.effects.perSubstep();
     RowsBase* const base = rowsBase_.data();
     if (bodiesWarmStart) contactPass.rowsBase = base;
+    // The bases are read by the warm start on the bodies and by bounces (recordWarmStart), which need contact rows.
+    RowsBase* const keepBase = bodiesWarmStart || blockCount > 0 ? base : nullptr;
     WarmStartVelocity* const warm = warmStarts_.data();
     contactPass.warmStarts = warm;
     // The substep's last pass over the contact rows adds their impulses to the step's totals (ContactBlockCold).
@@ -532,8 +534,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                         auto timer = stage(Stage::Integrate);
                         WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
                         w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
-                            integrateVelocities(st, base, keepWarm, sims_.data(), bodyList + begin, end - begin, h,
-                                                bodiesWarmStart && sub > 0);
+                            integrateVelocities(st, keepBase, keepWarm, sims_.data(), bodyList + begin, end - begin,
+                                                h, bodiesWarmStart && sub > 0);
                         });
                         break;
                     }

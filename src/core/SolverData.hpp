@@ -54,15 +54,16 @@ struct alignas(32) WarmStartVelocity {
 };
 
 /// A substep's velocity integration of a dynamic body: dv, and dw if it can turn. It keeps in `base` the velocity
-/// the rows start from. With `again` (the warm start on the bodies, from a step's second substep on) it adds again
-/// what the rows gave the body over the substep before, and keeps that in `warm` if given: M^-1 J^T lambda for their
-/// accumulated impulses lambda, since a row's J is fixed for the step, so what a warm start over the rows would add.
-inline void integrateVelocity(SolverBody& s, RowsBase& base, WarmStartVelocity* warm, const Vec2& dv, double dw,
+/// the rows start from (none where nothing reads it: null). With `again` (the warm start on the bodies, from a
+/// step's second substep on; base given) it adds again what the rows gave the body over the substep before, and
+/// keeps that in `warm` if given: M^-1 J^T lambda for their accumulated impulses lambda, since a row's J is fixed
+/// for the step, so what a warm start over the rows would add.
+inline void integrateVelocity(SolverBody& s, RowsBase* base, WarmStartVelocity* warm, const Vec2& dv, double dw,
                               bool turns, bool again) {
-    const RowsBase rows = again ? RowsBase{s.v - base.v, s.w - base.w} : RowsBase{};
+    const RowsBase rows = again ? RowsBase{s.v - base->v, s.w - base->w} : RowsBase{};
     s.v += dv;
     if (turns) s.w += dw;
-    base = {s.v, s.w};
+    if (base) *base = {s.v, s.w};
     if (again) {
         s.v += rows.v;
         s.w += rows.w;

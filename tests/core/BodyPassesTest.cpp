@@ -107,32 +107,39 @@ TEST(BodyPasses, VelocitiesIntegrateAsTheScalarRuleOnEveryBuildAndChunk) {
         std::vector<std::uint32_t> list(n);
         for (std::size_t i = 0; i < n; ++i) list[i] = static_cast<std::uint32_t>(i);
         std::shuffle(list.begin(), list.end(), rng);
+        // A group that reads no bases (keepBase false: no warm start on the bodies, no contact rows) keeps none.
         for (const bool again : {false, true})
-            for (const bool keepWarm : {false, true}) {
-                std::vector<SolverBody> expected = start;
-                std::vector<RowsBase> expectedBases = bases;
-                std::vector<WarmStartVelocity> expectedWarms = warms;
-                for (std::size_t i = 0; i < n; ++i)
-                    if (sims[i].dynamic)
-                        integrateVelocity(expected[i], expectedBases[i], keepWarm ? &expectedWarms[i] : nullptr,
-                                          h * sims[i].acceleration, h * sims[i].angularAcceleration, sims[i].turns,
-                                          again);
-                for (WideCode code : codes) {
-                    std::vector<SolverBody> got = start;
-                    std::vector<RowsBase> gotBases = bases;
-                    std::vector<WarmStartVelocity> gotWarms = warms;
-                    integrateVelocities(got.data(), gotBases.data(), keepWarm ? gotWarms.data() : nullptr,
-                                        sims.data(), list.data(), n, h, again, code);
-                    for (std::size_t i = 0; i < n; ++i) {
-                        EXPECT_TRUE(sameRecord(got[i], expected[i]))
-                            << "trial " << trial << " body " << i << " code " << static_cast<int>(code);
-                        EXPECT_TRUE(sameMotion(gotBases[i].v, gotBases[i].w, expectedBases[i].v, expectedBases[i].w))
-                            << "trial " << trial << " body " << i << " base";
-                        EXPECT_TRUE(sameMotion(gotWarms[i].v, gotWarms[i].w, expectedWarms[i].v, expectedWarms[i].w))
-                            << "trial " << trial << " body " << i << " warm start";
+            for (const bool keepWarm : {false, true})
+                for (const bool keepBase : {true, false}) {
+                    if (again && !keepBase) continue;
+                    std::vector<SolverBody> expected = start;
+                    std::vector<RowsBase> expectedBases = bases;
+                    std::vector<WarmStartVelocity> expectedWarms = warms;
+                    for (std::size_t i = 0; i < n; ++i)
+                        if (sims[i].dynamic)
+                            integrateVelocity(expected[i], keepBase ? &expectedBases[i] : nullptr,
+                                              keepWarm ? &expectedWarms[i] : nullptr,
+                                              h * sims[i].acceleration, h * sims[i].angularAcceleration, sims[i].turns,
+                                              again);
+                    for (WideCode code : codes) {
+                        std::vector<SolverBody> got = start;
+                        std::vector<RowsBase> gotBases = bases;
+                        std::vector<WarmStartVelocity> gotWarms = warms;
+                        integrateVelocities(got.data(), keepBase ? gotBases.data() : nullptr,
+                                            keepWarm ? gotWarms.data() : nullptr,
+                                            sims.data(), list.data(), n, h, again, code);
+                        for (std::size_t i = 0; i < n; ++i) {
+                            EXPECT_TRUE(sameRecord(got[i], expected[i]))
+                                << "trial " << trial << " body " << i << " code " << static_cast<int>(code);
+                            EXPECT_TRUE(sameMotion(gotBases[i].v, gotBases[i].w,
+                                                   expectedBases[i].v, expectedBases[i].w))
+                                << "trial " << trial << " body " << i << " base";
+                            EXPECT_TRUE(sameMotion(gotWarms[i].v, gotWarms[i].w,
+                                                   expectedWarms[i].v, expectedWarms[i].w))
+                                << "trial " << trial << " body " << i << " warm start";
+                        }
                     }
                 }
-            }
     }
     EXPECT_GT(dynamicTurning, 500);  // every kind of lane ran, beside the others
     EXPECT_GT(dynamicLocked, 200);

@@ -133,7 +133,7 @@ void run(std::vector<ContactBlock>& blocks, std::vector<ContactBlockCold>& cold,
         pass.substep = sub;
         // No forces: only the velocity the rows start from, and on the bodies the warm start.
         for (std::size_t i = 0; i < states.size(); ++i)
-            integrateVelocity(bodies[i], base[i], &warm[i], Vec2::Zero(), 0.0, false,
+            integrateVelocity(bodies[i], &base[i], &warm[i], Vec2::Zero(), 0.0, false,
                               warmStart == WarmStart::Bodies && sub > 0);
         if (warmStart == WarmStart::Rows || sub == 0) {
             warmStartContacts(blocks.data(), blocks.data() + blocks.size(), bodies, code);
