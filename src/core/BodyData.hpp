@@ -57,7 +57,7 @@ struct BodyData {
     bool alive = false;
     std::uint32_t generation = 0;
 
-    Aabb aabb;                      // the tight box of all its shapes at the current pose
+    Aabb aabb;                      // the tight box of all its shapes at the current pose, while it collides
 
     // Constraint graph: intrusive lists of the body's contacts and joints (edge key = index * 2 + side).
     std::int32_t contactHead = kNullIndex;

@@ -18,7 +18,7 @@ struct ShapeData {
     // Read for every pair by the broad and narrow phases.
     std::uint32_t body = 0;                // the owning body's slot
     std::int32_t proxy = kNullIndex;       // broad-phase proxy key; kNullIndex while its body collides with nothing
-    Aabb aabb;                             // the tight box at the body's pose, m
+    Aabb aabb;                             // the tight box at the body's pose while it collides, m
     Geometry geometry;                     // body frame, m
 
     double density = 0.0;                  // kg/m^2

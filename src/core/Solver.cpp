@@ -294,7 +294,7 @@ void Solver::finishBody(WorldImpl& w, std::size_t i) {
     b.xf.p = b.center - b.xf.q.apply(b.localCenter);
     b.force.setZero();
     b.torque = 0.0;
-    w.updateBoxes(b);
+    if (b.collides) w.updateBoxes(b);  // the others' boxes are computed where asked for (WorldImpl::bodyBounds)
     if (w.settings.enableSleep && b.canSleep() && sim.dynamic && b.v.norm() <= w.settings.sleepLinearTolerance &&
         std::abs(b.w) <= w.settings.sleepAngularTolerance)
         b.sleepTime += w.dt;

@@ -355,7 +355,7 @@ Vec2 World::velocityAt(BodyId id, const Vec2& worldPoint) const {
     return b.v + cross(b.w, worldPoint - b.center);
 }
 double World::angularVelocity(BodyId id) const { return at(id).w; }
-Aabb World::bounds(BodyId id) const { return at(id).aabb; }
+Aabb World::bounds(BodyId id) const { return impl_->bodyBounds(at(id)); }
 double World::mass(BodyId id) const { return at(id).mass; }
 double World::inverseMass(BodyId id) const { return at(id).invMass; }
 double World::inertia(BodyId id) const { return at(id).inertia; }

@@ -183,9 +183,13 @@ struct WorldImpl : WorldState {
             if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb, kAabbMargin));
         });
     }
-    /// The tight boxes of the body's shapes, and of the body, at its pose.
+    /// The tight boxes of the body's shapes, and of the body, at its pose. A step keeps them only for bodies that
+    /// collide (the broad phase, sensors and queries read them through proxies): bodyBounds and shapeBounds give
+    /// any body's at its pose now.
     void updateBoxes(BodyData& b);
-    /// Proxies for every shape of the body (it collides), or none; a static body's wake the sleepers they overlap.
+    Aabb bodyBounds(const BodyData& b) const;
+    Aabb shapeBounds(const ShapeData& shape) const;
+    /// Proxies for every shape of the body (it collides; its boxes brought up to date first), or none.
     void createProxies(std::uint32_t body);
     void destroyProxies(std::uint32_t body);
     /// The contacts of the body that involve the shape (by slot), for materials and destruction.

@@ -70,25 +70,35 @@ double coreRadius(const Geometry& g) {
 // --- WorldImpl helpers ---------------------------------------------------------------------------------
 
 void WorldImpl::updateBoxes(BodyData& b) {
-    if (b.shapeHead == kNullIndex) {
-        b.aabb = {b.xf.p, b.xf.p};
-        return;
-    }
+    forEachShape(b, [&](std::uint32_t, ShapeData& shape) { shape.aabb = computeAabb(shape.geometry, b.xf); });
+    b.aabb = bodyBounds(b);
+}
+
+Aabb WorldImpl::bodyBounds(const BodyData& b) const {
+    if (b.shapeHead == kNullIndex) return {b.xf.p, b.xf.p};
+    Aabb box;
     bool first = true;
-    forEachShape(b, [&](std::uint32_t, ShapeData& shape) {
-        shape.aabb = computeAabb(shape.geometry, b.xf);
+    forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
+        const Aabb part = b.collides ? shape.aabb : computeAabb(shape.geometry, b.xf);
         if (first) {
-            b.aabb = shape.aabb;
+            box = part;
             first = false;
         } else {
-            b.aabb.lower = b.aabb.lower.cwiseMin(shape.aabb.lower);
-            b.aabb.upper = b.aabb.upper.cwiseMax(shape.aabb.upper);
+            box.lower = box.lower.cwiseMin(part.lower);
+            box.upper = box.upper.cwiseMax(part.upper);
         }
     });
+    return box;
+}
+
+Aabb WorldImpl::shapeBounds(const ShapeData& shape) const {
+    const BodyData& b = bodies[shape.body];
+    return b.collides ? shape.aabb : computeAabb(shape.geometry, b.xf);
 }
 
 void WorldImpl::createProxies(std::uint32_t body) {
-    const BodyData& b = bodies[body];
+    BodyData& b = bodies[body];
+    updateBoxes(b);
     forEachShape(b, [&](std::uint32_t slot, ShapeData& shape) {
         if (shape.proxy == kNullIndex)
             shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb, kAabbMargin), slot, b.type == BodyType::Static);
@@ -366,7 +376,7 @@ BodyId World::body(ShapeId id) const {
 }
 
 const Geometry& World::geometry(ShapeId id) const { return impl_->shapes[shapeSlot(id)].geometry; }
-Aabb World::bounds(ShapeId id) const { return impl_->shapes[shapeSlot(id)].aabb; }
+Aabb World::bounds(ShapeId id) const { return impl_->shapeBounds(impl_->shapes[shapeSlot(id)]); }
 double World::density(ShapeId id) const { return impl_->shapes[shapeSlot(id)].density; }
 double World::restitution(ShapeId id) const { return impl_->shapes[shapeSlot(id)].restitution; }
 double World::staticFriction(ShapeId id) const { return impl_->shapes[shapeSlot(id)].staticFriction; }

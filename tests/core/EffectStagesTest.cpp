@@ -168,6 +168,40 @@ TEST(Collides, BodiesThatTouchNothingPassThroughAndRunNoContactStage) {
     EXPECT_FALSE(world.collides(a));
 }
 
+// A step keeps no boxes for bodies that touch nothing (no proxy reads them): bounds computes them where asked, and
+// a body set to collide again gets its proxies where it is now. Exact: the same computeAabb at the same pose.
+TEST(Collides, ABodyThatTouchesNothingHasItsBoundsWhereItIs) {
+    World world;
+    BodyDef d;
+    d.collides = false;
+    d.shape = makeBox(0.5, 0.25);
+    d.angularVelocity = 3.0;
+    const BodyId body = world.createBody(d);
+    ShapeDef part;
+    part.geometry = Circle{{1.0, 0.0}, 0.3};
+    world.createShape(body, part);
+    const Vec2 start = world.position(body);
+    for (int i = 0; i < 60; ++i) world.step(kDt);
+    ASSERT_LT(world.position(body).y(), start.y() - 1.0) << "it fell and turned";
+    const Transform xf = world.transform(body);
+    Aabb all;
+    bool first = true;
+    for (const ShapeId shape : world.shapes(body)) {
+        const Aabb box = computeAabb(world.geometry(shape), xf);
+        EXPECT_EQ(world.bounds(shape).lower, box.lower);
+        EXPECT_EQ(world.bounds(shape).upper, box.upper);
+        all = first ? box : Aabb{all.lower.cwiseMin(box.lower), all.upper.cwiseMax(box.upper)};
+        first = false;
+    }
+    EXPECT_EQ(world.bounds(body).lower, all.lower);
+    EXPECT_EQ(world.bounds(body).upper, all.upper);
+
+    world.setCollides(body, true);
+    const Vec2 here = world.position(body);
+    EXPECT_EQ(world.overlapAabb({here, here}).size(), 1u) << "its box's proxy is where it is now";
+    EXPECT_TRUE(world.overlapAabb({start, start}).empty()) << "not where it was";
+}
+
 TEST(EffectStages, RotationLockedEverywhereDoesNoRotationWork) {
     // Boxes stacked off-centre: their contacts have lever arms, so free boxes would topple. All locked: no contact row
     // carries angular terms, no box turns by a single bit, and the stack still rests on its contacts. Sleep off: the
