@@ -130,14 +130,23 @@ void Solver::solve(WorldImpl& w) {
     }
 
     // The rows' layout is the last step's while nothing that decides it has changed (ConstraintGraph::stale); a
-    // kept layout's joint rows are prepared again for this step, in their places.
+    // kept layout's joint rows are prepared again for this step, in their places, but for its pin blocks' rows:
+    // those blocks are made ready from the bodies (refreshPins).
     const bool byIsland = !w.effects.perSubstep();  // a per-substep effect may couple any bodies
     const bool keep = !graph_.stale && byIsland == graph_.laidOutByIsland;
+    // The ledger reads the wheels' motor impulses after each substep, in their joints: it keeps them out of lanes.
+    const bool wheelsInLanes = !w.ledger.enabled;
+    // A kept layout's pin blocks are made ready from the bodies alone (refreshPins), not from their rows: those
+    // rows are not prepared again. The ledger reads every row in its place.
+    refreshPins_ = keep && pinsPacked_ && wheelsInLanes == sortedWheelsInLanes_ && !w.ledger.enabled;
+    rodSoftness_ = rodSoftness;
     if (keep && !graph_.jointConstraints.empty()) {
         StageTimer timer(w.profile, Stage::Solve);
         std::vector<JointConstraint>& rows = graph_.jointConstraints;
-        w.executor.parallelFor(rows.size(), kJointPrepareGrain, [&](std::size_t begin, std::size_t end, int) {
-            for (std::size_t k = begin; k < end; ++k) {
+        const std::size_t count = refreshPins_ ? inPlaceRows_.size() : rows.size();
+        w.executor.parallelFor(count, kJointPrepareGrain, [&](std::size_t begin, std::size_t end, int) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const std::size_t k = refreshPins_ ? inPlaceRows_[i] : i;
                 const bool chained = rows[k].chained;
                 rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
                 rows[k].chained = chained;
@@ -169,13 +178,15 @@ void Solver::solve(WorldImpl& w) {
     graph_.laidOutByIsland = byIsland;
     w.profile.rowsLaidOut = !keep && (rowCount > 0 || !graph_.jointConstraints.empty());
     const std::size_t groups = graph_.groupBodyStart.size() - 1;
-    // The ledger reads the wheels' motor impulses after each substep, in their joints: it keeps them out of lanes.
-    const bool wheelsInLanes = !w.ledger.enabled;
-    if (graph_.jointConstraints.empty()) {
-        sortJointRows(wheelsInLanes);  // no rows: nothing to time (a step without rows runs no Solve stage)
-    } else {
-        StageTimer timer(w.profile, Stage::Solve);
-        sortJointRows(wheelsInLanes);
+    // A kept layout keeps its rows' places in blocks (a joint that joins or leaves lanes lays the rows out again:
+    // WorldImpl::changeJoint), unless the ledger came or went (it takes wheels out of lanes).
+    if (!keep || wheelsInLanes != sortedWheelsInLanes_) {
+        if (graph_.jointConstraints.empty()) {
+            sortJointRows(wheelsInLanes);  // no rows: nothing to time (a step without rows runs no Solve stage)
+        } else {
+            StageTimer timer(w.profile, Stage::Solve);
+            sortJointRows(wheelsInLanes);
+        }
     }
 
     contactPassSettings_.h = h;
@@ -200,6 +211,7 @@ void Solver::solve(WorldImpl& w) {
         });
     }
     w.profile.turningRows = turningRows.load();
+    pinsPacked_ = true;  // every group packed its pin blocks, or made them ready
     for (std::size_t g = 0; g < groups; ++g)
         if (graph_.spreads(g, w.executor.threads(), n) && graph_.halvesInOrder(g)) {
             w.profile.headBlocks += graph_.headBlocks[g * 2];
@@ -238,6 +250,9 @@ void Solver::sortJointRows(bool wheelsInLanes) {
     pinRows_.clear();
     wheelRows_.clear();
     otherJointRows_.clear();
+    inPlaceRows_.clear();
+    sortedWheelsInLanes_ = wheelsInLanes;
+    pinsPacked_ = false;
     for (std::size_t s = 0; s + 1 < segments.size(); ++s) {
         if (s % kSegments < kColours) {
             for (std::uint32_t r = segments[s]; r < segments[s + 1]; ++r) {
@@ -245,16 +260,20 @@ void Solver::sortJointRows(bool wheelsInLanes) {
                 if (row.lanes == RowLanes::Pin) pinRows_.push_back(&row);
                 else if (row.lanes == RowLanes::Wheel && wheelsInLanes) wheelRows_.push_back(&row);
                 else otherJointRows_.push_back(r);
+                if (row.lanes != RowLanes::Pin) inPlaceRows_.push_back(r);
             }
             // The colour's last blocks' free lanes.
             while (pinRows_.size() % kLanes != 0) pinRows_.push_back(nullptr);
             while (wheelRows_.size() % kLanes != 0) wheelRows_.push_back(nullptr);
+        } else {
+            for (std::uint32_t r = segments[s]; r < segments[s + 1]; ++r) inPlaceRows_.push_back(r);
         }
         pinBlockStart_[s + 1] = static_cast<std::uint32_t>(pinRows_.size() / kLanes);
         wheelBlockStart_[s + 1] = static_cast<std::uint32_t>(wheelRows_.size() / kLanes);
         otherJointStart_[s + 1] = static_cast<std::uint32_t>(otherJointRows_.size());
     }
     pinBlocks_.resize(pinRows_.size() / kLanes);  // each group packs its own (solveGroup)
+    pinFrames_.resize(pinBlocks_.size());
     wheelBlocks_.resize(wheelRows_.size() / kLanes);
 }
 
@@ -431,6 +450,19 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         while (count < kLanes && rows[k * kLanes + count] != nullptr) ++count;
         return count;
     };
+    // Pin blocks [b, e) for the step: from their rows, or made ready from the bodies where the layout is kept.
+    const double arcStep = w.settings.jointArcs ? h : 0.0;  // the rows' h (jointRow)
+    auto packPinBlocks = [&](std::size_t b, std::size_t e) {
+        for (std::size_t k = b; k < e; ++k) {
+            if (refreshPins_) {
+                refreshPins(pinBlocks_[k], pinFrames_[k], sims_.data(), w.bodies, arcStep, 1.0 / h, rodSoftness_);
+                continue;
+            }
+            const std::uint32_t count = laneRows(pinRows_, k);
+            packPins(pinBlocks_[k], pinRows_.data() + k * kLanes, count, w.joints);
+            framePins(pinFrames_[k], pinRows_.data() + k * kLanes, count, w.joints, w.bodies);
+        }
+    };
     ContactPass contactPass = contactPassSettings_;
     contactPass.pushes = pushVelocities_.data();
     contactPass.holdPushes = w.settings.relaxIterations > 0;  // the relax pass takes held push-out back
@@ -562,10 +594,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                      if (materials && sub > 0) warmStartRolling(blockAt(b), blockAt(e), materialAt(b), st);
                                  },
                                  [&](std::size_t b, std::size_t e) {
-                                     if (sub == 0)
-                                         for (std::size_t k = b; k < e; ++k)
-                                             packPins(pinBlocks_[k], pinRows_.data() + k * kLanes,
-                                                      laneRows(pinRows_, k), w.joints);
+                                     if (sub == 0) packPinBlocks(b, e);
                                      warmStartPins(pinBlocks_.data() + b, pinBlocks_.data() + e, st);
                                  },
                                  [&](std::size_t b, std::size_t e) {

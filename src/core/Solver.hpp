@@ -84,6 +84,12 @@ private:
     std::vector<std::uint32_t> wheelBlockStart_;
     std::vector<std::uint32_t> otherJointRows_;
     std::vector<std::uint32_t> otherJointStart_;
+    std::vector<PinFrame> pinFrames_;         // per pin block: what refreshPins needs beyond it
+    std::vector<std::uint32_t> inPlaceRows_;  // joint rows in no pin block: prepared in their places
+    bool sortedWheelsInLanes_ = false;        // sortJointRows' wheelsInLanes
+    bool pinsPacked_ = false;                 // the pin blocks hold the last step's rows (since sortJointRows)
+    bool refreshPins_ = false;                // this step makes them ready from the bodies (refreshPins)
+    Softness rodSoftness_;                    // this step's joint softness
     std::vector<ChainScratch> chainScratch_;  // per worker: solveChain's scratch
     std::vector<std::uint8_t> enlarged_;  // per awake body (solver order): proxy outgrown (bit 0), fast (bit 1),
                                           // proxy to move after the Continuous stage (bit 2)

@@ -25,6 +25,7 @@
 #include "Executor.hpp"
 #include "IslandData.hpp"
 #include "JointData.hpp"
+#include "Joints.hpp"
 #include "PairSet.hpp"
 #include "Sensors.hpp"
 #include "ShapeData.hpp"
@@ -236,6 +237,17 @@ struct WorldImpl : WorldState {
     void linkBodies(std::uint32_t a, std::uint32_t b);    // a constraint began between two dynamic bodies
     void unlinkBodies(std::uint32_t a, std::uint32_t b);  // a constraint between them ended
     void wakeBody(std::uint32_t slot);                     // wakes its island (or the body, if it has none)
+    /// A setter's change(kind) to joint `index`'s parameters, its bodies woken. A change that moves the joint's row
+    /// into or out of lanes (jointLanes) lays the rows out again: a kept layout keeps its rows' places in blocks.
+    template <class Kind, class Change>
+    void changeJoint(std::uint32_t index, Change&& change) {
+        JointData& j = joints[index];
+        wakeBody(j.a);
+        wakeBody(j.b);
+        const RowLanes before = jointLanes(j);
+        change(std::get<Kind>(j.params));
+        if (jointLanes(j) != before) solver.layoutChanged();
+    }
     void wakeIsland(std::uint32_t island);
     void addAwakeBody(std::uint32_t slot);
     void removeAwakeBody(std::uint32_t slot);

@@ -141,6 +141,7 @@ void WorldImpl::updateMass(std::uint32_t body) {
     b.inertia = trial.inertia;
     b.invInertia = trial.invInertia;
     b.localCenter = b.unitMass.centroid;
+    solver.layoutChanged();  // a kept layout's pin blocks hold arms from the centre of mass (refreshPins)
     b.center = b.xf.apply(b.localCenter);
     // The body's points keep their velocities: the new centre moves as the point it is moved.
     if (b.movable()) b.v += cross(b.w, b.center - oldCenter);

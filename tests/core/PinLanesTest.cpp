@@ -3,6 +3,7 @@
 // the four-lane loops, so that which rows go in lanes never changes a result.
 
 #include "joints/PinLanes.hpp"
+#include "physim/core/World.hpp"
 #include "support/JointLanes.hpp"
 #include "support/WideCodes.hpp"
 
@@ -46,6 +47,77 @@ TEST(RevolutePinLanes, EveryBuildGivesTheScalarRowsBits) {
             EXPECT_TRUE(sameBits(scalar, lanes)) << "seed " << seed << ", build " << static_cast<int>(code);
         }
     }
+}
+
+// A step that keeps the last one's layout makes its pin blocks ready from the bodies (refreshPins) instead of
+// preparing their rows again (jointRow) and packing them (packPins); a world with the energy ledger on does the
+// latter every step, and the ledger changes no bit. So the two worlds must agree bit for bit, step after step,
+// through what a kept layout must notice: a static anchor moved, a body's centre of mass moved by a new shape, a
+// motor switched on and off (the pin leaves the lanes and comes back), another time step.
+TEST(RevolutePinLanes, AKeptLayoutsBlocksAreMadeReadyAsPreparedRowsWouldBe) {
+    struct Grid {
+        std::vector<BodyId> bodies;
+        std::vector<JointId> pins;
+        BodyId anchor;
+    };
+    auto build = [](World& w) {
+        Grid g;
+        BodyDef fixed;
+        fixed.type = BodyType::Static;
+        fixed.shape = makeCircle(0.2);
+        fixed.collides = false;
+        g.anchor = w.createBody(fixed);
+        constexpr int kSide = 6;  // 6 x 6 discs, each pinned to the one above and the one on its left
+        for (int k = 0; k < kSide; ++k)
+            for (int i = 0; i < kSide; ++i) {
+                BodyDef d;
+                d.shape = makeCircle(0.3);
+                d.position = {1.0 * k + 0.5, -1.0 * i};
+                d.angularVelocity = 0.3 * (k - i);
+                d.collides = false;
+                g.bodies.push_back(w.createBody(d));
+            }
+        auto at = [&](int k, int i) { return g.bodies[static_cast<std::size_t>(k * kSide + i)]; };
+        auto pin = [&](BodyId a, BodyId b, Vec2 p) {
+            RevoluteJointDef def;
+            def.bodyA = a;
+            def.bodyB = b;
+            def.anchor = p;
+            g.pins.push_back(w.createRevoluteJoint(def));
+        };
+        pin(g.anchor, at(0, 0), {0.0, 0.0});
+        for (int k = 0; k < kSide; ++k)
+            for (int i = 0; i < kSide; ++i) {
+                if (i > 0) pin(at(k, i - 1), at(k, i), {1.0 * k + 0.5, -1.0 * i + 0.5});
+                if (k > 0) pin(at(k - 1, i), at(k, i), {1.0 * k, -1.0 * i});
+            }
+        return g;
+    };
+    WorldSettings settings;
+    settings.enableSleep = false;
+    World on(settings), off(settings);
+    const Grid a = build(on), b = build(off);
+    on.setEnergyLedger(true);
+    int kept = 0;
+    for (int s = 0; s < 240; ++s) {
+        for (auto [world, grid] : {std::pair<World*, const Grid*>{&on, &a}, {&off, &b}}) {
+            if (s == 60) world->setTransform(grid->anchor, {0.1, 0.05}, 0.2);
+            if (s == 100) {
+                ShapeDef part;
+                part.geometry = Circle{{0.4, 0.0}, 0.2};
+                world->createShape(grid->bodies[7], part);
+            }
+            if (s == 140) world->setJointMotor(grid->pins[5], true, 1.0, 5.0);
+            if (s == 160) world->setJointMotor(grid->pins[5], false, 0.0, 0.0);
+            world->step(s < 200 ? 1.0 / 60.0 : 1.0 / 90.0);
+        }
+        if (!off.profile().rowsLaidOut) ++kept;
+        ASSERT_EQ(on.stateHash(), off.stateHash()) << "step " << s;
+        if (s == 150) {
+            EXPECT_NE(off.jointMotorTorque(b.pins[5]), 0.0) << "the motor acts: its row left the lanes";
+        }
+    }
+    EXPECT_GT(kept, 200) << "most steps kept their layout, and made their pin blocks ready from the bodies";
 }
 
 }  // namespace

@@ -50,8 +50,9 @@ struct StepProfile {
     std::size_t turningRows = 0;
     /// The step coloured its constraint rows and sorted them into groups anew. A step whose awake bodies and
     /// contacts are those of the step before (the same ones, in the same order, each contact with points or without
-    /// as before), with no joint created or destroyed and no type, detection or settings change, keeps that step's
-    /// layout instead: the same layout, so the same results, without the work.
+    /// as before), with no joint created or destroyed and no type, detection or settings change (nor a joint setter
+    /// moving a row into or out of lanes, nor a shape moving a body's centre of mass), keeps that step's layout
+    /// instead: the same layout, so the same results, without the work.
     bool rowsLaidOut = false;
     /// On two threads, each colour of a large group's rows is cut in halves, one per thread (docs/architecture.md,
     /// "Two threads through the colours in order"): `halvedBlocks` counts the blocks of rows so cut, `headBlocks`

@@ -132,6 +132,73 @@ void packPins(PinBlock& block, const JointConstraint* const* rows, std::uint32_t
     }
 }
 
+void framePins(PinFrame& frame, const JointConstraint* const* rows, std::uint32_t count,
+               const std::vector<JointData>& joints, const std::vector<BodyData>& bodies) {
+    for (std::uint32_t lane = 0; lane < count; ++lane) {
+        const JointData& joint = joints[rows[lane]->joint];
+        const int k = static_cast<int>(lane);
+        // As prepareJoint's arms before they turn.
+        const Vec2 armA = joint.localA - bodies[joint.a].localCenter, armB = joint.localB - bodies[joint.b].localCenter;
+        frame.armAx[k] = armA.x();
+        frame.armAy[k] = armA.y();
+        frame.armBx[k] = armB.x();
+        frame.armBy[k] = armB.y();
+        frame.bodyA[k] = joint.a;
+        frame.bodyB[k] = joint.b;
+    }
+}
+
+namespace {
+
+// A side's centre, rotation and masses at the step's start, as prepareJoint takes them (rowSide).
+struct SideNow {
+    Vec2 center;
+    Rotation q;
+    double invMass, invI;
+};
+SideNow sideNow(std::int32_t index, std::uint32_t body, const SolverBodySim* sims,
+                const std::vector<BodyData>& bodies) {
+    if (index != kNullIndex) {  // awake: its step record holds rowSide's masses (dynamic ones, 0 otherwise)
+        const SolverBodySim& s = sims[index];
+        return {s.center0, s.q0, s.invMass, s.invInertia};
+    }
+    const BodyData& b = bodies[body];
+    const RowSide side = rowSide(b);
+    return {b.center, b.xf.q, side.invMass, side.invI};
+}
+
+}  // namespace
+
+void refreshPins(PinBlock& block, const PinFrame& frame, const SolverBodySim* sims,
+                 const std::vector<BodyData>& bodies, double arcStep, double invH, const Softness& softness) {
+    block.writesA = block.writesB = 0;
+    for (std::uint32_t lane = 0; lane < block.count; ++lane) {
+        const int k = static_cast<int>(lane);
+        const SideNow A = sideNow(block.indexA[k], frame.bodyA[k], sims, bodies);
+        const SideNow B = sideNow(block.indexB[k], frame.bodyB[k], sims, bodies);
+        const Vec2 anchorA = A.q.apply({frame.armAx[k], frame.armAy[k]});
+        const Vec2 anchorB = B.q.apply({frame.armBx[k], frame.armBy[k]});
+        const Vec2 delta = B.center - A.center;
+        block.anchorAx[k] = anchorA.x();
+        block.anchorAy[k] = anchorA.y();
+        block.anchorBx[k] = anchorB.x();
+        block.anchorBy[k] = anchorB.y();
+        block.deltaX[k] = delta.x();
+        block.deltaY[k] = delta.y();
+        block.invMassA[k] = A.invMass;
+        block.invMassB[k] = B.invMass;
+        block.invIA[k] = A.invI;
+        block.invIB[k] = B.invI;
+        block.biasRate[k] = softness.biasRate;
+        block.massScale[k] = softness.massScale;
+        block.impulseScale[k] = softness.impulseScale;
+        if (rowMoves(block.indexA[k], A.invMass)) block.writesA |= 1u << lane;
+        if (rowMoves(block.indexB[k], B.invMass)) block.writesB |= 1u << lane;
+    }
+    block.h = arcStep;
+    block.invH = invH;
+}
+
 void warmStartPins(const PinBlock* begin, const PinBlock* end, SolverBody* states, WideCode code) {
     runWide<WarmStartPins>(code, begin, end, states);
 }

@@ -31,14 +31,13 @@ void requireMotor(double speed, double maxTorque) {
     requireNonNegative("revolute joint maxMotorTorque", maxTorque);
 }
 
-// The revolute joint a setter changes (std::invalid_argument for another kind), its bodies woken.
-RevoluteJoint& revoluteToChange(WorldImpl& w, const JointData& j, JointId id, const char* call) {
+// A setter's change to a revolute joint (std::invalid_argument for another kind): WorldImpl::changeJoint.
+template <class Change>
+void changeRevolute(WorldImpl& w, const JointData& j, JointId id, const char* call, Change&& change) {
     w.requireNotStepping(call);
     if (j.type() != JointType::Revolute)
         throw std::invalid_argument(std::string("physim: ") + call + " needs a revolute joint");
-    w.wakeBody(j.a);
-    w.wakeBody(j.b);
-    return std::get<RevoluteJoint>(w.joints[id.index].params);
+    w.changeJoint<RevoluteJoint>(id.index, change);
 }
 
 // A one-sided angle row: C = sign (jointAngle - limit) must stay >= 0. Apart, it is speculative (stops the bodies at
@@ -68,17 +67,20 @@ JointId World::createRevoluteJoint(const RevoluteJointDef& def) {
 
 void World::setJointMotor(JointId id, bool enable, double speed, double maxTorque) {
     requireMotor(speed, maxTorque);
-    revoluteToChange(*impl_, joint(id), id, "setJointMotor").setMotor(enable, speed, maxTorque);
+    changeRevolute(*impl_, joint(id), id, "setJointMotor",
+                   [&](RevoluteJoint& j) { j.setMotor(enable, speed, maxTorque); });
 }
 
 void World::setJointLimits(JointId id, bool enable, double lower, double upper) {
     requireLimits(lower, upper);
-    revoluteToChange(*impl_, joint(id), id, "setJointLimits").setLimits(enable, lower, upper);
+    changeRevolute(*impl_, joint(id), id, "setJointLimits",
+                   [&](RevoluteJoint& j) { j.setLimits(enable, lower, upper); });
 }
 
 void World::setJointSpring(JointId id, bool enable, double hertz, double dampingRatio) {
     requireSpring(hertz, dampingRatio);
-    revoluteToChange(*impl_, joint(id), id, "setJointSpring").setSpring(enable, hertz, dampingRatio);
+    changeRevolute(*impl_, joint(id), id, "setJointSpring",
+                   [&](RevoluteJoint& j) { j.setSpring(enable, hertz, dampingRatio); });
 }
 
 void RevoluteJoint::setSpring(bool enable, double hertz, double dampingRatio) {
