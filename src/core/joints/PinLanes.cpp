@@ -174,26 +174,22 @@ void refreshPins(PinBlock& block, const PinFrame& frame, const SolverBodySim* si
     block.writesA = block.writesB = 0;
     for (std::uint32_t lane = 0; lane < block.count; ++lane) {
         const int k = static_cast<int>(lane);
-        const SideNow A = sideNow(block.indexA[k], frame.bodyA[k], sims, bodies);
-        const SideNow B = sideNow(block.indexB[k], frame.bodyB[k], sims, bodies);
-        const Vec2 anchorA = A.q.apply({frame.armAx[k], frame.armAy[k]});
-        const Vec2 anchorB = B.q.apply({frame.armBx[k], frame.armBy[k]});
-        const Vec2 delta = B.center - A.center;
-        block.anchorAx[k] = anchorA.x();
-        block.anchorAy[k] = anchorA.y();
-        block.anchorBx[k] = anchorB.x();
-        block.anchorBy[k] = anchorB.y();
-        block.deltaX[k] = delta.x();
-        block.deltaY[k] = delta.y();
-        block.invMassA[k] = A.invMass;
-        block.invMassB[k] = B.invMass;
-        block.invIA[k] = A.invI;
-        block.invIB[k] = B.invI;
-        block.biasRate[k] = softness.biasRate;
-        block.massScale[k] = softness.massScale;
-        block.impulseScale[k] = softness.impulseScale;
-        if (rowMoves(block.indexA[k], A.invMass)) block.writesA |= 1u << lane;
-        if (rowMoves(block.indexB[k], B.invMass)) block.writesB |= 1u << lane;
+        // The fields prepareJoint gives a pin's row, into the lane as packPins puts them.
+        JointConstraint row;
+        row.joint = block.joint[k];
+        row.indexA = block.indexA[k];
+        row.indexB = block.indexB[k];
+        const SideNow A = sideNow(row.indexA, frame.bodyA[k], sims, bodies);
+        const SideNow B = sideNow(row.indexB, frame.bodyB[k], sims, bodies);
+        row.anchorA = A.q.apply({frame.armAx[k], frame.armAy[k]});
+        row.anchorB = B.q.apply({frame.armBx[k], frame.armBy[k]});
+        row.deltaCenter = B.center - A.center;
+        row.invMassA = A.invMass;
+        row.invMassB = B.invMass;
+        row.invIA = A.invI;
+        row.invIB = B.invI;
+        row.softness = softness;
+        packRowFields(block, row, lane);
     }
     block.h = arcStep;
     block.invH = invH;
