@@ -29,7 +29,7 @@ JointConstraint jointRow(const WorldImpl& w, std::uint32_t joint, double h, cons
     JointConstraint row;
     row.joint = joint;
     prepareJoint(row, w.joints[joint], w.bodies, h, rodSoftness);
-    if (!w.settings.jointArcs) row.h = 0.0;  // no bend (solvePoint)
+    row.h = arcStep(w.settings, row.h);
     return row;
 }
 

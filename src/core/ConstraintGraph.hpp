@@ -13,6 +13,8 @@
 #include "SolverData.hpp"
 #include "joints/PinChains.hpp"
 
+#include "physim/core/WorldSettings.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,6 +32,9 @@ inline std::size_t middleBlock(std::size_t first, std::size_t end) { return firs
 
 /// Joint `joint`'s row for this step (substep h).
 JointConstraint jointRow(const WorldImpl& w, std::uint32_t joint, double h, const Softness& rodSoftness);
+/// The substep a pin's or weld's row bends its aim over (solvePoint): h, or 0 (no bend) without
+/// WorldSettings::jointArcs.
+inline double arcStep(const WorldSettings& settings, double h) { return settings.jointArcs ? h : 0.0; }
 
 struct ConstraintGraph {
     /// Colours the rows and sorts them into groups and blocks; returns the rows (jointConstraints: the joint rows).

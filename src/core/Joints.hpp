@@ -117,7 +117,7 @@ inline void prepareJoint(JointConstraint& row, const JointData& joint, const std
     row.indexB = sideB.index;
     row.invMassB = sideB.invMass;
     row.invIB = sideB.invI;
-    row.anchorB = B.xf.q.apply(joint.localB - B.localCenter);
+    row.anchorB = B.xf.q.apply(armFromCenter(joint.localB, B));
     const BodyData& A = bodies[joint.a];
     if (joint.toWorld) {
         row.indexA = kNullIndex;
@@ -129,7 +129,7 @@ inline void prepareJoint(JointConstraint& row, const JointData& joint, const std
         row.indexA = sideA.index;
         row.invMassA = sideA.invMass;
         row.invIA = sideA.invI;
-        row.anchorA = A.xf.q.apply(joint.localA - A.localCenter);
+        row.anchorA = A.xf.q.apply(armFromCenter(joint.localA, A));
         row.deltaCenter = B.center - A.center;
     }
     detail::visitRow(joint.params, [&](const auto& kind) { kind.prepare(row, A, B, h, rodSoftness); });

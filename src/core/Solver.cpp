@@ -313,7 +313,7 @@ void Solver::finishBody(WorldImpl& w, std::size_t i) {
     b.xf.p = b.center - b.xf.q.apply(b.localCenter);
     b.force.setZero();
     b.torque = 0.0;
-    if (b.collides) w.updateBoxes(b);  // the others' boxes are computed where asked for (WorldImpl::bodyBounds)
+    w.updateBoxes(b);
     if (w.settings.enableSleep && b.canSleep() && sim.dynamic && b.v.norm() <= w.settings.sleepLinearTolerance &&
         std::abs(b.w) <= w.settings.sleepAngularTolerance)
         b.sleepTime += w.dt;
@@ -451,11 +451,11 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         return count;
     };
     // Pin blocks [b, e) for the step: from their rows, or made ready from the bodies where the layout is kept.
-    const double arcStep = w.settings.jointArcs ? h : 0.0;  // the rows' h (jointRow)
+    const double pinArcStep = arcStep(w.settings, h);  // the rows' h (jointRow)
     auto packPinBlocks = [&](std::size_t b, std::size_t e) {
         for (std::size_t k = b; k < e; ++k) {
             if (refreshPins_) {
-                refreshPins(pinBlocks_[k], pinFrames_[k], sims_.data(), w.bodies, arcStep, 1.0 / h, rodSoftness_);
+                refreshPins(pinBlocks_[k], pinFrames_[k], sims_.data(), w.bodies, pinArcStep, 1.0 / h, rodSoftness_);
                 continue;
             }
             const std::uint32_t count = laneRows(pinRows_, k);

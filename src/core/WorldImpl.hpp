@@ -237,11 +237,15 @@ struct WorldImpl : WorldState {
     void linkBodies(std::uint32_t a, std::uint32_t b);    // a constraint began between two dynamic bodies
     void unlinkBodies(std::uint32_t a, std::uint32_t b);  // a constraint between them ended
     void wakeBody(std::uint32_t slot);                     // wakes its island (or the body, if it has none)
-    /// A setter's change(kind) to joint `index`'s parameters, its bodies woken. A change that moves the joint's row
-    /// into or out of lanes (jointLanes) lays the rows out again: a kept layout keeps its rows' places in blocks.
+    /// A setter's change(kind) to joint `id` (its record `joint`, checked live), which must be a Kind (else
+    /// std::invalid_argument naming `call`), its bodies woken. A change that moves the joint's row into or out of
+    /// lanes (jointLanes) lays the rows out again: a kept layout keeps its rows' places in blocks.
     template <class Kind, class Change>
-    void changeJoint(std::uint32_t index, Change&& change) {
-        JointData& j = joints[index];
+    void changeJoint(const JointData& joint, JointId id, const char* call, Change&& change) {
+        requireNotStepping(call);
+        if (!std::holds_alternative<Kind>(joint.params))
+            throw std::invalid_argument(std::string("physim: ") + call + " needs a " + Kind::kName + " joint");
+        JointData& j = joints[id.index];
         wakeBody(j.a);
         wakeBody(j.b);
         const RowLanes before = jointLanes(j);

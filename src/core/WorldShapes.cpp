@@ -70,24 +70,16 @@ double coreRadius(const Geometry& g) {
 // --- WorldImpl helpers ---------------------------------------------------------------------------------
 
 void WorldImpl::updateBoxes(BodyData& b) {
+    if (!b.collides) return;  // bodyBounds and shapeBounds compute its boxes where asked
     forEachShape(b, [&](std::uint32_t, ShapeData& shape) { shape.aabb = computeAabb(shape.geometry, b.xf); });
     b.aabb = bodyBounds(b);
 }
 
 Aabb WorldImpl::bodyBounds(const BodyData& b) const {
     if (b.shapeHead == kNullIndex) return {b.xf.p, b.xf.p};
-    Aabb box;
-    bool first = true;
-    forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-        const Aabb part = b.collides ? shape.aabb : computeAabb(shape.geometry, b.xf);
-        if (first) {
-            box = part;
-            first = false;
-        } else {
-            box.lower = box.lower.cwiseMin(part.lower);
-            box.upper = box.upper.cwiseMax(part.upper);
-        }
-    });
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Aabb box{{kInf, kInf}, {-kInf, -kInf}};  // merges into the first shape's box exactly
+    forEachShape(b, [&](std::uint32_t, const ShapeData& shape) { box = Aabb::merged(box, shapeBounds(shape)); });
     return box;
 }
 

@@ -184,14 +184,13 @@ TEST(Collides, ABodyThatTouchesNothingHasItsBoundsWhereItIs) {
     for (int i = 0; i < 60; ++i) world.step(kDt);
     ASSERT_LT(world.position(body).y(), start.y() - 1.0) << "it fell and turned";
     const Transform xf = world.transform(body);
-    Aabb all;
-    bool first = true;
-    for (const ShapeId shape : world.shapes(body)) {
+    const std::vector<ShapeId> shapes = world.shapes(body);
+    Aabb all = computeAabb(world.geometry(shapes.front()), xf);
+    for (const ShapeId shape : shapes) {
         const Aabb box = computeAabb(world.geometry(shape), xf);
         EXPECT_EQ(world.bounds(shape).lower, box.lower);
         EXPECT_EQ(world.bounds(shape).upper, box.upper);
-        all = first ? box : Aabb{all.lower.cwiseMin(box.lower), all.upper.cwiseMax(box.upper)};
-        first = false;
+        all = Aabb::merged(all, box);
     }
     EXPECT_EQ(world.bounds(body).lower, all.lower);
     EXPECT_EQ(world.bounds(body).upper, all.upper);

@@ -72,6 +72,10 @@ inline bool solvePointMass(const JointConstraint& r, const Vec2& rA, const Vec2&
     return true;
 }
 
+/// A row's lever arm before its body turns: an anchor in the body's frame (from its origin), from its centre of
+/// mass, m.
+inline Vec2 armFromCenter(const Vec2& local, const BodyData& body) { return local - body.localCenter; }
+
 /// The most a body's turn over a substep counts for in an arm's bend (rad): past it the series below is no longer
 /// the arc's, and a turn that large makes the prediction a guess anyway.
 constexpr double kMaxBendTurn = 0.5;

@@ -137,8 +137,8 @@ void framePins(PinFrame& frame, const JointConstraint* const* rows, std::uint32_
     for (std::uint32_t lane = 0; lane < count; ++lane) {
         const JointData& joint = joints[rows[lane]->joint];
         const int k = static_cast<int>(lane);
-        // As prepareJoint's arms before they turn.
-        const Vec2 armA = joint.localA - bodies[joint.a].localCenter, armB = joint.localB - bodies[joint.b].localCenter;
+        const Vec2 armA = armFromCenter(joint.localA, bodies[joint.a]);
+        const Vec2 armB = armFromCenter(joint.localB, bodies[joint.b]);
         frame.armAx[k] = armA.x();
         frame.armAy[k] = armA.y();
         frame.armBx[k] = armB.x();

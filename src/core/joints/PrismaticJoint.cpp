@@ -24,16 +24,6 @@ void requireSpring(double hertz, double dampingRatio, double target) {
     requireFinite("prismatic joint targetTranslation", target);
 }
 
-// The prismatic joint a setter changes (std::invalid_argument for another kind), its bodies woken.
-PrismaticJoint& prismaticToChange(WorldImpl& w, const JointData& j, JointId id, const char* call) {
-    w.requireNotStepping(call);
-    if (j.type() != JointType::Prismatic)
-        throw std::invalid_argument(std::string("physim: ") + call + " needs a prismatic joint");
-    w.wakeBody(j.a);
-    w.wakeBody(j.b);
-    return std::get<PrismaticJoint>(w.joints[id.index].params);
-}
-
 }  // namespace
 
 JointId World::createPrismaticJoint(const PrismaticJointDef& def) {
@@ -42,17 +32,20 @@ JointId World::createPrismaticJoint(const PrismaticJointDef& def) {
 
 void World::setPrismaticLimits(JointId id, bool enable, double lower, double upper) {
     requireTranslationLimits("prismatic", lower, upper);
-    prismaticToChange(*impl_, joint(id), id, "setPrismaticLimits").setLimits(enable, lower, upper);
+    impl_->changeJoint<PrismaticJoint>(joint(id), id, "setPrismaticLimits",
+                                          [&](PrismaticJoint& j) { j.setLimits(enable, lower, upper); });
 }
 
 void World::setPrismaticMotor(JointId id, bool enable, double speed, double maxForce) {
     requireMotor(speed, maxForce);
-    prismaticToChange(*impl_, joint(id), id, "setPrismaticMotor").setMotor(enable, speed, maxForce);
+    impl_->changeJoint<PrismaticJoint>(joint(id), id, "setPrismaticMotor",
+                                          [&](PrismaticJoint& j) { j.setMotor(enable, speed, maxForce); });
 }
 
 void World::setPrismaticSpring(JointId id, bool enable, double hertz, double dampingRatio, double target) {
     requireSpring(hertz, dampingRatio, target);
-    prismaticToChange(*impl_, joint(id), id, "setPrismaticSpring").setSpring(enable, hertz, dampingRatio, target);
+    impl_->changeJoint<PrismaticJoint>(joint(id), id, "setPrismaticSpring",
+                                          [&](PrismaticJoint& j) { j.setSpring(enable, hertz, dampingRatio, target); });
 }
 
 void PrismaticJoint::setLimits(bool enable, double lower, double upper) {

@@ -31,15 +31,6 @@ void requireMotor(double speed, double maxTorque) {
     requireNonNegative("revolute joint maxMotorTorque", maxTorque);
 }
 
-// A setter's change to a revolute joint (std::invalid_argument for another kind): WorldImpl::changeJoint.
-template <class Change>
-void changeRevolute(WorldImpl& w, const JointData& j, JointId id, const char* call, Change&& change) {
-    w.requireNotStepping(call);
-    if (j.type() != JointType::Revolute)
-        throw std::invalid_argument(std::string("physim: ") + call + " needs a revolute joint");
-    w.changeJoint<RevoluteJoint>(id.index, change);
-}
-
 // A one-sided angle row: C = sign (jointAngle - limit) must stay >= 0. Apart, it is speculative (stops the bodies at
 // the limit within the substep); past it, pushed back softly with the bias, rigidly in the relax pass.
 void solveLimit(const JointConstraint& row, double C, double sign, double& accumulated, MotionSide& A,
@@ -67,20 +58,20 @@ JointId World::createRevoluteJoint(const RevoluteJointDef& def) {
 
 void World::setJointMotor(JointId id, bool enable, double speed, double maxTorque) {
     requireMotor(speed, maxTorque);
-    changeRevolute(*impl_, joint(id), id, "setJointMotor",
-                   [&](RevoluteJoint& j) { j.setMotor(enable, speed, maxTorque); });
+    impl_->changeJoint<RevoluteJoint>(joint(id), id, "setJointMotor",
+                                      [&](RevoluteJoint& j) { j.setMotor(enable, speed, maxTorque); });
 }
 
 void World::setJointLimits(JointId id, bool enable, double lower, double upper) {
     requireLimits(lower, upper);
-    changeRevolute(*impl_, joint(id), id, "setJointLimits",
-                   [&](RevoluteJoint& j) { j.setLimits(enable, lower, upper); });
+    impl_->changeJoint<RevoluteJoint>(joint(id), id, "setJointLimits",
+                                      [&](RevoluteJoint& j) { j.setLimits(enable, lower, upper); });
 }
 
 void World::setJointSpring(JointId id, bool enable, double hertz, double dampingRatio) {
     requireSpring(hertz, dampingRatio);
-    changeRevolute(*impl_, joint(id), id, "setJointSpring",
-                   [&](RevoluteJoint& j) { j.setSpring(enable, hertz, dampingRatio); });
+    impl_->changeJoint<RevoluteJoint>(joint(id), id, "setJointSpring",
+                                      [&](RevoluteJoint& j) { j.setSpring(enable, hertz, dampingRatio); });
 }
 
 void RevoluteJoint::setSpring(bool enable, double hertz, double dampingRatio) {

@@ -23,15 +23,6 @@ void requireMotor(double speed, double maxTorque) {
     requireNonNegative("wheel joint maxMotorTorque", maxTorque);
 }
 
-// A setter's change to a wheel joint (std::invalid_argument for another kind): WorldImpl::changeJoint.
-template <class Change>
-void changeWheel(WorldImpl& w, const JointData& j, JointId id, const char* call, Change&& change) {
-    w.requireNotStepping(call);
-    if (j.type() != JointType::Wheel)
-        throw std::invalid_argument(std::string("physim: ") + call + " needs a wheel joint");
-    w.changeJoint<WheelJoint>(id.index, change);
-}
-
 }  // namespace
 
 JointId World::createWheelJoint(const WheelJointDef& def) {
@@ -40,20 +31,20 @@ JointId World::createWheelJoint(const WheelJointDef& def) {
 
 void World::setWheelSpring(JointId id, bool enable, double hertz, double dampingRatio) {
     requireSpring(hertz, dampingRatio);
-    changeWheel(*impl_, joint(id), id, "setWheelSpring",
-                [&](WheelJoint& j) { j.setSpring(enable, hertz, dampingRatio); });
+    impl_->changeJoint<WheelJoint>(joint(id), id, "setWheelSpring",
+                                   [&](WheelJoint& j) { j.setSpring(enable, hertz, dampingRatio); });
 }
 
 void World::setWheelLimits(JointId id, bool enable, double lower, double upper) {
     requireTranslationLimits("wheel", lower, upper);
-    changeWheel(*impl_, joint(id), id, "setWheelLimits",
-                [&](WheelJoint& j) { j.setLimits(enable, lower, upper); });
+    impl_->changeJoint<WheelJoint>(joint(id), id, "setWheelLimits",
+                                   [&](WheelJoint& j) { j.setLimits(enable, lower, upper); });
 }
 
 void World::setWheelMotor(JointId id, bool enable, double speed, double maxTorque) {
     requireMotor(speed, maxTorque);
-    changeWheel(*impl_, joint(id), id, "setWheelMotor",
-                [&](WheelJoint& j) { j.setMotor(enable, speed, maxTorque); });
+    impl_->changeJoint<WheelJoint>(joint(id), id, "setWheelMotor",
+                                   [&](WheelJoint& j) { j.setMotor(enable, speed, maxTorque); });
 }
 
 void WheelJoint::setSpring(bool enable, double springHertz, double ratio) {
