@@ -50,6 +50,11 @@ struct RunnerAccess {
     static const Trails& trails(const Runner& runner) { return runner.loop_->trails; }
     /// Records the timeline as a window run does (headless runs keep none).
     static void recordTimeline(Runner& runner) { runner.recording_ = true; }
+    /// The same with a timeline of these settings (its spacing of snapshots made independent of timing).
+    static void recordTimeline(Runner& runner, const Timeline::Settings& settings) {
+        runner.timeline_ = Timeline(settings);
+        runner.recording_ = true;
+    }
 };
 
 }  // namespace physim

@@ -29,7 +29,7 @@ void Timeline::clear() {
     lastStep_ = 0;
 }
 
-void Timeline::record(const Simulation& sim) {
+void Timeline::countSteps(const Simulation& sim) {
     if (!entries_.empty() && sim.time < entries_.back().snapshot.time) clear();  // restarted
     if (!entries_.empty()) {
         const std::uint64_t steps = sim.world().stepCount() - lastStep_;
@@ -38,41 +38,65 @@ void Timeline::record(const Simulation& sim) {
         end_ = std::max(end_, sim.time);
     }
     lastStep_ = sim.world().stepCount();
+}
+
+void Timeline::record(const Simulation& sim) {
+    countSteps(sim);
     if (!entries_.empty() && sinceLast_ < std::max(interval_, settings_.minInterval)) return;
     const auto before = std::chrono::steady_clock::now();
-    Entry e{sim.snapshot(), 0};
+    Entry e{sim.snapshot(), 0, false};
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
-    e.bytes = bytesOf(e.snapshot);
     // The next interval: enough steps that this snapshot's cost is at most costShare of theirs.
     if (sinceLast_ > 0 && stepSeconds_ > 0.0) {
         const double perStep = stepSeconds_ / sinceLast_;
         interval_ = static_cast<int>(std::min(1e6, std::ceil(took / (settings_.costShare * perStep))));
     }
-    sinceLast_ = 0;
-    stepSeconds_ = 0.0;
-    end_ = std::max(end_, sim.time);
-    bytes_ += e.bytes;
-    entries_.push_back(std::move(e));
-    while (bytes_ > settings_.budgetBytes && entries_.size() > 2) thin();
+    keep(std::move(e), sim.time);
 }
 
-// Drops every other snapshot of the older half (never the first): the recent past stays dense.
-void Timeline::thin() {
-    const std::size_t half = entries_.size() / 2;
+void Timeline::mark(const Simulation& sim) {
+    countSteps(sim);
+    if (!entries_.empty() && entries_.back().snapshot.time == sim.time) {  // this step's, taken before the change
+        bytes_ -= entries_.back().bytes;
+        entries_.pop_back();
+    }
+    keep(Entry{sim.snapshot(), 0, true}, sim.time);
+}
+
+void Timeline::keep(Entry e, double time) {
+    e.bytes = bytesOf(e.snapshot);
+    sinceLast_ = 0;
+    stepSeconds_ = 0.0;
+    end_ = std::max(end_, time);
+    bytes_ += e.bytes;
+    entries_.push_back(std::move(e));
+    while (bytes_ > settings_.budgetBytes && entries_.size() > 2 && thin()) {
+    }
+}
+
+// Drops every other snapshot of the older half (never the first, nor a marked one): the recent past stays dense.
+// Returns false when there is nothing it may drop.
+bool Timeline::thin() {
+    const std::size_t before = entries_.size(), half = before / 2;
     std::vector<Entry> kept;
-    kept.reserve(entries_.size());
-    for (std::size_t i = 0; i < entries_.size(); ++i) {
-        if (i > 0 && i < half && i % 2 == 1) {
+    kept.reserve(before);
+    for (std::size_t i = 0; i < before; ++i) {
+        if (i > 0 && i < half && i % 2 == 1 && !entries_[i].marked) {
             bytes_ -= entries_[i].bytes;
             continue;
         }
         kept.push_back(std::move(entries_[i]));
     }
-    if (kept.size() == entries_.size()) {  // too few to thin the old half: drop the second oldest
-        bytes_ -= kept[1].bytes;
-        kept.erase(kept.begin() + 1);
-    }
     entries_ = std::move(kept);
+    if (entries_.size() < before) return true;
+    // Too few to thin the old half: the oldest unmarked one after the first goes (never the latest).
+    for (std::size_t i = 1; i + 1 < entries_.size(); ++i)
+        if (!entries_[i].marked) {
+            bytes_ -= entries_[i].bytes;
+            entries_.erase(entries_.begin() + static_cast<std::ptrdiff_t>(i));
+            return true;
+        }
+    return false;
 }
 
 double Timeline::scrubTo(Simulation& sim, double time, const std::function<void()>& step) {

@@ -110,6 +110,47 @@ TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
     EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(20));
 }
 
+// A change made between steps (here a ball thrown up; in the window a branch started or ended) cannot be replayed
+// from an earlier snapshot: mark keeps one of that moment, so a scrub to any later moment lands on the states the run
+// had, even with no other snapshot since the start, and even after the budget thinned the record.
+TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
+    Timeline::Settings sparse;
+    sparse.minInterval = 1000;  // no snapshot but the start's and the mark's
+    sparse.costShare = 1e9;
+    Recording run(sparse);
+    for (int i = 0; i < 20; ++i) run.frame(true);
+    run.sim.balls[0]->rb.setVelocity({0.0, 6.0});
+    run.timeline.mark(run.sim);
+    EXPECT_EQ(run.timeline.size(), 2u);
+    for (int i = 0; i < 100; ++i) {
+        run.frame(true);
+        run.hashAtStep[run.step()] = run.sim.world().stateHash();
+    }
+    run.timeline.scrubTo(run.sim, 2.0, [&] { run.frame(false); });
+    ASSERT_EQ(run.step(), 80);
+    EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(80));
+
+    Timeline::Settings small;
+    Recording probe(small);
+    probe.frame(true);
+    small.budgetBytes = 6 * probe.timeline.bytes();  // room for about six snapshots
+    small.minInterval = 4;
+    small.costShare = 1e9;
+    Recording thinned(small);
+    for (int i = 0; i < 20; ++i) thinned.frame(true);
+    thinned.timeline.mark(thinned.sim);  // the record already holds step 20's: the mark replaces it
+    thinned.sim.balls[0]->rb.setVelocity({0.0, 6.0});
+    thinned.timeline.mark(thinned.sim);
+    for (int i = 0; i < 400; ++i) {
+        thinned.frame(true);
+        thinned.hashAtStep[thinned.step()] = thinned.sim.world().stateHash();
+    }
+    EXPECT_LE(thinned.timeline.size(), 8u) << "the budget still holds, the mark aside";
+    thinned.timeline.scrubTo(thinned.sim, 0.6, [&] { thinned.frame(false); });
+    ASSERT_EQ(thinned.step(), 24);
+    EXPECT_EQ(thinned.sim.world().stateHash(), thinned.hashAtStep.at(24));
+}
+
 // The interval adapts so that a snapshot costs at most costShare of the steps between two, never below minInterval:
 // with no cost limit one comes every minInterval steps; with a limit no snapshot can meet (a share of 1e-12) the
 // first measured one sets an interval beyond the run.

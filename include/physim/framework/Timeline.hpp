@@ -31,6 +31,10 @@ public:
     /// After each frame that stepped `sim` (and once before the first), when its hooks have run: keeps a snapshot
     /// when one is due. A simulation whose time went back (a restart) starts the record again.
     void record(const Simulation& sim);
+    /// After `sim` was changed outside its steps (a branch started or ended): keeps a snapshot of it now, replacing
+    /// one of the same step, and never thins it out. The steps replayed from an earlier snapshot could not repeat
+    /// the change, so a scrub to any later moment starts from this snapshot or a later one.
+    void mark(const Simulation& sim);
     /// Puts `sim` back at the last recorded step at or before `time` (s), within what was recorded, by restoring the
     /// snapshot before it and calling `step` (which must advance `sim` by one fixed step: the runner's one-step
     /// frame, so the simulation's hooks run as they did) until there; later snapshots go (they are taken again as
@@ -49,8 +53,11 @@ private:
     struct Entry {
         Simulation::Snapshot snapshot;
         std::size_t bytes = 0;
+        bool marked = false;  // mark's: the thinning keeps it
     };
-    void thin();
+    void countSteps(const Simulation& sim);
+    void keep(Entry e, double time);
+    bool thin();
 
     Settings settings_;
     std::vector<Entry> entries_;
