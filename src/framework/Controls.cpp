@@ -71,10 +71,14 @@ void Controls::startDrag(Simulation& sim, const Vec2& point) {
     def.hertz = dragHertz;
     def.dampingRatio = dragDampingRatio;
     drag_ = world.createMouseJoint(def);
+    worldChanged_ = true;
 }
 
 void Controls::releaseDrag(Simulation& sim) {
-    if (drag_ && sim.world().contains(*drag_)) sim.world().destroyJoint(*drag_);
+    if (drag_ && sim.world().contains(*drag_)) {
+        sim.world().destroyJoint(*drag_);
+        worldChanged_ = true;
+    }
     drag_.reset();
 }
 
@@ -115,9 +119,10 @@ bool Controls::handleEvent(const sf::Event& event, Simulation& sim, sf::Vector2u
             }
             if (measurement_.kind() != Measurement::Kind::None) measurement_.move(sim.view.toWorld(pixel, windowSize));
             if (drag_) {
-                if (sim.world().contains(*drag_))
+                if (sim.world().contains(*drag_)) {
                     sim.world().setMouseJointTarget(*drag_, sim.view.toWorld(pixel, windowSize));
-                else
+                    dragMoved_ = true;
+                } else
                     drag_.reset();  // the body went (the simulation removed it)
             }
             return true;

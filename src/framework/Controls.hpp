@@ -24,6 +24,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 
 namespace sf {
 class Event;
@@ -59,6 +60,10 @@ public:
     void requestSingleStep() { singleStep_ = true; }
     /// True once after F was pressed.
     bool takeFitRequest();
+    /// True once after the controls changed the world between steps, as the run's record must note (Timeline): a
+    /// drag began or let go (takeWorldChange), the dragged body's target moved (takeDragMove).
+    bool takeWorldChange() { return std::exchange(worldChanged_, false); }
+    bool takeDragMove() { return std::exchange(dragMoved_, false); }
     void requestFit() { fit_ = true; }
 
     /// W's stopwatch.
@@ -93,6 +98,8 @@ private:
     double timeScale_ = 1.0;
     bool singleStep_ = false;
     bool fit_ = false;
+    bool worldChanged_ = false;
+    bool dragMoved_ = false;
     bool statsShown_ = false;
     bool trailsShown_ = false;
     bool arrowsShown_ = false;

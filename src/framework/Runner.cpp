@@ -212,6 +212,7 @@ void Runner::restart() {
     viewSetByScene_ = sim.view != View{};
     if (!viewSetByScene_) fitView();
     timeline_.clear();
+    changePending_ = movePending_ = false;
     branchTrace_.clear();
     livePlots_.clear();
     recorder_.reset();
@@ -316,7 +317,16 @@ void Runner::endBranch() {
     if (recording_) timeline_.mark(simulation());
 }
 
+void Runner::markChange() {
+    // Marked where the hooks of the frame before have run and those of the next have not, as the frame-end record.
+    const bool changed = std::exchange(changePending_, false), moved = std::exchange(movePending_, false);
+    if (!recording_) return;
+    if (changed) timeline_.mark(simulation());
+    else if (moved) timeline_.noteChange(simulation());
+}
+
 double Runner::scrubTo(double time) {
+    markChange();
     Simulation& sim = simulation();
     sim.paused = true;
     if (timeline_.empty()) timeline_.record(sim);
@@ -368,6 +378,7 @@ void Runner::fitView() {
 
 int Runner::frame(double frameSeconds, sf::RenderWindow* window) {
     const double frameStart = loop_->clock();
+    markChange();
     Simulation& sim = simulation();
     sim.onUpdate();
     sim.updateEntities();
@@ -433,6 +444,7 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
             break;
         case sf::Event::KeyPressed:
             sim.onEvent(event);
+            changePending_ = true;  // the scene may have changed its world: the replay could not repeat that
             if (event.key.code == sf::Keyboard::Space) restart();
             else if (event.key.code == sf::Keyboard::P) sim.paused = !sim.paused;
             else if (event.key.code == sf::Keyboard::Left) scrubTo(sim.time - 1.0);
@@ -444,6 +456,8 @@ void Runner::handleEvent(const sf::Event& event, sf::RenderWindow* window) {
             break;
         default: loop_->controls.handleEvent(event, sim, window ? window->getSize() : windowSize_); break;
     }
+    if (loop_->controls.takeWorldChange()) changePending_ = true;
+    if (loop_->controls.takeDragMove()) movePending_ = true;
 }
 
 std::vector<std::string> Runner::writeOutputs(const std::string& directory) const {

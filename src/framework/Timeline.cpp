@@ -21,6 +21,7 @@ double Timeline::end() const { return entries_.empty() ? 0.0 : end_; }
 
 void Timeline::clear() {
     entries_.clear();
+    changes_.clear();
     bytes_ = 0;
     end_ = 0.0;
     interval_ = 0;
@@ -60,7 +61,17 @@ void Timeline::mark(const Simulation& sim) {
         bytes_ -= entries_.back().bytes;
         entries_.pop_back();
     }
+    if (changes_.empty() || changes_.back() < sim.time) changes_.push_back(sim.time);
     keep(Entry{sim.snapshot(), 0, true}, sim.time);
+}
+
+void Timeline::noteChange(const Simulation& sim) {
+    countSteps(sim);
+    // A snapshot of this step was taken before the change: it must be taken again (a scrub replays from it).
+    const bool due = entries_.empty() || sinceLast_ >= std::max(interval_, settings_.minInterval) ||
+                     entries_.back().snapshot.time == sim.time;
+    if (due) return mark(sim);
+    if (changes_.empty() || changes_.back() < sim.time) changes_.push_back(sim.time);
 }
 
 void Timeline::keep(Entry e, double time) {
@@ -75,7 +86,8 @@ void Timeline::keep(Entry e, double time) {
 }
 
 // Drops every other snapshot of the older half (never the first, nor a marked one): the recent past stays dense.
-// Returns false when there is nothing it may drop.
+// With too few to thin that way, the oldest after the first goes, unmarked ones first, never the latest. Returns
+// false when there is nothing it may drop.
 bool Timeline::thin() {
     const std::size_t before = entries_.size(), half = before / 2;
     std::vector<Entry> kept;
@@ -89,13 +101,13 @@ bool Timeline::thin() {
     }
     entries_ = std::move(kept);
     if (entries_.size() < before) return true;
-    // Too few to thin the old half: the oldest unmarked one after the first goes (never the latest).
-    for (std::size_t i = 1; i + 1 < entries_.size(); ++i)
-        if (!entries_[i].marked) {
-            bytes_ -= entries_[i].bytes;
-            entries_.erase(entries_.begin() + static_cast<std::ptrdiff_t>(i));
-            return true;
-        }
+    for (const bool marked : {false, true})
+        for (std::size_t i = 1; i + 1 < entries_.size(); ++i)
+            if (entries_[i].marked == marked) {
+                bytes_ -= entries_[i].bytes;
+                entries_.erase(entries_.begin() + static_cast<std::ptrdiff_t>(i));
+                return true;
+            }
     return false;
 }
 
@@ -107,9 +119,14 @@ double Timeline::scrubTo(Simulation& sim, double time, const std::function<void(
                                [](double t, const Entry& e) { return t < e.snapshot.time; });
     if (it != entries_.begin()) --it;
     sim.restore(it->snapshot);
-    // Step on to the last step at or before the target (a millionth of a step's rounding allowed: `time` sums dt).
+    // Step on to the last step at or before the target (a millionth of a step's rounding allowed: `time` sums dt),
+    // or to the first change after the snapshot, which the replay cannot make: the state just before it.
+    const double from = sim.time;
+    const auto change = std::upper_bound(changes_.begin(), changes_.end(), from);
+    const double until = change != changes_.end() ? std::min(target, *change) : target;
+    changes_.erase(change, changes_.end());  // the replay makes none of them: this run's future has none yet
     const double dt = sim.fixedTimeStep();
-    const auto steps = static_cast<long long>(std::floor((target - sim.time) / dt + 1e-6));
+    const auto steps = static_cast<long long>(std::floor((until - from) / dt + 1e-6));
     for (long long i = 0; i < steps; ++i) step();
     const std::size_t keep = static_cast<std::size_t>(it - entries_.begin()) + 1;
     for (std::size_t i = keep; i < entries_.size(); ++i) bytes_ -= entries_[i].bytes;

@@ -50,10 +50,7 @@ Scene& scene(Runner& runner) { return static_cast<Scene&>(runner.simulation()); 
 
 const sf::Vector2u kWindow(800, 600);
 
-sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p) {
-    const sf::Vector2f px = sim.view.worldToPixels(kWindow).transformPoint(float(p.x()), float(p.y()));
-    return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
-}
+sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p) { return test::pixelOf(sim.view, p, kWindow); }
 
 using test::keyPress;
 using test::mouseButton;

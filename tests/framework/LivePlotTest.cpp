@@ -40,10 +40,7 @@ Runner makeRunner() {
     return Runner([] { return std::make_unique<Scene>(); }, options);
 }
 
-sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p) {
-    const sf::Vector2f px = sim.view.worldToPixels(kWindow).transformPoint(float(p.x()), float(p.y()));
-    return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
-}
+sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p) { return test::pixelOf(sim.view, p, kWindow); }
 
 TEST(LivePlot, AClickPicksTheBodyAndItsPlotFollowsTheRunAndAScrub) {
     Runner runner = makeRunner();

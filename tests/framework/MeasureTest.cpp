@@ -72,8 +72,7 @@ public:
 };
 
 sf::Vector2i pixelOf(const Simulation& sim, const Vec2& p, sf::Vector2u window) {
-    const sf::Vector2f px = sim.view.worldToPixels(window).transformPoint(float(p.x()), float(p.y()));
-    return {static_cast<int>(std::lround(px.x)), static_cast<int>(std::lround(px.y))};
+    return test::pixelOf(sim.view, p, window);
 }
 
 sf::Event keyRelease(sf::Keyboard::Key code) {

@@ -110,9 +110,9 @@ TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
     EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(20));
 }
 
-// A change made between steps (here a ball thrown up; in the window a branch started or ended) cannot be replayed
-// from an earlier snapshot: mark keeps one of that moment, so a scrub to any later moment lands on the states the run
-// had, even with no other snapshot since the start, and even after the budget thinned the record.
+// A change made between steps (here a ball thrown up; in the window a branch, a drag, a key the scene handles)
+// cannot be replayed from an earlier snapshot. mark keeps a snapshot of that moment, so a scrub to any later moment
+// lands on the states the run had, with no other snapshot since the start, and after the budget thinned the record.
 TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
     Timeline::Settings sparse;
     sparse.minInterval = 1000;  // no snapshot but the start's and the mark's
@@ -145,10 +145,73 @@ TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
         thinned.frame(true);
         thinned.hashAtStep[thinned.step()] = thinned.sim.world().stateHash();
     }
-    EXPECT_LE(thinned.timeline.size(), 8u) << "the budget still holds, the mark aside";
+    EXPECT_LE(thinned.timeline.size(), 7u) << "the budget holds";
     thinned.timeline.scrubTo(thinned.sim, 0.6, [&] { thinned.frame(false); });
-    ASSERT_EQ(thinned.step(), 24);
+    ASSERT_EQ(thinned.step(), 24) << "the mark was kept: the scrub lands where asked";
     EXPECT_EQ(thinned.sim.world().stateHash(), thinned.hashAtStep.at(24));
+}
+
+// A budget too small to keep the mark (the first snapshot and the latest only): a scrub past the change stops at
+// its moment, on the state just before it, which the run had; it never replays across it into states the run never
+// had. Running on from there is a new future, without the change.
+TEST(Timeline, AScrubStopsAtAChangeItsRecordNoLongerHolds) {
+    Timeline::Settings tiny;
+    Recording probe(tiny);
+    probe.frame(true);
+    tiny.budgetBytes = 2 * probe.timeline.bytes();
+    tiny.minInterval = 4;
+    tiny.costShare = 1e9;
+    Recording run(tiny);
+    for (int i = 0; i < 20; ++i) run.frame(true);
+    const std::uint64_t beforeChange = run.sim.world().stateHash();
+    run.sim.balls[0]->rb.setVelocity({0.0, 6.0});
+    run.timeline.mark(run.sim);
+    for (int i = 0; i < 100; ++i) run.frame(true);
+    ASSERT_EQ(run.timeline.size(), 2u) << "the mark is thinned out";
+    run.timeline.scrubTo(run.sim, 2.0, [&] { run.frame(false); });
+    EXPECT_EQ(run.step(), 20);
+    EXPECT_EQ(run.sim.world().stateHash(), beforeChange);
+    // The change is gone from the record with the future it began: a later scrub back within it replays freely.
+    for (int i = 0; i < 40; ++i) run.frame(true);
+    Recording unchanged(Timeline::Settings{});
+    for (int i = 0; i < 50; ++i) unchanged.frame(false);
+    run.timeline.scrubTo(run.sim, 1.25, [&] { run.frame(false); });
+    EXPECT_EQ(run.step(), 50);
+    EXPECT_EQ(run.sim.world().stateHash(), unchanged.sim.world().stateHash());
+}
+
+// A change made often (a drag's moves) is noted with a snapshot only where one is due, or where one of the same step
+// was taken before the change (it is taken again). A scrub lands exactly where the record allows, and else stops at
+// the first noted change after its snapshot, on the state just before it.
+TEST(Timeline, ANotedChangeKeepsASnapshotOnlyWhereOneIsDue) {
+    Timeline::Settings every4;
+    every4.minInterval = 4;
+    every4.costShare = 1e9;
+    Recording run(every4);
+    for (int i = 0; i < 10; ++i) run.frame(true);  // snapshots at steps 0, 4, 8
+    ASSERT_EQ(run.timeline.size(), 3u);
+    const std::uint64_t beforeFirst = run.sim.world().stateHash();
+    run.sim.balls[0]->rb.setVelocity({0.0, 6.0});
+    run.timeline.noteChange(run.sim);
+    EXPECT_EQ(run.timeline.size(), 3u) << "none due at step 10";
+    for (int i = 0; i < 2; ++i) run.frame(true);  // step 12's
+    ASSERT_EQ(run.timeline.size(), 4u);
+    run.sim.balls[1]->rb.setVelocity({0.0, 6.0});
+    run.timeline.noteChange(run.sim);  // step 12's snapshot is taken again, with the change
+    EXPECT_EQ(run.timeline.size(), 4u);
+    for (int i = 0; i < 20; ++i) {
+        run.frame(true);
+        run.hashAtStep[run.step()] = run.sim.world().stateHash();
+    }
+    run.timeline.scrubTo(run.sim, 0.7, [&] { run.frame(false); });
+    ASSERT_EQ(run.step(), 28);
+    EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(28));
+    run.timeline.scrubTo(run.sim, 0.325, [&] { run.frame(false); });  // step 13: from step 12's snapshot
+    ASSERT_EQ(run.step(), 13);
+    EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(13));
+    run.timeline.scrubTo(run.sim, 0.275, [&] { run.frame(false); });  // step 11: from step 8's, stopped at 10
+    ASSERT_EQ(run.step(), 10);
+    EXPECT_EQ(run.sim.world().stateHash(), beforeFirst);
 }
 
 // The interval adapts so that a snapshot costs at most costShare of the steps between two, never below minInterval:

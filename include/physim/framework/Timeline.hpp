@@ -3,8 +3,9 @@
 // it runs, within a memory budget. When the budget is full, every other snapshot of the older half goes, so the
 // record thins out towards the past but always reaches back to its start. scrubTo puts the simulation back at any
 // recorded moment: from the nearest snapshot before it, the steps in between are run again, which (the step being
-// deterministic) lands on exactly the state the run had then. The runner keeps one in a window (keys Left, Right
-// and Home; the gallery's time slider).
+// deterministic) lands on exactly the state the run had then; changes made by hand between steps are marked (mark),
+// and no replay crosses one. The runner keeps one in a window (keys Left, Right and Home; the gallery's time
+// slider) and marks drags, keys the scene answers, and branches.
 
 #include "physim/framework/Simulation.hpp"
 
@@ -31,14 +32,21 @@ public:
     /// After each frame that stepped `sim` (and once before the first), when its hooks have run: keeps a snapshot
     /// when one is due. A simulation whose time went back (a restart) starts the record again.
     void record(const Simulation& sim);
-    /// After `sim` was changed outside its steps (a branch started or ended): keeps a snapshot of it now, replacing
-    /// one of the same step, and never thins it out. The steps replayed from an earlier snapshot could not repeat
-    /// the change, so a scrub to any later moment starts from this snapshot or a later one.
+    /// After `sim` was changed outside its steps (a branch, a drag, a key the scene handles): notes the moment and
+    /// keeps a snapshot of it (replacing one of the same step), which the thinning drops last. Steps replayed from
+    /// an earlier snapshot cannot repeat the change, so no scrub replays across it: a scrub to a later moment starts
+    /// from this snapshot or a later one, or, once the budget thinned it out, stops at the moment of the change
+    /// (the state just before it).
     void mark(const Simulation& sim);
+    /// The same for a change made often (a dragged body's target, each frame): its moment is noted, but a snapshot
+    /// is kept only where record would keep one (or one of this step is already kept), so the cost stays within
+    /// the record's. A scrub then stops at the first such change after the snapshot it starts from.
+    void noteChange(const Simulation& sim);
     /// Puts `sim` back at the last recorded step at or before `time` (s), within what was recorded, by restoring the
     /// snapshot before it and calling `step` (which must advance `sim` by one fixed step: the runner's one-step
-    /// frame, so the simulation's hooks run as they did) until there; later snapshots go (they are taken again as
-    /// the run goes on). Returns the simulation's time after. Throws std::logic_error when nothing is recorded.
+    /// frame, so the simulation's hooks run as they did) until there, or until a marked change on the way; later
+    /// snapshots and marks go (they are taken again as the run goes on). Returns the simulation's time after.
+    /// Throws std::logic_error when nothing is recorded.
     double scrubTo(Simulation& sim, double time, const std::function<void()>& step);
     void clear();
 
@@ -53,7 +61,7 @@ private:
     struct Entry {
         Simulation::Snapshot snapshot;
         std::size_t bytes = 0;
-        bool marked = false;  // mark's: the thinning keeps it
+        bool marked = false;  // mark's: the thinning drops it last
     };
     void countSteps(const Simulation& sim);
     void keep(Entry e, double time);
@@ -61,6 +69,7 @@ private:
 
     Settings settings_;
     std::vector<Entry> entries_;
+    std::vector<double> changes_;  // s, mark's moments, in order
     std::size_t bytes_ = 0;
     double end_ = 0.0;
     int interval_ = 0;          // steps between snapshots now (0: not measured yet)
