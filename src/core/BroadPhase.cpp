@@ -10,6 +10,7 @@ std::int32_t BroadPhase::createProxy(const Aabb& fatBox, std::uint32_t shape, bo
     const std::int32_t k = key(id, isStatic);
     markMoved(k);
     boxesChanged();
+    if (isStatic) ++staticRevision_;
     return k;
 }
 
@@ -22,12 +23,14 @@ void BroadPhase::destroyProxy(std::int32_t k) {
     }
     treeOf(k).destroyProxy(id);
     boxesChanged();
+    if (isStatic(k)) ++staticRevision_;
 }
 
 void BroadPhase::moveProxy(std::int32_t k, const Aabb& fatBox) {
     treeOf(k).moveProxy(k >> 1, fatBox);
     markMoved(k);
     boxesChanged();
+    if (isStatic(k)) ++staticRevision_;
 }
 
 void BroadPhase::moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes) {
@@ -64,6 +67,27 @@ const WideBoxTree* BroadPhase::wideTree() const {
     wide_.tree.build();
     wide_.revision.store(boxRevision_, std::memory_order_release);
     return &wide_.tree;
+}
+
+const WideBoxTree* BroadPhase::staticWideTree(std::size_t queries) {
+    StaticWide& s = staticWide_;
+    if (s.revision == staticRevision_) return &s.tree;
+    if (s.counted != staticRevision_) {  // the boxes changed: count anew
+        s.counted = staticRevision_;
+        s.queries = 0;
+    }
+    // As wideTree: the queries it would answer first pay for the build.
+    s.queries += queries;
+    if (s.queries < 64 + tree_[1].proxyCount() / 4) return nullptr;
+    s.tree.clear();
+    const DynamicTree& tree = tree_[1];
+    for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
+        const auto id = static_cast<std::int32_t>(i);
+        if (tree.isProxy(id)) s.tree.addLeaf(tree.fatAabb(id), static_cast<std::uint32_t>(id));
+    }
+    s.tree.build();
+    s.revision = staticRevision_;
+    return &s.tree;
 }
 
 const Aabb& BroadPhase::fatBox(std::int32_t k) const { return treeOf(k).fatAabb(k >> 1); }

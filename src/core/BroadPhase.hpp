@@ -92,6 +92,7 @@ private:
     void markMoved(std::int32_t key);
     void boxesChanged();
     const WideBoxTree* wideTree() const;  // null until queryOften has been asked often enough since boxesChanged
+    const WideBoxTree* staticWideTree(std::size_t queries);  // null until findNewPairs has asked enough since
     void beginFind(int workerSlots);
     void endFind(std::vector<ShapePair>& pairs);  // merges, sorts, empties the move buffer, re-queues declined
 
@@ -99,17 +100,40 @@ private:
     std::vector<std::int32_t> moved_;     // proxy keys in the move buffer
     std::uint64_t boxRevision_ = 0;
     // queryOften's tree and what decides when to build it. Const queries may run on several threads at once: the
-    // one that builds holds `building`, the others go on through the two trees meanwhile. A copy starts empty.
+    // one that builds holds `building`, the others go on through the two trees meanwhile. A copy starts without
+    // one, and so does a broad phase assigned another's boxes (a restore): its revision counter may come to equal
+    // the one the old tree was built at with other boxes.
     struct WideCache {
         WideCache() = default;
         WideCache(const WideCache&) {}
-        WideCache& operator=(const WideCache&) { return *this; }
+        WideCache& operator=(const WideCache&) {
+            revision.store(~std::uint64_t{0}, std::memory_order_relaxed);
+            queries.store(0, std::memory_order_relaxed);
+            return *this;
+        }
         WideBoxTree tree;
         std::atomic<std::uint64_t> revision{~std::uint64_t{0}};  // the boxRevision_ it was built for
         std::atomic<std::uint64_t> queries{0};                    // queryOften calls since boxesChanged
         std::mutex building;
     };
     mutable WideCache wide_;
+    // findNewPairs' four-wide tree over the static tree's boxes, built once they stayed the same for about as many
+    // queries as the build costs (as queryOften's). A copy or an assigned broad phase starts without one.
+    struct StaticWide {
+        StaticWide() = default;
+        StaticWide(const StaticWide&) {}
+        StaticWide& operator=(const StaticWide&) {
+            revision = counted = ~std::uint64_t{0};
+            queries = 0;
+            return *this;
+        }
+        WideBoxTree tree;
+        std::uint64_t revision = ~std::uint64_t{0};  // the staticRevision_ it was built for
+        std::uint64_t counted = ~std::uint64_t{0};   // the staticRevision_ `queries` counts for
+        std::size_t queries = 0;                     // queries of the static tree at that revision
+    };
+    StaticWide staticWide_;
+    std::uint64_t staticRevision_ = 0;  // changes whenever a static proxy is created, destroyed or moved
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
     std::vector<std::vector<ShapePair>> perTask_;
@@ -122,6 +146,7 @@ void BroadPhase::findNewPairs(std::vector<ShapePair>& pairs, const PairSet& know
     pairs.clear();
     if (moved_.empty()) return;
     beginFind(executor.workerSlots());
+    const WideBoxTree* const staticWide = staticWideTree(moved_.size());
     // A moved movable proxy meets both trees; a moved static proxy meets only the movable tree (static bodies
     // never pair). Two shapes of one body do pair here: `wanted` takes them, the caller drops them. A pair of two
     // moved proxies is reported by the query of the smaller key only.
@@ -136,7 +161,7 @@ void BroadPhase::findNewPairs(std::vector<ShapePair>& pairs, const PairSet& know
             for (int t = 0; t < 2; ++t) {
                 if (t == 1 && isStatic(k)) continue;
                 const auto& flags = isMoved_[t];
-                tree_[t].query(box, [&](std::int32_t id, std::uint32_t other) {
+                const auto meet = [&](std::int32_t id, std::uint32_t other) {
                     const std::int32_t otherKey = key(id, t == 1);
                     if (otherKey == k) return true;
                     const bool otherMoved = static_cast<std::size_t>(id) < flags.size() && flags[id];
@@ -147,6 +172,16 @@ void BroadPhase::findNewPairs(std::vector<ShapePair>& pairs, const PairSet& know
                     if (wanted(first, second)) out.emplace_back(first, second);
                     else declinedOne = true;
                     return true;
+                };
+                if (t == 0 || !staticWide) {
+                    tree_[t].query(box, meet);
+                    continue;
+                }
+                // The same leaves as the static tree's query (each checked exactly: the wide tree's floats may
+                // report one that misses by their rounding), in another order: the pairs are sorted after.
+                staticWide->query(box, [&](std::uint32_t data) {
+                    const auto id = static_cast<std::int32_t>(data);
+                    return !tree_[1].fatAabb(id).overlaps(box) || meet(id, tree_[1].userData(id));
                 });
             }
             if (declinedOne) declined.push_back(k);
