@@ -70,6 +70,8 @@ const WideBoxTree* BroadPhase::wideTree() const {
 }
 
 const WideBoxTree* BroadPhase::staticWideTree(std::size_t queries) {
+    // A few static boxes (a ground, walls) are found as fast by the binary tree: no wide one for them.
+    if (tree_[1].proxyCount() < kStaticWideAt) return nullptr;
     StaticWide& s = staticWide_;
     if (s.revision == staticRevision_) return &s.tree;
     if (s.counted != staticRevision_) {  // the boxes changed: count anew

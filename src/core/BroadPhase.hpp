@@ -133,6 +133,7 @@ private:
         std::size_t queries = 0;                     // queries of the static tree at that revision
     };
     StaticWide staticWide_;
+    static constexpr std::size_t kStaticWideAt = 32;  // static proxies, at least, for staticWideTree to build one
     std::uint64_t staticRevision_ = 0;  // changes whenever a static proxy is created, destroyed or moved
     std::vector<std::uint8_t> isMoved_[2];  // per proxy id of each tree: 1 while in the move buffer
     std::vector<std::int32_t> movedIds_;  // moveProxies' tree ids
