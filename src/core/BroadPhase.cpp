@@ -49,21 +49,31 @@ void BroadPhase::boxesChanged() {
     wide_.queries.store(0, std::memory_order_relaxed);
 }
 
+namespace {
+
+// Building a wide tree costs about as much as a query per proxy over four (measured on piles of boxes): waiting that
+// many queries on the same boxes bounds the cost of a build that is never used to what the queries took anyway.
+bool wideTreePays(std::size_t queries, std::size_t proxies) { return queries >= 64 + proxies / 4; }
+
+// Every proxy of `tree` as a leaf of `wide`, its data the proxy's shape or (byId) its id.
+void addLeaves(WideBoxTree& wide, const DynamicTree& tree, bool byId) {
+    for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
+        const auto id = static_cast<std::int32_t>(i);
+        if (tree.isProxy(id)) wide.addLeaf(tree.fatAabb(id), byId ? static_cast<std::uint32_t>(id) : tree.userData(id));
+    }
+}
+
+}  // namespace
+
 const WideBoxTree* BroadPhase::wideTree() const {
     if (wide_.revision.load(std::memory_order_acquire) == boxRevision_) return &wide_.tree;
-    // Building costs about as much as a query per proxy over four (measured on piles of boxes): waiting that many
-    // queries bounds the cost of a build that is never used to what the queries took anyway.
     const std::size_t proxies = tree_[0].proxyCount() + tree_[1].proxyCount();
-    if (wide_.queries.fetch_add(1, std::memory_order_relaxed) < 64 + proxies / 4) return nullptr;
+    if (!wideTreePays(wide_.queries.fetch_add(1, std::memory_order_relaxed), proxies)) return nullptr;
     const std::unique_lock<std::mutex> lock(wide_.building, std::try_to_lock);
     if (!lock.owns_lock()) return nullptr;
     if (wide_.revision.load(std::memory_order_acquire) == boxRevision_) return &wide_.tree;
     wide_.tree.clear();
-    for (const DynamicTree& tree : tree_)
-        for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
-            const auto id = static_cast<std::int32_t>(i);
-            if (tree.isProxy(id)) wide_.tree.addLeaf(tree.fatAabb(id), tree.userData(id));
-        }
+    for (const DynamicTree& tree : tree_) addLeaves(wide_.tree, tree, false);
     wide_.tree.build();
     wide_.revision.store(boxRevision_, std::memory_order_release);
     return &wide_.tree;
@@ -78,15 +88,10 @@ const WideBoxTree* BroadPhase::staticWideTree(std::size_t queries) {
         s.counted = staticRevision_;
         s.queries = 0;
     }
-    // As wideTree: the queries it would answer first pay for the build.
     s.queries += queries;
-    if (s.queries < 64 + tree_[1].proxyCount() / 4) return nullptr;
+    if (!wideTreePays(s.queries, tree_[1].proxyCount())) return nullptr;
     s.tree.clear();
-    const DynamicTree& tree = tree_[1];
-    for (std::size_t i = 0; i < tree.nodeCount(); ++i) {
-        const auto id = static_cast<std::int32_t>(i);
-        if (tree.isProxy(id)) s.tree.addLeaf(tree.fatAabb(id), static_cast<std::uint32_t>(id));
-    }
+    addLeaves(s.tree, tree_[1], true);
     s.tree.build();
     s.revision = staticRevision_;
     return &s.tree;

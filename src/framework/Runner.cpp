@@ -285,7 +285,7 @@ void Runner::startBranch(BranchChange change) {
     Simulation& sim = simulation();
     sim.startBranch(sim.snapshot(), branchChangeFor(change));
     branchTrace_.assign(1, {sim.time, sim.branchDistance()});
-    if (recording_) timeline_.mark(sim);  // a replay from before could not start the branch
+    changePending_ = true;  // a replay from before could not start the branch
 }
 
 std::optional<int> Runner::pickedEntity() {
@@ -314,7 +314,7 @@ void Runner::removeLivePlot(std::size_t index) {
 void Runner::endBranch() {
     simulation().endBranch();
     branchTrace_.clear();
-    if (recording_) timeline_.mark(simulation());
+    changePending_ = true;
 }
 
 void Runner::markChange() {

@@ -41,9 +41,17 @@ void Timeline::countSteps(const Simulation& sim) {
     lastStep_ = sim.world().stepCount();
 }
 
+bool Timeline::snapshotDue() const {
+    return entries_.empty() || sinceLast_ >= std::max(interval_, settings_.minInterval);
+}
+
+bool Timeline::holdsStep(const Simulation& sim) const {
+    return !entries_.empty() && entries_.back().snapshot.time == sim.time;
+}
+
 void Timeline::record(const Simulation& sim) {
     countSteps(sim);
-    if (!entries_.empty() && sinceLast_ < std::max(interval_, settings_.minInterval)) return;
+    if (!snapshotDue()) return;
     const auto before = std::chrono::steady_clock::now();
     Entry e{sim.snapshot(), 0, false};
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
@@ -57,21 +65,27 @@ void Timeline::record(const Simulation& sim) {
 
 void Timeline::mark(const Simulation& sim) {
     countSteps(sim);
-    if (!entries_.empty() && entries_.back().snapshot.time == sim.time) {  // this step's, taken before the change
-        bytes_ -= entries_.back().bytes;
-        entries_.pop_back();
-    }
-    if (changes_.empty() || changes_.back() < sim.time) changes_.push_back(sim.time);
-    keep(Entry{sim.snapshot(), 0, true}, sim.time);
+    markCounted(sim);
 }
 
 void Timeline::noteChange(const Simulation& sim) {
     countSteps(sim);
     // A snapshot of this step was taken before the change: it must be taken again (a scrub replays from it).
-    const bool due = entries_.empty() || sinceLast_ >= std::max(interval_, settings_.minInterval) ||
-                     entries_.back().snapshot.time == sim.time;
-    if (due) return mark(sim);
-    if (changes_.empty() || changes_.back() < sim.time) changes_.push_back(sim.time);
+    if (snapshotDue() || holdsStep(sim)) return markCounted(sim);
+    noteMoment(sim.time);
+}
+
+void Timeline::markCounted(const Simulation& sim) {
+    if (holdsStep(sim)) {  // taken before the change
+        bytes_ -= entries_.back().bytes;
+        entries_.pop_back();
+    }
+    noteMoment(sim.time);
+    keep(Entry{sim.snapshot(), 0, true}, sim.time);
+}
+
+void Timeline::noteMoment(double time) {
+    if (changes_.empty() || changes_.back() < time) changes_.push_back(time);
 }
 
 void Timeline::keep(Entry e, double time) {

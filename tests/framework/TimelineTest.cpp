@@ -52,6 +52,22 @@ struct Recording {
     }
 };
 
+// The bytes of one snapshot of the scene, about (its first, after a step).
+std::size_t oneSnapshot() {
+    Recording probe(Timeline::Settings{});
+    probe.frame(true);
+    return probe.timeline.bytes();
+}
+
+// A snapshot every `interval` steps whatever they cost (no cost limit), within `budget` bytes (0: the default).
+Timeline::Settings everySteps(int interval, std::size_t budget = 0) {
+    Timeline::Settings settings;
+    settings.minInterval = interval;
+    settings.costShare = 1e9;
+    if (budget > 0) settings.budgetBytes = budget;
+    return settings;
+}
+
 TEST(Timeline, ScrubbingBackLandsOnTheStatesTheRunHad) {
     Recording run(Timeline::Settings{});
     for (int i = 0; i < 400; ++i) {
@@ -91,13 +107,8 @@ TEST(Timeline, GoingBackAndRunningOnRepeatsTheFuture) {
 // A budget of a few snapshots: the record thins (every other of its older half goes) but keeps its first one, so
 // the start stays reachable, and holds no more than the budget.
 TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
-    Timeline::Settings settings;
-    Recording probe(settings);
-    probe.frame(true);
-    const std::size_t one = probe.timeline.bytes();  // a snapshot of this scene, about
-    settings.budgetBytes = 6 * one;
-    settings.minInterval = 4;
-    settings.costShare = 1e9;  // no cost limit: a snapshot every 4 steps
+    const std::size_t one = oneSnapshot();
+    const Timeline::Settings settings = everySteps(4, 6 * one);
     Recording run(settings);
     for (int i = 0; i < 400; ++i) {
         run.frame(true);
@@ -114,10 +125,7 @@ TEST(Timeline, ASmallBudgetThinsTheRecordButKeepsItsStart) {
 // cannot be replayed from an earlier snapshot. mark keeps a snapshot of that moment, so a scrub to any later moment
 // lands on the states the run had, with no other snapshot since the start, and after the budget thinned the record.
 TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
-    Timeline::Settings sparse;
-    sparse.minInterval = 1000;  // no snapshot but the start's and the mark's
-    sparse.costShare = 1e9;
-    Recording run(sparse);
+    Recording run(everySteps(1000));  // no snapshot but the start's and the mark's
     for (int i = 0; i < 20; ++i) run.frame(true);
     run.sim.balls[0]->rb.setVelocity({0.0, 6.0});
     run.timeline.mark(run.sim);
@@ -130,13 +138,7 @@ TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
     ASSERT_EQ(run.step(), 80);
     EXPECT_EQ(run.sim.world().stateHash(), run.hashAtStep.at(80));
 
-    Timeline::Settings small;
-    Recording probe(small);
-    probe.frame(true);
-    small.budgetBytes = 6 * probe.timeline.bytes();  // room for about six snapshots
-    small.minInterval = 4;
-    small.costShare = 1e9;
-    Recording thinned(small);
+    Recording thinned(everySteps(4, 6 * oneSnapshot()));  // room for about six snapshots
     for (int i = 0; i < 20; ++i) thinned.frame(true);
     thinned.timeline.mark(thinned.sim);  // the record already holds step 20's: the mark replaces it
     thinned.sim.balls[0]->rb.setVelocity({0.0, 6.0});
@@ -155,13 +157,7 @@ TEST(Timeline, AMarkedChangeIsNeverReplayedAcross) {
 // its moment, on the state just before it, which the run had; it never replays across it into states the run never
 // had. Running on from there is a new future, without the change.
 TEST(Timeline, AScrubStopsAtAChangeItsRecordNoLongerHolds) {
-    Timeline::Settings tiny;
-    Recording probe(tiny);
-    probe.frame(true);
-    tiny.budgetBytes = 2 * probe.timeline.bytes();
-    tiny.minInterval = 4;
-    tiny.costShare = 1e9;
-    Recording run(tiny);
+    Recording run(everySteps(4, 2 * oneSnapshot()));
     for (int i = 0; i < 20; ++i) run.frame(true);
     const std::uint64_t beforeChange = run.sim.world().stateHash();
     run.sim.balls[0]->rb.setVelocity({0.0, 6.0});
@@ -184,10 +180,7 @@ TEST(Timeline, AScrubStopsAtAChangeItsRecordNoLongerHolds) {
 // was taken before the change (it is taken again). A scrub lands exactly where the record allows, and else stops at
 // the first noted change after its snapshot, on the state just before it.
 TEST(Timeline, ANotedChangeKeepsASnapshotOnlyWhereOneIsDue) {
-    Timeline::Settings every4;
-    every4.minInterval = 4;
-    every4.costShare = 1e9;
-    Recording run(every4);
+    Recording run(everySteps(4));
     for (int i = 0; i < 10; ++i) run.frame(true);  // snapshots at steps 0, 4, 8
     ASSERT_EQ(run.timeline.size(), 3u);
     const std::uint64_t beforeFirst = run.sim.world().stateHash();
@@ -218,9 +211,7 @@ TEST(Timeline, ANotedChangeKeepsASnapshotOnlyWhereOneIsDue) {
 // with no cost limit one comes every minInterval steps; with a limit no snapshot can meet (a share of 1e-12) the
 // first measured one sets an interval beyond the run.
 TEST(Timeline, SnapshotsAreSpacedByTheirCost) {
-    Timeline::Settings free;
-    free.minInterval = 3;
-    free.costShare = 1e9;
+    const Timeline::Settings free = everySteps(3);
     Recording often(free);
     for (int i = 0; i < 99; ++i) often.frame(true);
     EXPECT_EQ(often.timeline.size(), 99u / 3u + 1u);  // at steps 0, 3, ..., 99

@@ -156,7 +156,7 @@ private:
     bool quit_ = false;
     Timeline timeline_;
     bool recording_ = false;  // in a window: timeline_ records each step
-    bool changePending_ = false;  // an event changed the world since the last step: timeline_ must mark it
+    bool changePending_ = false;  // the world changed by hand since the last step (an event, a branch): to mark
     bool movePending_ = false;    // a drag moved its target since: timeline_ must note it
     void markChange();            // marks or notes them, before the next step or scrub
     void oneStepFrame(bool record);  // a frame of exactly one fixed step (scrubbing: the hooks run as in a run)

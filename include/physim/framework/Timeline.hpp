@@ -63,7 +63,11 @@ private:
         std::size_t bytes = 0;
         bool marked = false;  // mark's: the thinning drops it last
     };
-    void countSteps(const Simulation& sim);
+    void countSteps(const Simulation& sim);  // the steps since the last call, for the spacing; a restart clears
+    bool snapshotDue() const;                 // record's spacing allows a snapshot now
+    bool holdsStep(const Simulation& sim) const;  // the latest snapshot is of sim's present step
+    void markCounted(const Simulation& sim);      // mark, its steps counted
+    void noteMoment(double time);                 // a change's moment (s), once
     void keep(Entry e, double time);
     bool thin();
 
