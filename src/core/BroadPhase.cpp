@@ -97,8 +97,6 @@ const WideBoxTree* BroadPhase::staticWideTree(std::size_t queries) {
     return &s.tree;
 }
 
-const Aabb& BroadPhase::fatBox(std::int32_t k) const { return treeOf(k).fatAabb(k >> 1); }
-
 void BroadPhase::markMoved(std::int32_t k) {
     const std::int32_t id = k >> 1;
     auto& flags = isMoved_[k & 1];

@@ -34,7 +34,7 @@ public:
     /// New boxes for many proxies of movable shapes at once (DynamicTree::moveProxies: a large share rebuilds the
     /// tree); each joins the move buffer.
     void moveProxies(const std::vector<std::int32_t>& keys, const std::vector<Aabb>& fatBoxes);
-    const Aabb& fatBox(std::int32_t key) const;
+    const Aabb& fatBox(std::int32_t key) const { return treeOf(key).fatAabb(key >> 1); }
     bool isStatic(std::int32_t key) const { return (key & 1) != 0; }
 
     /// The shape pairs (first < second, sorted, each once) whose boxes overlap, at least one of which moved since
