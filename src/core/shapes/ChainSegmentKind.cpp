@@ -187,12 +187,14 @@ double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b
     return offsetFromLine(a, spreadOf(core, relativeTransform(xa, xb)).centre);
 }
 
-NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
-                                 double margin) {
+namespace {
+
+// collideChainSegment with b's placement in the piece's frame (relativeTransform(xa, xb)) already worked out.
+NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
+                             const Transform& relative, double margin) {
     const Vec2& p1 = a.segment.point1;
     const Vec2& p2 = a.segment.point2;
     // The cheap rejections first: most pieces near a body are out of its reach or behind it.
-    const Transform relative = relativeTransform(xa, xb);
     const Spread spread = spreadOf(b, relative);
     const bool clearly = clearlyApart(p1, p2, spread, b.radius, margin);
     const double offset = clearly ? 0.0 : offsetFromLine(a, spread.centre);
@@ -229,8 +231,26 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
     return fragileIfEmpty(placed(collideWithFace(piece, kFace, local, margin), xa));
 }
 
+}  // namespace
+
+NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
+                                 double margin) {
+    return collideRelative(a, xa, b, xb, relativeTransform(xa, xb), margin);
+}
+
 double circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb) {
     return leftToNeighbour(a, relativeTransform(xa, xb).apply(b.center));
+}
+
+NarrowResult collideChainCircle(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb,
+                                double margin) {
+    const Transform relative = relativeTransform(xa, xb);
+    if (const double still = leftToNeighbour(a, relative.apply(b.center)); still >= 0.0) {
+        NarrowResult r;
+        r.empty = {still, true, b.center};
+        return r;
+    }
+    return collideRelative(a, xa, coreOf(b), xb, relative, margin);
 }
 
 }  // namespace physim

@@ -22,6 +22,11 @@ NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, con
 /// (StaysEmpty, at any margin; 0: below rounding's due).
 double circleLeftToNeighbour(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb);
 
+/// collideChainSegment for a circle: empty at once where circleLeftToNeighbour says so, the routine otherwise, with
+/// the circle placed in the piece's frame once for both.
+NarrowResult collideChainCircle(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb,
+                                double margin);
+
 template <>
 struct ShapeKind<ChainSegment> {
     static constexpr const char* name = "chain segment";
@@ -77,12 +82,7 @@ struct ShapeKind<ChainSegment> {
     // A wheel rolling on a chain meets its piece's neighbours within the margin: most are left to the neighbour.
     static NarrowResult collide(const ChainSegment& a, const Transform& xa, const Circle& b, const Transform& xb,
                                 double margin) {
-        if (const double still = circleLeftToNeighbour(a, xa, b, xb); still >= 0.0) {
-            NarrowResult r;
-            r.empty = {still, true, b.center};
-            return r;
-        }
-        return collideChainSegment(a, xa, coreOf(b), xb, margin);
+        return collideChainCircle(a, xa, b, xb, margin);
     }
     template <class T>
     static NarrowResult collide(const ChainSegment& a, const Transform& xa, const T& b, const Transform& xb,
