@@ -168,27 +168,6 @@ RoundedCore pointCore(const Vec2& centre, double radius) {
     return k;
 }
 
-}  // namespace
-
-void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
-    requireTwoPoints("chain segment", "point1", c.segment.point1, "point2", c.segment.point2);
-    requireFinite("chain segment ghost1", c.ghost1);
-    requireFinite("chain segment ghost2", c.ghost2);
-}
-
-double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
-    if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
-    const RoundedCore core = std::visit(
-        [](const auto& s) -> RoundedCore {
-            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
-            else return coreOf(s);
-        },
-        b);
-    return offsetFromLine(a, spreadOf(core, relativeTransform(xa, xb)).centre);
-}
-
-namespace {
-
 // collideChainSegment with b's placement in the piece's frame (relativeTransform(xa, xb)) already worked out.
 NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
                              const Transform& relative, double margin) {
@@ -232,6 +211,23 @@ NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const R
 }
 
 }  // namespace
+
+void ShapeKind<ChainSegment>::validate(const ChainSegment& c) {
+    requireTwoPoints("chain segment", "point1", c.segment.point1, "point2", c.segment.point2);
+    requireFinite("chain segment ghost1", c.ghost1);
+    requireFinite("chain segment ghost2", c.ghost2);
+}
+
+double frontOffset(const ChainSegment& a, const Transform& xa, const Geometry& b, const Transform& xb) {
+    if (std::holds_alternative<ChainSegment>(b)) return std::numeric_limits<double>::infinity();
+    const RoundedCore core = std::visit(
+        [](const auto& s) -> RoundedCore {
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, ChainSegment>) return {};
+            else return coreOf(s);
+        },
+        b);
+    return offsetFromLine(a, spreadOf(core, relativeTransform(xa, xb)).centre);
+}
 
 NarrowResult collideChainSegment(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
                                  double margin) {
