@@ -783,6 +783,20 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
             totalNormal[k] = startLane(c, cold, k, A, B, states, start, pass);
         }
     }
+    // Friction the load no longer bears is taken back here, before the rows after this one in the pass: the warm
+    // start gave the last substep's friction, and the relax pass would take the excess back only after every normal
+    // row has run, too late for those that the excess drove into a surface (a spinning ball landing against a wall
+    // was thrown off it). Only ever less friction: the bound here includes the push-out the relax pass removes.
+    if constexpr (Bias) {
+        if (c.friction) {
+            const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+            const Wide tangent = clamp(c.tangentImpulse, zero - bound, bound);
+            if (any(tangent != c.tangentImpulse)) {
+                applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, -ny, nx, c.negRtA, c.rtB);
+                c.tangentImpulse = tangent;
+            }
+        }
+    }
     if constexpr (!Bias && Material && Turns) {
         // Rolling resistance: before friction, so that friction, the pass's last word, leaves a rolling body's face
         // rolling without slip on what the rolling row left it. The bound is clamped like friction's (0 - bound).
