@@ -39,6 +39,10 @@ struct ManifoldCache {
         Vec2 onA = Vec2::Zero();    // the point on a's surface, in a's frame about its centre of mass, m
         Vec2 onB = Vec2::Zero();    // the point on b's surface, in b's frame
         std::uint32_t id = 0;
+        // The larger rounding radius (m) of the two surfaces here (0: both sharp). A round surface's point does not
+        // turn with its body as it rolls: it stays where the other surface is, so a cached point would slip back
+        // by turn x rounding (Contacts.cpp: the cache holds only while that stays below kRollTolerance).
+        float rounding = 0.0f;
     };
     std::array<Point, 2> points{};
 };

@@ -254,7 +254,7 @@ PHYSIM_FIELDS(ShapeData, r.body, r.proxy, r.aabb, r.geometry, r.density, r.resti
               r.generation, r.alive);
 PHYSIM_FIELDS(ContactPoint, r.point, r.separation, r.normalImpulse, r.tangentImpulse, r.id);
 PHYSIM_FIELDS(Manifold, r.bodyA, r.bodyB, r.shapeA, r.shapeB, r.normal, r.pointCount, r.points);
-PHYSIM_FIELDS(ManifoldCache::Point, r.onA, r.onB, r.id);
+PHYSIM_FIELDS(ManifoldCache::Point, r.onA, r.onB, r.id, r.rounding);
 PHYSIM_FIELDS(ManifoldCache, r.margin, r.pointCount, r.quietAtAnyMargin, r.quietArm, r.offset, r.angle, r.quiet,
               r.normal, r.points);
 PHYSIM_FIELDS(ContactMaterial, r.staticFriction, r.dynamicFriction, r.restitution);
