@@ -176,8 +176,15 @@ template <bool Two>
             continue;
         }
         const WideMask used = in.pointCount > static_cast<double>(i);
-        const Wide ax = used ? in.pointX[i] - in.centerAx : zero, ay = used ? in.pointY[i] - in.centerAy : zero;
-        const Wide bx = used ? in.pointX[i] - in.centerBx : zero, by = used ? in.pointY[i] - in.centerBy : zero;
+        // Across a gap each body's anchor is its own surface point (the manifold's point is midway between the
+        // surfaces): once the gap closes, that is where each is touched, and the anchors stay put relative to the
+        // centres all step. Overlapping, the midway point.
+        const Wide gap = max(in.separation[i], zero);
+        const Wide hx = 0.5 * gap * nx, hy = 0.5 * gap * ny;
+        const Wide ax = used ? in.pointX[i] - hx - in.centerAx : zero;
+        const Wide ay = used ? in.pointY[i] - hy - in.centerAy : zero;
+        const Wide bx = used ? in.pointX[i] + hx - in.centerBx : zero;
+        const Wide by = used ? in.pointY[i] + hy - in.centerBy : zero;
         rnA[i] = ax * ny - ay * nx;  // anchor x n
         rnB[i] = bx * ny - by * nx;
         ContactBlock::Point& q = block.points[i];

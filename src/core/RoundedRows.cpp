@@ -96,10 +96,12 @@ void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const
         const double lo = firstLow ? e0 : e1, hi = firstLow ? e1 : e0;
         const Turn& low = firstLow ? turn0 : turn1;
         const Turn& high = firstLow ? turn1 : turn0;
+        // From the anchors (each side's surface point across a gap, the midway point in overlap: prepareContacts).
+        const double inward = 0.5 * std::min(p.separation, 0.0);
         ContactBlock::Point& q = block.points[i];
-        q.negNdA[lane] += reachA;
-        q.ndB[lane] += reachB;
-        q.baseSeparation[lane] -= reachA + reachB;
+        q.negNdA[lane] += cores.radiusA + inward;
+        q.ndB[lane] += cores.radiusB + inward;
+        q.baseSeparation[lane] -= (cores.radiusA + inward) + (cores.radiusB + inward);
         if (!block.ends) {  // the block's first lane with ends: the others measure along the normal
             constexpr double kInfinity = std::numeric_limits<double>::infinity();
             for (int j = 0; j < 2; ++j) {

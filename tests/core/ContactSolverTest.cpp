@@ -411,7 +411,10 @@ TEST(ContactSolver, PreparedRowsAreTheirOwnLanesAndMeanWhatTheySay) {
                         continue;
                     }
                     const ContactPoint& mp = c.manifold.points[i];
-                    const Vec2 rA = mp.point - centerA, rB = mp.point - centerB;
+                    // Across a gap each side's anchor is its own surface point, half the separation from the
+                    // manifold's point; overlapping, that point.
+                    const double half = 0.5 * std::max(mp.separation, 0.0);
+                    const Vec2 rA = mp.point - half * n - centerA, rB = mp.point + half * n - centerB;
                     EXPECT_NEAR(p.rnA, cross(rA, n), 1e-12);
                     EXPECT_NEAR(p.baseSeparation + n.dot(rB - rA), mp.separation, 1e-12);
                     const double k = x.invMassA + x.invMassB + x.invIA * cross(rA, n) * cross(rA, n) +
