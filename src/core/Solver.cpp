@@ -674,7 +674,7 @@ void Solver::moveDeferredProxies(WorldImpl& w) {
         if (!(enlarged_[i] & 4) || !w.proxyOutgrown(b)) continue;
         w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             deferredKeys_.push_back(shape.proxy);
-            deferredBoxes_.push_back(w.proxyBox(b, shape.aabb, kAabbMargin));
+            deferredBoxes_.push_back(w.proxyBox(b, shape.aabb));
         });
     }
     w.broadPhase.moveProxies(deferredKeys_, deferredBoxes_);  // a crowd of fast bodies rebuilds the tree once

@@ -152,7 +152,7 @@ void WorldImpl::wakeOverlapping(const Aabb& box) {
         if (bodies[body].type == BodyType::Dynamic && !bodies[body].awake()) wakeBody(body);
 }
 
-Aabb WorldImpl::proxyBox(const BodyData& b, const Aabb& aabb, double margin) const {
+Aabb WorldImpl::sweptBox(const BodyData& b, const Aabb& aabb, double steps, double margin) const {
     if (b.type == BodyType::Static) return aabb.fattened(margin);
     // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
     // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
@@ -161,10 +161,15 @@ Aabb WorldImpl::proxyBox(const BodyData& b, const Aabb& aabb, double margin) con
     // the centre of mass, which stays inside the box of the path: the turn never reaches further than the extent.
     Vec2 travel = b.v * dt;
     const double turn = std::min(std::abs(b.w) * dt * b.extent, b.extent);
-    if (b.detection == CollisionDetection::Discrete) {
-        const double length = travel.norm();
-        if (length > b.extent) travel *= b.extent / length;
+    double length = travel.norm();
+    if (b.detection == CollisionDetection::Discrete && length > b.extent) {
+        travel *= b.extent / length;
+        length = b.extent;
     }
+    // Further ahead, up to kLookAheadReach and the body's extent: a body that travels that far in a step gets no
+    // more than the step.
+    if (steps > 1.0 && length > 0.0)
+        travel *= std::min(steps * length, std::max(length, std::min(b.extent, kLookAheadReach))) / length;
     Aabb box = aabb;
     box.lower = box.lower.cwiseMin(aabb.lower + travel);
     box.upper = box.upper.cwiseMax(aabb.upper + travel);

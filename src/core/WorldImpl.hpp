@@ -48,6 +48,14 @@ class ContinuousSolver;
 
 /// Margin (m) by which a proxy's box exceeds its body's box, so small motions never touch the broad phase.
 constexpr double kAabbMargin = 0.1;
+/// Steps of its present travel a proxy's box reaches ahead of its body, no further than kLookAheadReach (m) nor the
+/// body's extent (or the one step's travel where that is longer): a body moving steadily (a car's wheel at 0.06 m
+/// a step) leaves its box every few steps, not every one or two, for a box a little longer (the pairs it finds are
+/// more, each cheap while apart). The reach is short so that a fast body does not sweep a long box through a crowd
+/// (Box2D v3's smash ram). A box grown more than kAabbMargin past what the body's motion now asks for (it slowed
+/// down) is made anew, so a pile that came to rest keeps no long boxes from its fall.
+constexpr double kLookAheadSteps = 3.0;
+constexpr double kLookAheadReach = 2.0 * kAabbMargin;
 
 // The world's state: everything a snapshot copies (World::snapshot) and a restore puts back, so that stepping on
 // gives bit for bit what the original run gave. Values only, so that a copy is a snapshot; the few pointers in it
@@ -155,9 +163,14 @@ struct WorldImpl : WorldState {
     bool jointKeepsApart(std::uint32_t a, std::uint32_t b) const;
     /// Destroys the joints whose last step's reaction crossed their break thresholds, recording each.
     void breakJoints();
-    /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity (the next
-    /// step's motion and turn), grown by margin.
-    Aabb proxyBox(const BodyData& b, const Aabb& box, double margin) const;
+    /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity: the next
+    /// step's motion and turn. A proxy that no longer holds it moves.
+    Aabb neededBox(const BodyData& b, const Aabb& box) const { return sweptBox(b, box, 1.0, 0.0); }
+    /// The box a proxy gets: the needed box reaching kLookAheadSteps of travel ahead, grown by kAabbMargin.
+    Aabb proxyBox(const BodyData& b, const Aabb& box) const { return sweptBox(b, box, kLookAheadSteps, kAabbMargin); }
+    /// The shape's box swept over `steps` of b's travel (a Discrete body's step at most its extent; more steps at
+    /// most kLookAheadReach and its extent, or the one step), grown by the turn's reach and by margin (m).
+    Aabb sweptBox(const BodyData& b, const Aabb& box, double steps, double margin) const;
     /// f(slot, shape) for each of the body's shapes, in the order they were added; f must not relink the list.
     template <class F>
     void forEachShape(const BodyData& b, F&& f) {
@@ -169,19 +182,23 @@ struct WorldImpl : WorldState {
         for (std::int32_t s = b.shapeHead; s != kNullIndex; s = shapes[static_cast<std::size_t>(s)].next)
             f(static_cast<std::uint32_t>(s), shapes[static_cast<std::size_t>(s)]);
     }
-    /// A body that collides (has proxies) whose motion left one of its shapes' proxy boxes.
+    /// A body that collides (has proxies) whose motion left one of its shapes' proxy boxes, or whose box is more
+    /// than kAabbMargin wider or taller than the one proxyBox gives it now.
     bool proxyOutgrown(const BodyData& b) const {
         bool outgrown = false;
         forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-            outgrown = outgrown || (shape.proxy != kNullIndex &&
-                                    !broadPhase.fatBox(shape.proxy).contains(proxyBox(b, shape.aabb, 0.0)));
+            if (outgrown || shape.proxy == kNullIndex) return;
+            const Aabb& box = broadPhase.fatBox(shape.proxy);
+            const Aabb wanted = proxyBox(b, shape.aabb);
+            const Vec2 excess = (box.upper - box.lower) - (wanted.upper - wanted.lower);
+            outgrown = !box.contains(neededBox(b, shape.aabb)) || excess.maxCoeff() > kAabbMargin;
         });
         return outgrown;
     }
     /// Every shape's proxy gets the box the body's motion needs.
     void moveProxies(const BodyData& b) {
         forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-            if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb, kAabbMargin));
+            if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb));
         });
     }
     /// The tight boxes of the body's shapes, and of the body, at its pose. A step keeps them only for bodies that

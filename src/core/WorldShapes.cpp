@@ -93,7 +93,7 @@ void WorldImpl::createProxies(std::uint32_t body) {
     updateBoxes(b);
     forEachShape(b, [&](std::uint32_t slot, ShapeData& shape) {
         if (shape.proxy == kNullIndex)
-            shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb, kAabbMargin), slot, b.type == BodyType::Static);
+            shape.proxy = broadPhase.createProxy(proxyBox(b, shape.aabb), slot, b.type == BodyType::Static);
     });
 }
 
