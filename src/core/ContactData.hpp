@@ -41,7 +41,7 @@ struct ManifoldCache {
         std::uint32_t id = 0;
         // The larger rounding radius (m) of the two surfaces here (0: both sharp). A round surface's point does not
         // turn with its body as it rolls: it stays where the other surface is, so a cached point would slip back
-        // by turn x rounding (Contacts.cpp: the cache holds only while that stays below kRollTolerance).
+        // by turn x rounding (Contacts.cpp: the cache holds only while that stays below rollToleranceFor).
         float rounding = 0.0f;
     };
     std::array<Point, 2> points{};

@@ -505,6 +505,12 @@ template <bool V, bool Turns>
     }
 }
 
+// A friction row's bound (N s): mu_s times the load while its face sticks, mu_d while it slides (0 for a
+// frictionless lane). The solve pass clamps the warm start to it, the relax pass the solved impulse.
+[[gnu::always_inline]] inline Wide frictionBound(const ContactBlock& c, const Wide& totalNormal) {
+    return (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+}
+
 template <bool V, bool Turns>
 [[gnu::always_inline]] inline void warmStartBlock(const ContactBlock& c, SolverBody* states) {
     WideSide A = gather<false>(c.indexA, states), B = gather<false>(c.indexB, states);
@@ -796,7 +802,7 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
     // was thrown off it). Only ever less friction: the bound here includes the push-out the relax pass removes.
     if constexpr (Bias) {
         if (c.friction) {
-            const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+            const Wide bound = frictionBound(c, totalNormal);
             const Wide tangent = clamp(c.tangentImpulse, zero - bound, bound);
             if (any(tangent != c.tangentImpulse)) {
                 applyAlong<V, Turns>(c, A, B, tangent - c.tangentImpulse, -ny, nx, c.negRtA, c.rtB);
@@ -826,7 +832,7 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
             const Wide tx = -ny, ty = nx;
             Wide vt = speedAlong<V, Turns>(A, B, tx, ty, c.negRtA, c.rtB);
             if constexpr (Material) vt = vt + material->tangentSpeed;  // the belt's: rest is vt = -tangentSpeed
-            const Wide bound = (c.sliding != 0.0 ? c.dynamicFriction : c.staticFriction) * totalNormal;
+            const Wide bound = frictionBound(c, totalNormal);
             // 0 - bound, not -bound: a zero bound (a frictionless lane, or no load) clamps to +0, never -0, so a
             // lane's bits do not depend on whether a neighbour's friction made the block run this path.
             const Wide tangent = clamp(mulAdd<V>(-c.tangentMass, vt, c.tangentImpulse), zero - bound, bound);

@@ -179,6 +179,7 @@ struct MovedSinceCache {
 // the cache to hold: a rolling body's contact stays under its centre, and a point left behind gives the load a
 // lever that drives the roll (a ball nudged on flat ground sped up to about 1 cm/s while the cache held).
 constexpr double rollToleranceFor(double tolerance) { return 1e-3 * tolerance; }
+
 template <bool V, class T>
 [[gnu::always_inline]] inline MovedSinceCache<T> movedSinceCache(const T& offsetX, const T& offsetY, const T& angle,
                                                                  const PairSide<T>& A, const PairSide<T>& B) {

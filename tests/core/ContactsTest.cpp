@@ -256,8 +256,9 @@ TEST(Contacts, EveryBuildOfTheNarrowPhaseGivesTheSameBits) {
         // than its own) and not others.
         for (BodyData& b : bodies) {
             if (b.type != BodyType::Dynamic) continue;
-            const double step = (&b - bodies.data()) % 2 == 0 ? 1e-5 : 1e-2;
-            b.angle += (step == 1e-5 ? 1e-9 : step) * u(rng);
+            const bool small = (&b - bodies.data()) % 2 == 0;
+            const double step = small ? 1e-5 : 1e-2, turn = small ? 1e-9 : 1e-2;
+            b.angle += turn * u(rng);
             b.xf = {b.xf.p + Vec2(step * u(rng), step * u(rng)), Rotation::fromAngle(b.angle)};
             b.center = b.xf.p;
         }

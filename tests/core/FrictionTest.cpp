@@ -3,6 +3,7 @@
 // the box stays put; above it (tan 35 deg = 0.70) it slides with a = g (sin - mu_d cos), within 2%.
 
 #include "physim/core/World.hpp"
+#include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -117,16 +118,8 @@ TEST(Friction, ASpinningBallLandingAgainstAWallStaysAgainstIt) {
         WorldSettings settings = awake();
         settings.substeps = substeps;
         World world(settings);
-        BodyDef ground;
-        ground.type = BodyType::Static;
-        ground.shape = makeBox(25.0, 0.5);
-        ground.position = {0.0, -1.0};  // top at y = -0.5
-        world.createBody(ground);
-        BodyDef wall;
-        wall.type = BodyType::Static;
-        wall.shape = makeBox(0.25, 0.75);
-        wall.position = {24.45, 0.25};  // face at x = 24.2
-        world.createBody(wall);
+        test::addStaticBox(world, {0.0, -1.0}, 25.0, 0.5);   // ground, top at y = -0.5
+        test::addStaticBox(world, {24.45, 0.25}, 0.25, 0.75);  // wall, face at x = 24.2
         BodyDef ball;
         ball.shape = makeCircle(0.2);
         ball.position = {24.0, -0.03};  // touching the wall, 0.27 m above the ground, at the top of its hop
@@ -149,11 +142,7 @@ TEST(Friction, ASpinningBallLandingAgainstAWallStaysAgainstIt) {
 TEST(Friction, ASpinningBallRollsAwayAtAThirdOfItsSurfaceSpeed) {
     for (const double height : {0.0, 0.27, 1.0}) {
         World world(awake());
-        BodyDef ground;
-        ground.type = BodyType::Static;
-        ground.shape = makeBox(25.0, 0.5);
-        ground.position = {0.0, -0.5};
-        world.createBody(ground);
+        test::addGround(world, 25.0);
         BodyDef ball;
         ball.shape = makeCircle(0.2);
         ball.position = {0.0, 0.2 + height};
