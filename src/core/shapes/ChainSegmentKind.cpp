@@ -24,8 +24,6 @@
 namespace physim {
 namespace {
 
-// A normal this close to the face normal is the face normal (4.5e-5 rad): the face's own manifold, from rounding.
-constexpr double kFaceCosine = 1.0 - 1e-9;
 // A joint whose turn has a smaller sine is flat.
 constexpr double kFlatSine = 1e-9;
 
@@ -191,7 +189,10 @@ NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const R
     const Vec2 face = piece.normals[kFace];
 
     const LocalManifold m = collideCores(piece, local, margin);
-    if (m.pointCount == 0 || m.normal.dot(face) >= kFaceCosine) return placed(m, xa);
+    // Only the face's own normal stands as it is. Any other, however close (a body turned by a hair meeting the
+    // piece's end with its own face), leans towards an end and follows that end's rule below: at a flat joint a
+    // body then never takes a push along the ground from the corner.
+    if (m.pointCount == 0 || m.normal == face) return placed(m, xa);
     if (m.normal.dot(face) <= 0.0) return fragileIfEmpty(placed(collideWithFace(piece, kFace, local, margin), xa));
 
     const Vec2 along = p2 - p1;
