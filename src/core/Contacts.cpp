@@ -625,7 +625,7 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 }
 
 void WorldImpl::updatePairs() {
-    const double speculative = 4.0 * settings.linearSlop;
+    const double speculative = speculativeDistance();
     // Pairs that never make a contact (two shapes of one body, two immovable bodies, a sensor: the Sensors stage
     // finds its overlaps itself; shapes whose filters refuse each other) are taken and dropped here: declined pairs
     // are asked about again every step. The filters are read last, for the deferred pairs only: the others are
@@ -650,7 +650,7 @@ void WorldImpl::updatePairs() {
 }
 
 void WorldImpl::updateContacts() {
-    const double speculative = 4.0 * settings.linearSlop;
+    const double speculative = speculativeDistance();
     // A manifold kept while the pair moves less than this in its own frame is off by at most this (m) along the
     // surfaces; the separations, which the solver needs exactly, are measured at the present poses anyway.
     const double reuseTolerance = 0.1 * settings.linearSlop;

@@ -36,7 +36,7 @@ bool impactAllowed(const WorldImpl& w, std::uint32_t mine, const Sweep& mySweep,
     const std::uint32_t first = mineFirst ? mine : theirs, second = mineFirst ? theirs : mine;
     const Transform x1 = (mineFirst ? mySweep : theirSweep).at(t), x2 = (mineFirst ? theirSweep : mySweep).at(t);
     NarrowResult r = collideGeometries(w.shapes[first].geometry, x1, w.shapes[second].geometry, x2,
-                                       4.0 * w.settings.linearSlop);
+                                       w.speculativeDistance());
     Manifold& m = r.manifold;
     if (m.pointCount == 0) return true;  // not touching there: nothing to ask about
     const std::uint32_t a = w.shapes[first].body, b = w.shapes[second].body;

@@ -166,8 +166,16 @@ struct WorldImpl : WorldState {
     /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity: the next
     /// step's motion and turn. A proxy that no longer holds it moves.
     Aabb neededBox(const BodyData& b, const Aabb& box) const { return sweptBox(b, box, 1.0, 0.0); }
-    /// The box a proxy gets: the needed box reaching kLookAheadSteps of travel ahead, grown by kAabbMargin.
-    Aabb proxyBox(const BodyData& b, const Aabb& box) const { return sweptBox(b, box, kLookAheadSteps, kAabbMargin); }
+    /// The box a proxy gets: the needed box reaching kLookAheadSteps of travel ahead, grown by kAabbMargin. A static
+    /// body's shapes stay put (a user's move makes their proxies anew), and a partner's box already covers the
+    /// partner's motion: theirs grow only by the speculative distance, the farthest apart a point is kept at rest,
+    /// as Box2D v3's do. A terrain's many pieces then pair with fewer of the pieces beside the ones a body is on.
+    Aabb proxyBox(const BodyData& b, const Aabb& box) const {
+        if (b.type == BodyType::Static) return box.fattened(speculativeDistance());
+        return sweptBox(b, box, kLookAheadSteps, kAabbMargin);
+    }
+    /// How far apart (m) the narrow phase keeps a pair's points even when the pair does not close (4 linear slops).
+    double speculativeDistance() const { return 4.0 * settings.linearSlop; }
     /// The shape's box swept over `steps` of b's travel (a Discrete body's step at most its extent; more steps at
     /// most kLookAheadReach and its extent, or the one step), grown by the turn's reach and by margin (m).
     Aabb sweptBox(const BodyData& b, const Aabb& box, double steps, double margin) const;
