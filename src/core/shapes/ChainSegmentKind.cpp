@@ -166,6 +166,38 @@ RoundedCore pointCore(const Vec2& centre, double radius) {
     return k;
 }
 
+// collideCores' answer for the piece and a point core (a circle, centre c in the piece's frame) whose closest
+// feature is the piece's face, from its open side: the same operations on the few numbers that take part, without
+// building the cores (a wheel on a terrain meets a piece so every step). False where collideCores must decide
+// (the centre beyond an end, or not clearly on the open side).
+bool pointOnFace(const Vec2& p1, const Vec2& p2, const Vec2& c, double radius, double margin, LocalManifold& m) {
+    const Vec2 e = p2 - p1;
+    const double u = (c - p1).dot(e);  // closestToEdges' test of the span
+    if (!(u >= 0.0 && u <= e.squaredNorm())) return false;
+    const Vec2 n0 = Vec2(e.y(), -e.x()) / e.norm();  // coreOf's normals[0]; the face's, normals[1], is -n0
+    const double s0 = n0.dot(c - p1);
+    if (!(s0 < 0.0)) return false;
+    const Vec2 n = -n0;
+    const double s1 = n.dot(c - p2);
+    const double sat = s1 > s0 ? s1 : s0;  // maxSeparation over the piece's two faces
+    if (sat - radius > margin) {
+        m.separation = sat - radius;
+        return true;
+    }
+    const double separation = -s0 - radius;  // the closest features: the centre over face 1
+    m.separation = separation;
+    if (separation > margin) return true;
+    // clip() with face 1 as the reference and the point as the incident core: one point.
+    const double onFace = s1 - radius;
+    m.normal = n;
+    m.pointCount = 1;
+    m.separations[0] = onFace <= std::max(margin, kSpeculativeMargin) ? onFace
+                                                                      : std::min(onFace, std::max(separation, 0.0));
+    m.points[0] = midwayPoint(c, n, 0.0, radius, radius, onFace);
+    m.ids[0] = featureId(false, kFace, 0);
+    return true;
+}
+
 // collideChainSegment with b's placement in the piece's frame (relativeTransform(xa, xb)) already worked out.
 NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const RoundedCore& b, const Transform& xb,
                              const Transform& relative, double margin) {
@@ -184,6 +216,8 @@ NarrowResult collideRelative(const ChainSegment& a, const Transform& xa, const R
     }
     if (offset < 0.0) return emptyFor(b, -offset, true, roundingDue(p1, p2, spread.centre));  // behind: one-sided
 
+    if (LocalManifold m; b.count == 1 && pointOnFace(p1, p2, relative.apply(b.vertices[0]), b.radius, margin, m))
+        return placed(m, xa);
     const RoundedCore piece = coreOf(p1, p2, 0.0);
     const RoundedCore local = b.count == 1 ? pointCore(relative.apply(b.vertices[0]), b.radius) : relativeCore(b, xa, xb);
     const Vec2 face = piece.normals[kFace];

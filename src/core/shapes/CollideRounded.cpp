@@ -182,7 +182,7 @@ LocalManifold clip(const RoundedCore& ref, int i1, const RoundedCore& inc, bool 
     // incident surface (the point pulled in by inc.radius).
     auto add = [&](int k, double s) {
         const int slot = m.pointCount++;
-        m.points[slot] = clipped[k] + (0.5 * (ref.radius - inc.radius) - 0.5 * (separations[k] + radii)) * n;
+        m.points[slot] = midwayPoint(clipped[k], n, ref.radius, inc.radius, radii, separations[k]);
         m.separations[slot] = s;
         m.ids[slot] = featureId(flip, refVertex[k], incVertex[k]);
     };

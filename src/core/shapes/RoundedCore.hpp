@@ -50,6 +50,13 @@ LocalManifold collideCores(const RoundedCore& a, const RoundedCore& b, double ma
 /// (or its one vertex), clipped to the face's span; nothing of b outside the span counts. b in a's frame.
 LocalManifold collideWithFace(const RoundedCore& a, int face, const RoundedCore& b, double margin);
 
+/// Where a manifold puts a point of the incident core `separation` (m) off the reference face (unit normal n), the
+/// cores' radii `refRadius` and `incRadius` (their sum `radii`): midway between the two surfaces.
+inline Vec2 midwayPoint(const Vec2& incident, const Vec2& n, double refRadius, double incRadius, double radii,
+                        double separation) {
+    return incident + (0.5 * (refRadius - incRadius) - 0.5 * (separation + radii)) * n;
+}
+
 /// The local manifold placed by a's transform.
 NarrowResult placed(const LocalManifold& m, const Transform& xa);
 
