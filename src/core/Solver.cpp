@@ -553,6 +553,8 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         });
     };
 
+    // The substeps' stages switch tens of times a step: one clock reading at each switch.
+    StageClock clock(timed ? &w.profile : nullptr);
     for (int sub = 0; sub < substeps; ++sub) {
         contactPass.substep = sub;
         if (ledger) tally_.markStart(st, bodyList, bodyCount);
@@ -563,7 +565,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                 const bool lastPass = p + 1 == run.passes;
                 switch (run.stage) {
                     case SubstepStage::Velocities: {
-                        auto timer = stage(Stage::Integrate);
+                        clock.enter(Stage::Integrate);
                         WarmStartVelocity* const keepWarm = bounces.load(std::memory_order_relaxed) ? warm : nullptr;
                         w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
                             integrateVelocities(st, keepBase, keepWarm, sims_.data(), bodyList + begin, end - begin,
@@ -574,7 +576,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     case SubstepStage::WarmStart: {
                         const bool overRows = sub == 0 || !bodiesWarmStart;  // else integrateVelocities did it
                         if (!anyRows || !(overRows || oneSequence)) break;
-                        auto timer = stage(Stage::Solve);
+                        clock.enter(Stage::Solve);
                         if (overRows) {
                             pass([&](std::size_t b, std::size_t e) {
                                      if (sub == 0) {
@@ -621,12 +623,12 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     }
                     case SubstepStage::Solve:
                         if (anyRows) {
-                            auto timer = stage(Stage::Solve);
+                            clock.enter(Stage::Solve);
                             solvePass(true, false, lastPass && !storeInRelax);
                         }
                         break;
                     case SubstepStage::Positions: {
-                        auto timer = stage(Stage::Integrate);
+                        clock.enter(Stage::Integrate);
                         w.executor.parallelFor(bodyCount, kBodyGrain, [&](std::size_t begin, std::size_t end, int) {
                             integratePositions(st, bodyList + begin, end - begin, h);
                         });
@@ -635,12 +637,13 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                     }
                     case SubstepStage::Relax:
                         if (anyRows) {
-                            auto timer = stage(Stage::Solve);
+                            clock.enter(Stage::Solve);
                             solvePass(false, sub + 1 == substeps && lastPass, lastPass);
                         }
                         break;
                 }
             }
+        clock.stop();  // the ledger, the effects and the next substep's start count nowhere, as before
         if (ledger)
             tally_.closeSubstep(w, g, sims_.data(), st, bodyList, bodyCount, blockAt(firstBlock), coldAt(firstBlock),
                                 graph_.blockRows.data(), firstBlock, blockCount,
@@ -672,9 +675,10 @@ void Solver::moveDeferredProxies(WorldImpl& w) {
     for (std::size_t i = 0; i < enlarged_.size(); ++i) {
         const BodyData& b = w.bodies[sims_[i].body];
         if (!(enlarged_[i] & 4) || !w.proxyOutgrown(b)) continue;
+        const WorldImpl::StepTravel travel = w.stepTravel(b);
         w.forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             deferredKeys_.push_back(shape.proxy);
-            deferredBoxes_.push_back(w.proxyBox(b, shape.aabb));
+            deferredBoxes_.push_back(w.proxyBox(b, travel, shape.aabb));
         });
     }
     w.broadPhase.moveProxies(deferredKeys_, deferredBoxes_);  // a crowd of fast bodies rebuilds the tree once

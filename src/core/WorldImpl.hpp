@@ -163,22 +163,32 @@ struct WorldImpl : WorldState {
     bool jointKeepsApart(std::uint32_t a, std::uint32_t b) const;
     /// Destroys the joints whose last step's reaction crossed their break thresholds, recording each.
     void breakJoints();
-    /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity: the next
+    /// A body's motion over the next step as its boxes take it: the displacement at its present velocity (a
+    /// Discrete body's at most its extent), that displacement's length (m), and how far its turn reaches (m).
+    struct StepTravel {
+        Vec2 travel;
+        double length, turn;
+    };
+    StepTravel stepTravel(const BodyData& b) const;
+    /// The box a proxy needs for a shape whose tight box is `box` on body b, at b's pose and velocity (`t`): the next
     /// step's motion and turn. A proxy that no longer holds it moves.
-    Aabb neededBox(const BodyData& b, const Aabb& box) const { return sweptBox(b, box, 1.0, 0.0); }
+    Aabb neededBox(const BodyData& b, const StepTravel& t, const Aabb& box) const {
+        return sweptBox(b, t, box, 1.0, 0.0);
+    }
     /// The box a proxy gets: the needed box reaching kLookAheadSteps of travel ahead, grown by kAabbMargin. A static
     /// body's shapes stay put (a user's move makes their proxies anew), and a partner's box already covers the
     /// partner's motion: theirs grow only by the speculative distance, the farthest apart a point is kept at rest,
     /// as Box2D v3's do. A terrain's many pieces then pair with fewer of the pieces beside the ones a body is on.
-    Aabb proxyBox(const BodyData& b, const Aabb& box) const {
+    Aabb proxyBox(const BodyData& b, const StepTravel& t, const Aabb& box) const {
         if (b.type == BodyType::Static) return box.fattened(speculativeDistance());
-        return sweptBox(b, box, kLookAheadSteps, kAabbMargin);
+        return sweptBox(b, t, box, kLookAheadSteps, kAabbMargin);
     }
+    Aabb proxyBox(const BodyData& b, const Aabb& box) const { return proxyBox(b, stepTravel(b), box); }
     /// How far apart (m) the narrow phase keeps a pair's points even when the pair does not close (4 linear slops).
     double speculativeDistance() const { return 4.0 * settings.linearSlop; }
-    /// The shape's box swept over `steps` of b's travel (a Discrete body's step at most its extent; more steps at
-    /// most kLookAheadReach and its extent, or the one step), grown by the turn's reach and by margin (m).
-    Aabb sweptBox(const BodyData& b, const Aabb& box, double steps, double margin) const;
+    /// The shape's box swept over `steps` of b's travel `t` (more steps: at most kLookAheadReach and b's extent, or
+    /// the one step), grown by the turn's reach and by margin (m).
+    Aabb sweptBox(const BodyData& b, const StepTravel& t, const Aabb& box, double steps, double margin) const;
     /// f(slot, shape) for each of the body's shapes, in the order they were added; f must not relink the list.
     template <class F>
     void forEachShape(const BodyData& b, F&& f) {
@@ -193,20 +203,22 @@ struct WorldImpl : WorldState {
     /// A body that collides (has proxies) whose motion left one of its shapes' proxy boxes, or whose box is more
     /// than kAabbMargin wider or taller than the one proxyBox gives it now.
     bool proxyOutgrown(const BodyData& b) const {
+        const StepTravel travel = stepTravel(b);
         bool outgrown = false;
         forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
             if (outgrown || shape.proxy == kNullIndex) return;
             const Aabb& box = broadPhase.fatBox(shape.proxy);
-            const Aabb wanted = proxyBox(b, shape.aabb);
+            const Aabb wanted = proxyBox(b, travel, shape.aabb);
             const Vec2 excess = (box.upper - box.lower) - (wanted.upper - wanted.lower);
-            outgrown = !box.contains(neededBox(b, shape.aabb)) || excess.maxCoeff() > kAabbMargin;
+            outgrown = !box.contains(neededBox(b, travel, shape.aabb)) || excess.maxCoeff() > kAabbMargin;
         });
         return outgrown;
     }
     /// Every shape's proxy gets the box the body's motion needs.
     void moveProxies(const BodyData& b) {
+        const StepTravel travel = stepTravel(b);
         forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-            if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, shape.aabb));
+            if (shape.proxy != kNullIndex) broadPhase.moveProxy(shape.proxy, proxyBox(b, travel, shape.aabb));
         });
     }
     /// The tight boxes of the body's shapes, and of the body, at its pose. A step keeps them only for bodies that

@@ -71,8 +71,17 @@ double coreRadius(const Geometry& g) {
 
 void WorldImpl::updateBoxes(BodyData& b) {
     if (!b.collides) return;  // bodyBounds and shapeBounds compute its boxes where asked
-    forEachShape(b, [&](std::uint32_t, ShapeData& shape) { shape.aabb = computeAabb(shape.geometry, b.xf); });
-    b.aabb = bodyBounds(b);
+    if (b.shapeHead == kNullIndex) {
+        b.aabb = bodyBounds(b);
+        return;
+    }
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    Aabb box{{kInf, kInf}, {-kInf, -kInf}};  // bodyBounds' merge, in the same pass
+    forEachShape(b, [&](std::uint32_t, ShapeData& shape) {
+        shape.aabb = computeAabb(shape.geometry, b.xf);
+        box = Aabb::merged(box, shape.aabb);
+    });
+    b.aabb = box;
 }
 
 Aabb WorldImpl::bodyBounds(const BodyData& b) const {
