@@ -151,6 +151,32 @@ TEST(Contacts, AContactEndsWhenItsProxiesPartAfterRestingSteps) {
     EXPECT_LT(world.position(ball).y(), 2.5) << "within two metres of leaving";
 }
 
+// A contact that slept while its boxes parted is tested when it wakes. A static platform moved away from a
+// sleeping ball (the move wakes only what the platform's new place touches) leaves the pair's boxes apart, and
+// narrow phases run meanwhile for another pair: the first narrow phase after the ball wakes must end the contact.
+TEST(Contacts, AContactThatSleptWhileItsBoxesPartedEndsWhenItWakes) {
+    World world;  // sleep on
+    const BodyId platform = add(world, BodyType::Static, makeBox(1.0, 0.1), {0.0, -0.1});
+    const BodyId ball = add(world, BodyType::Dynamic, makeCircle(0.25), {0.0, 0.25});
+    // Far off, a ball that never sleeps keeps a contact awake, so the narrow phase runs while the first one sleeps.
+    add(world, BodyType::Static, makeBox(1.0, 0.1), {-20.0, -0.1});
+    BodyDef awake;
+    awake.shape = makeCircle(0.25);
+    awake.position = {-20.0, 0.25};
+    awake.allowSleep = false;
+    world.createBody(awake);
+    for (int i = 0; i < 600 && world.isAwake(ball); ++i) world.step(kDt);
+    ASSERT_FALSE(world.isAwake(ball));
+    world.setTransform(platform, {50.0, -0.1}, 0.0);
+    for (int i = 0; i < 3; ++i) world.step(kDt);  // narrow phases while the ball sleeps
+    ASSERT_FALSE(world.isAwake(ball));
+    world.setAwake(ball, true);
+    world.step(kDt);
+    ASSERT_EQ(world.profile().candidatePairs, 2u) << "with the woken contact, counted before the narrow phase";
+    world.step(kDt);
+    EXPECT_EQ(world.profile().candidatePairs, 1u) << "ended by the first narrow phase after the ball woke";
+}
+
 // The narrow phase's loop is built for baseline x86-64 and for AVX2 (without FMA), and works out four kept
 // manifolds at once where it can; each build, and the scalar rule one contact at a time, must give the same bits.
 // Random boxes and circles, some static, moving and spinning, close enough that most pairs touch or nearly do,
