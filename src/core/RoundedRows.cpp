@@ -55,11 +55,11 @@ struct Turn {
 Turn turnAt(const Vec2& end, const Vec2& other, const Vec2& beyond, const Vec2& outward) {
     constexpr double kFlatSine = 1e-9;  // a joint whose turn has a smaller sine is flat (as chains take it)
     if (beyond == end) return {};
-    const Vec2 along = (end - other).normalized(), next = (beyond - end).normalized();
+    const Vec2 next = (beyond - end).normalized();
     const double sine = next.dot(outward);
     if (sine > kFlatSine) return {};
     if (sine >= -kFlatSine) return {1.0, 0.0};
-    return {next.dot(along), sine};
+    return {next.dot((end - other).normalized()), sine};
 }
 
 // Whether `point` is (to rounding) an end of `side`, along the tangent t.
