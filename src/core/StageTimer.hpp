@@ -1,5 +1,6 @@
 #pragma once
-// Adds the time from its construction to its destruction to a stage of the step's profile. Internal.
+// Time spent in the step's stages, into its profile (StepProfile): one span at a time (StageTimer), or the spans of
+// one thread that switches between stages (StageClock). Internal.
 
 #include "physim/core/StepProfile.hpp"
 
@@ -7,21 +8,6 @@
 #include <cstddef>
 
 namespace physim {
-
-class StageTimer {
-public:
-    StageTimer(StepProfile& profile, Stage stage) : profile_(profile), stage_(stage) {}
-    ~StageTimer() {
-        const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
-        profile_.secondsOf(stage_) += elapsed.count();
-        profile_.ran[static_cast<std::size_t>(stage_)] = true;
-    }
-
-private:
-    StepProfile& profile_;
-    Stage stage_;
-    std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 /// Charges one thread's consecutive spans to stages, reading the clock once at each switch where a StageTimer per
 /// span reads it twice (a step's substeps switch stages tens of times). Null profile: times nothing.
@@ -59,6 +45,15 @@ private:
     Stage stage_ = Stage::Solve;
     bool running_ = false;
     std::chrono::steady_clock::time_point start_;
+};
+
+/// Adds the time from its construction to its destruction to a stage of the step's profile.
+class StageTimer {
+public:
+    StageTimer(StepProfile& profile, Stage stage) : clock_(&profile) { clock_.enter(stage); }
+
+private:
+    StageClock clock_;
 };
 
 }  // namespace physim

@@ -191,8 +191,8 @@ bool pointOnFace(const Vec2& p1, const Vec2& p2, const Vec2& c, double radius, d
     const double onFace = s1 - radius;
     m.normal = n;
     m.pointCount = 1;
-    m.separations[0] = onFace <= std::max(margin, kSpeculativeMargin) ? onFace
-                                                                      : std::min(onFace, std::max(separation, 0.0));
+    const bool kept = onFace <= std::max(margin, kSpeculativeMargin);
+    m.separations[0] = kept ? onFace : deepestSeparation(onFace, separation);
     m.points[0] = midwayPoint(c, n, 0.0, radius, radius, onFace);
     m.ids[0] = featureId(false, kFace, 0);
     return true;

@@ -189,7 +189,7 @@ LocalManifold clip(const RoundedCore& ref, int i1, const RoundedCore& inc, bool 
     const double keep = std::max(margin, kSpeculativeMargin);
     for (int k = 0; k < candidates; ++k)
         if (separations[k] <= keep) add(k, separations[k]);
-    if (m.pointCount == 0) add(deepest, std::min(separations[deepest], std::max(separation, 0.0)));
+    if (m.pointCount == 0) add(deepest, deepestSeparation(separations[deepest], separation));
     return m;
 }
 

@@ -8,6 +8,7 @@
 
 #include "physim/core/Geometry.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -56,6 +57,10 @@ inline Vec2 midwayPoint(const Vec2& incident, const Vec2& n, double refRadius, d
                         double separation) {
     return incident + (0.5 * (refRadius - incRadius) - 0.5 * (separation + radii)) * n;
 }
+
+/// The separation (m) a manifold records for its one point when none of its candidates lies within the keep
+/// distance (clip): the deepest candidate's, but no more than the pair's separation, nor less than 0 for that.
+inline double deepestSeparation(double deepest, double pair) { return std::min(deepest, std::max(pair, 0.0)); }
 
 /// The local manifold placed by a's transform.
 NarrowResult placed(const LocalManifold& m, const Transform& xa);
