@@ -22,6 +22,13 @@ namespace physim {
 
 using ShapePair = std::pair<std::uint32_t, std::uint32_t>;  // shape slots, first < second
 
+/// What findNewPairs' `wanted` answers for a pair it is offered: take it (a new pair), decline it (offered again by
+/// the next call), or pass it by (offered again only when a proxy of the pair moves or is asked again: a pair that
+/// can never make a contact while it stays as it is). `wanted` may also answer a bool: take or decline.
+enum class Offer : std::uint8_t { Decline, Take, PassBy };
+inline Offer offerOf(bool take) { return take ? Offer::Take : Offer::Decline; }
+inline Offer offerOf(Offer offer) { return offer; }
+
 class BroadPhase {
 public:
     /// A proxy key: the tree (bit 0: 1 = static) and the proxy id in that tree.
@@ -170,8 +177,9 @@ void BroadPhase::findNewPairs(std::vector<ShapePair>& pairs, const PairSet& know
                     const std::uint32_t first = std::min(shape, other), second = std::max(shape, other);
                     // Most overlaps of a moving proxy are pairs it already has: only new ones go on to the sort.
                     if (known.contains(PairSet::key(first, second))) return true;
-                    if (wanted(first, second)) out.emplace_back(first, second);
-                    else declinedOne = true;
+                    const Offer offer = offerOf(wanted(first, second));
+                    if (offer == Offer::Take) out.emplace_back(first, second);
+                    else if (offer == Offer::Decline) declinedOne = true;
                     return true;
                 };
                 if (t == 0 || !staticWide) {

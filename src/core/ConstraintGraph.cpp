@@ -75,13 +75,16 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         rowList.clear();
         const bool hooked = static_cast<bool>(w.preSolve);  // contacts may be disabled (WorldImpl::runPreSolve)
         for (std::size_t k = 0; k < w.awakeContacts.size(); ++k) {
-            // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead.
+            // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead, the
+            // bodies only of a contact with points (on a terrain most contacts have none: they are passed over).
             if (k + 2 * kPrefetchContacts < w.awakeContacts.size())
-                __builtin_prefetch(&w.contacts[w.awakeContacts[k + 2 * kPrefetchContacts]]);
+                __builtin_prefetch(&w.contacts[w.awakeContacts[k + 2 * kPrefetchContacts]].manifold.pointCount);
             if (k + kPrefetchContacts < w.awakeContacts.size()) {
                 const ContactData& ahead = w.contacts[w.awakeContacts[k + kPrefetchContacts]];
-                __builtin_prefetch(&w.bodies[ahead.a()].awakeIndex);
-                __builtin_prefetch(&w.bodies[ahead.b()].awakeIndex);
+                if (ahead.manifold.pointCount > 0) {
+                    __builtin_prefetch(&w.bodies[ahead.a()].awakeIndex);
+                    __builtin_prefetch(&w.bodies[ahead.b()].awakeIndex);
+                }
             }
             const ContactData& c = w.contacts[w.awakeContacts[k]];
             if (c.manifold.pointCount == 0 || (hooked && c.disabled)) continue;

@@ -98,6 +98,7 @@ kernel::Motion stepAhead(const BodyData& b, double dt) {
 // enlarged boxes overlap nearly all others, this keeps the contacts to the pairs that can touch. A pair at rest
 // keeps its (empty) record instead of being asked every step.
 [[gnu::always_inline]] inline bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
+    if (A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete) return false;
     return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
@@ -626,25 +627,26 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
 
 void WorldImpl::updatePairs() {
     const double speculative = speculativeDistance();
-    // Pairs that never make a contact (two shapes of one body, two immovable bodies, a sensor: the Sensors stage
-    // finds its overlaps itself; shapes whose filters refuse each other) are taken and dropped here: declined pairs
-    // are asked about again every step. The filters are read last, for the deferred pairs only: the others are
-    // taken anyway and meet them below.
+    // Pairs that never make a contact (two immovable bodies, a sensor: the Sensors stage finds its overlaps itself;
+    // shapes whose filters refuse each other) are taken and dropped here: declined pairs are asked about again every
+    // step. The filters are read last, for the deferred pairs only: the others are taken anyway and meet them below.
+    // Two shapes of one body, and bodies joined by a joint without collideConnected (they meet only through it), are
+    // passed by: a wheel's pair with its chassis is met at every move of either. Removing that joint asks their
+    // proxies again (WorldImpl::removeJoint).
+    const bool joints = jointCount > 0;
     const auto wanted = [&](std::uint32_t a, std::uint32_t b) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
+        if (bodyA == bodyB || (joints && jointKeepsApart(bodyA, bodyB))) return Offer::PassBy;
         const BodyData& A = bodies[bodyA];
         const BodyData& B = bodies[bodyB];
-        return bodyA == bodyB || !shouldCollide(A, B) || shapes[a].sensor || shapes[b].sensor ||
-               !deferred(A, B, speculative, dt) || !shouldCollide(shapes[a].filter, shapes[b].filter);
+        return offerOf(!shouldCollide(A, B) || shapes[a].sensor || shapes[b].sensor ||
+                       !deferred(A, B, speculative, dt) || !shouldCollide(shapes[a].filter, shapes[b].filter));
     };
-    // Bodies joined by a joint without collideConnected meet only through it: their pair is taken and dropped. So
-    // is a pair the filters or the pair filter refuse (asked here, serially, once per offer).
-    const bool joints = jointCount > 0;
+    // A pair the filters or the pair filter refuse is taken and dropped (asked here, serially, once per offer).
     broadPhase.findNewPairs(newPairs, contactPairs, wanted, executor);
     for (const auto& [a, b] : newPairs) {
         const std::uint32_t bodyA = shapes[a].body, bodyB = shapes[b].body;
-        if (bodyA != bodyB && shouldCollide(bodies[bodyA], bodies[bodyB]) && !shapes[a].sensor &&
-            !shapes[b].sensor && !(joints && jointKeepsApart(bodyA, bodyB)) && pairAllowed(a, b))
+        if (shouldCollide(bodies[bodyA], bodies[bodyB]) && !shapes[a].sensor && !shapes[b].sensor && pairAllowed(a, b))
             createContact(a, b);
     }
 }

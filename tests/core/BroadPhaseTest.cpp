@@ -1,5 +1,5 @@
 // BroadPhase's pair finding: pairs with a contact are not reported again, a pair the caller declines is offered
-// again by the next call although nothing moved, proxies moved together are queried like proxies moved alone, and
+// again by the next call although nothing moved, one it passes by only once a proxy of it moves again, proxies moved together are queried like proxies moved alone, and
 // the pairs found are the brute-force overlaps however the static boxes are searched (their wide tree once built)
 // and however they change.
 
@@ -57,6 +57,29 @@ TEST(BroadPhase, ADeclinedPairIsOfferedAgainUntilTaken) {
     EXPECT_EQ(bp.moveCount(), 0u);
     bp.findNewPairs(pairs, known, take, executor);
     EXPECT_TRUE(pairs.empty()) << "taken, and nothing moved since";
+}
+
+TEST(BroadPhase, APairPassedByIsOfferedAgainOnlyWhenAProxyOfItMoves) {
+    BroadPhase bp;
+    Executor executor(1);
+    const std::int32_t a = bp.createProxy(box(0, 0, 1, 1), 0, false);
+    bp.createProxy(box(0.5, 0, 1.5, 1), 1, false);
+    const PairSet known;
+    std::vector<ShapePair> pairs;
+    int asked = 0;
+    const auto passBy = [&](std::uint32_t, std::uint32_t) {
+        ++asked;
+        return Offer::PassBy;
+    };
+    bp.findNewPairs(pairs, known, passBy, executor);
+    EXPECT_TRUE(pairs.empty());
+    EXPECT_EQ(asked, 1);
+    EXPECT_EQ(bp.moveCount(), 0u) << "passed by: no proxy is asked again";
+    bp.findNewPairs(pairs, known, passBy, executor);
+    EXPECT_EQ(asked, 1) << "nothing moved: not offered";
+    bp.moveProxy(a, box(0.1, 0, 1.1, 1));
+    bp.findNewPairs(pairs, known, passBy, executor);
+    EXPECT_EQ(asked, 2) << "a proxy of the pair moved: offered again";
 }
 
 TEST(BroadPhase, ProxiesMovedTogetherAreQueriedAsIfMovedAlone) {
