@@ -32,6 +32,9 @@ struct BodyData {
     bool collides = true;                  // its shapes have broad-phase proxies (World::setCollides)
     Vec2 force = Vec2::Zero();      // N at the centre of mass, accumulated until the next step uses it
     double torque = 0.0;            // N m
+    // How far (m) from the centre of mass the body's turn moves its outline: its shapes' cores' reach. A round part
+    // turns onto itself about its core, so a wheel about its centre reaches 0 however fast it spins. <= extent.
+    double turnReach = 0.0;
 
     // Mass. Zero inverse mass or inertia means immovable (static, kinematic) or not rotating (fixedRotation).
     Vec2 localCenter = Vec2::Zero();  // centre of mass in the body frame, m

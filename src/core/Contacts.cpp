@@ -136,12 +136,13 @@ struct PairSide {
     T vx, vy;   // m/s
     T w;        // rad/s
     T extent;   // m
+    T turnReach;  // m (BodyData::turnReach)
     T qc, qs;   // rotation
     T angle;    // rad
 };
 
 [[gnu::always_inline]] inline PairSide<double> sideOf(const BodyData& b) {
-    return {b.center.x(), b.center.y(), b.v.x(), b.v.y(), b.w, b.extent, b.xf.q.c, b.xf.q.s, b.angle};
+    return {b.center.x(), b.center.y(), b.v.x(), b.v.y(), b.w, b.extent, b.turnReach, b.xf.q.c, b.xf.q.s, b.angle};
 }
 
 template <bool V>
@@ -160,10 +161,11 @@ template <bool V>
 [[gnu::always_inline]] inline WideMask isNot(WideMask x) { return ~x; }
 
 // How far (m) the pair can close in a step at its present velocities, plus what gravity or forces add: the
-// manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact.
+// manifold keeps speculative points up to this far apart so the solver can stop the bodies at contact. A turn
+// closes no more than its outline moves: a wheel spinning about its centre closes nothing by spinning.
 template <bool V, class T>
 [[gnu::always_inline]] inline T reach(const PairSide<T>& A, const PairSide<T>& B, double dt) {
-    const T turn = magnitude(A.w) * A.extent + magnitude(B.w) * B.extent;
+    const T turn = magnitude(A.w) * A.turnReach + magnitude(B.w) * B.turnReach;
     const T dx = B.vx - A.vx, dy = B.vy - A.vy;
     return (squareRoot<V>(dx * dx + dy * dy) + turn) * dt;
 }
@@ -417,7 +419,9 @@ static_assert(offsetof(BodyData, center) == kRotationAt + 16 && offsetof(BodyDat
     fourLanes(b, kRotationAt, pose);
     fourLanes(b, kRotationAt + 32, motion);
     fourLanes(b, kRotationAt + 64, spin);
-    return {pose[2], pose[3], motion[2], motion[3], spin[0], spin[1], pose[0], pose[1], motion[0]};
+    Wide turnReach;
+    for (int k = 0; k < kLanes; ++k) turnReach[k] = b[k]->turnReach;
+    return {pose[2], pose[3], motion[2], motion[3], spin[0], spin[1], turnReach, pose[0], pose[1], motion[0]};
 }
 
 // A cache as four 32-byte runs: (margin, -, offset), (angle, -, normal), and each point's (onA, onB).

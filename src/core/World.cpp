@@ -157,8 +157,9 @@ WorldImpl::StepTravel WorldImpl::stepTravel(const BodyData& b) const {
     // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
     // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
     // world would pair it with everything on the way. However fast it spins, the shape stays within its extent of
-    // the centre of mass, which stays inside the box of the path: the turn never reaches further than the extent.
-    StepTravel t{b.v * dt, 0.0, std::min(std::abs(b.w) * dt * b.extent, b.extent)};
+    // the centre of mass, which stays inside the box of the path: the turn moves the outline no further than its
+    // reach (BodyData::turnReach), which a wheel's, turning onto itself, does not move at all.
+    StepTravel t{b.v * dt, 0.0, std::min(std::abs(b.w) * dt * b.turnReach, b.turnReach)};
     t.length = t.travel.norm();
     if (b.detection == CollisionDetection::Discrete && t.length > b.extent) {
         t.travel *= b.extent / t.length;

@@ -147,9 +147,12 @@ void WorldImpl::updateMass(std::uint32_t body) {
     // The body's points keep their velocities: the new centre moves as the point it is moved.
     if (b.movable()) b.v += cross(b.w, b.center - oldCenter);
     b.extent = 0.0;
+    b.turnReach = 0.0;
     b.coreRadius = std::numeric_limits<double>::infinity();
     forEachShape(b, [&](std::uint32_t, const ShapeData& shape) {
-        b.extent = std::max(b.extent, extentAbout(shape.geometry, b.localCenter));
+        const double extent = extentAbout(shape.geometry, b.localCenter);
+        b.extent = std::max(b.extent, extent);
+        b.turnReach = std::max(b.turnReach, std::max(extent - rollingRadius(shape.geometry), 0.0));
         // The thinnest part with area decides how far the body may move in a step before the Continuous stage
         // looks at it; zero-area parts (segments) are ground, not what tunnels.
         if (shape.unitMass.area > 0.0) b.coreRadius = std::min(b.coreRadius, coreRadius(shape.geometry));

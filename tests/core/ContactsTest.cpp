@@ -151,6 +151,32 @@ TEST(Contacts, AContactEndsWhenItsProxiesPartAfterRestingSteps) {
     EXPECT_LT(world.position(ball).y(), 2.5) << "within two metres of leaving";
 }
 
+// A body's turn moves its outline only as far as its shapes' cores reach from its centre of mass: a wheel spinning
+// about its centre keeps its outline where it is, so its box does not grow with the spin and it pairs with nothing
+// 0.3 m below it (the box's margin is 0.1 m); a dumbbell of two such circles, whose circles do swing round, sweeps
+// down to the ground within the step and must pair with it.
+TEST(Contacts, ASpinningWheelPairsOnlyWithWhatItsOutlineCanReach) {
+    WorldSettings settings;
+    settings.gravity = {0.0, 0.0};
+    World world(settings);
+    add(world, BodyType::Static, makeBox(20.0, 0.5), {0.0, -0.5});
+    constexpr double kSpin = 200.0;  // rad/s: 3.3 rad a step
+    add(world, BodyType::Dynamic, makeCircle(0.5), {-5.0, 0.8}, 0.0, Vec2::Zero(), kSpin);
+    world.step(kDt);
+    EXPECT_EQ(world.profile().candidatePairs, 0u) << "the wheel's outline stays 0.3 m above the ground";
+
+    BodyDef d;
+    d.shape = makeCircle(0.25, {-0.5, 0.0});
+    d.position = {5.0, 0.55};  // the circles' lowest points 0.3 m above the ground, their sweep 0.2 m into it
+    const BodyId dumbbell = world.createBody(d);
+    ShapeDef other;
+    other.geometry = makeCircle(0.25, {0.5, 0.0});
+    world.createShape(dumbbell, other);  // the centre of mass midway between the circles
+    world.setAngularVelocity(dumbbell, kSpin);
+    world.step(kDt);
+    EXPECT_EQ(world.profile().candidatePairs, 2u) << "each circle of the dumbbell meets the ground";
+}
+
 // A contact that slept while its boxes parted is tested when it wakes. A static platform moved away from a
 // sleeping ball (the move wakes only what the platform's new place touches) leaves the pair's boxes apart, and
 // narrow phases run meanwhile for another pair: the first narrow phase after the ball wakes must end the contact.

@@ -353,10 +353,11 @@ TEST(Solver, TwoThreadsInOrderGiveOneThreadsBitsForAnyPassCounts) {
 // Circles made row by row from the floor up and dropped into a box: their contacts begin in the order the pile
 // forms as it falls, not in the bodies' order. Each colour's rows are laid out in their bodies' order, so on two
 // threads the halves of each colour are the lower and the upper part of the pile, and they meet only in a band
-// across it: few head blocks (49 of 196; the same bits, so the same count, on every run). Laid out in the order
-// the contacts began, the halves met in nearly every block, and the group went colour by colour (counting in
-// neither). Either way, one thread's bits.
-std::vector<double> circlePile(int threads, StepProfile& profile) {
+// across it: few head blocks. Laid out in the order the contacts began, the halves met in nearly every block, and
+// the group went colour by colour (counting in neither). Either way, one thread's bits. How many blocks the band
+// takes depends on how the pile happens to settle, which a nanometre in where the circles start changes (from about
+// a fifth to a half of the blocks): three piles lifted by 0, 1 and 2 nm are counted together.
+std::vector<double> circlePile(int threads, StepProfile& profile, double lift = 0.0) {
     World world(crowdSettings(threads));
     auto wall = [&](double x, double y, double hx, double hy) {
         BodyDef d;
@@ -373,7 +374,7 @@ std::vector<double> circlePile(int threads, StepProfile& profile) {
         const int row = k / 18;
         BodyDef d;
         d.shape = makeCircle(0.25);
-        d.position = {-5.4 + 0.6 * (k % 18) + 0.3 * (row % 2), 0.5 + 0.6 * row};
+        d.position = {-5.4 + 0.6 * (k % 18) + 0.3 * (row % 2), 0.5 + 0.6 * row + lift};
         ids.push_back(world.createBody(d));
     }
     for (int i = 0; i < 240; ++i) world.step(kDt);
@@ -386,8 +387,15 @@ TEST(Solver, APileSplitsIntoHalvesThatMeetInFewBlocksHoweverItsContactsBegan) {
     const std::vector<double> onePoses = circlePile(1, one);
     EXPECT_TRUE(sameBits(onePoses, circlePile(2, two)));
     EXPECT_EQ(one.halvedBlocks, 0u);
-    ASSERT_GT(two.halvedBlocks, 0u) << "the pile is halved, its heads under half its blocks";
-    EXPECT_LT(3 * two.headBlocks, two.halvedBlocks) << two.headBlocks << " head blocks of " << two.halvedBlocks;
+    std::size_t heads = two.headBlocks, halved = two.halvedBlocks;
+    for (const double lift : {1e-9, 2e-9}) {
+        circlePile(2, two, lift);
+        heads += two.headBlocks;
+        halved += two.halvedBlocks;
+    }
+    ASSERT_GT(halved, 0u) << "the piles are halved, their heads under half their blocks";
+    // The halves laid out in the contacts' order met in nearly every block; a band is well under half of them.
+    EXPECT_LT(5 * heads, 2 * halved) << heads << " head blocks of " << halved;
 }
 
 // Joint rows are coloured and each colour is solved on the team's threads: plain pins four at a time in lanes, other
