@@ -29,8 +29,11 @@ bool shouldCollide(const BodyData& a, const BodyData& b) {
 // only stop bodies that pass each other. A continuous body's enlarged box covers its whole sweep, so in a crowd
 // most pairs are such. Should a velocity change in the step make them meet after all, the Continuous stage
 // stops the continuous body at the impact. Discrete pairs keep their points: nothing else would catch them.
+[[gnu::always_inline]] inline bool bothDiscrete(const BodyData& A, const BodyData& B) {
+    return A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete;
+}
 [[gnu::always_inline]] inline bool needsPoints(const BodyData& A, const BodyData& B, double gap, double dt) {
-    if (A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete) return true;
+    if (bothDiscrete(A, B)) return true;
     // The centre's straight path over the step (the turn does not matter to a circle about the centre).
     auto path = [dt](const BodyData& b) {
         const Vec2 end = b.center + b.v * dt;
@@ -98,8 +101,7 @@ kernel::Motion stepAhead(const BodyData& b, double dt) {
 // enlarged boxes overlap nearly all others, this keeps the contacts to the pairs that can touch. A pair at rest
 // keeps its (empty) record instead of being asked every step.
 [[gnu::always_inline]] inline bool deferred(const BodyData& A, const BodyData& B, double gap, double dt) {
-    if (A.detection == CollisionDetection::Discrete && B.detection == CollisionDetection::Discrete) return false;
-    return (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
+    return !bothDiscrete(A, B) && (moving(A) || moving(B)) && !needsPoints(A, B, gap, dt);
 }
 
 void keep(ManifoldCache& k, const Manifold& m, const BodyData& A, const BodyData& B, double margin,
@@ -446,9 +448,7 @@ template <bool V>
         c[k] = &p.contacts[p.awakeContacts[i + k]];
         A[k] = &p.bodies[c[k]->a()];
         B[k] = &p.bodies[c[k]->b()];
-        const bool discrete =
-            A[k]->detection == CollisionDetection::Discrete && B[k]->detection == CollisionDetection::Discrete;
-        if (discrete && c[k]->cache.margin >= 0.0) lanes |= 1u << k;
+        if (bothDiscrete(*A[k], *B[k]) && c[k]->cache.margin >= 0.0) lanes |= 1u << k;
         faces = faces || c[k]->cache.pointCount == 2;
     }
     if (lanes == 0 || !faces) {

@@ -245,8 +245,8 @@ PHYSIM_FIELDS(WorldSettings, r.gravity, r.substeps, r.velocityIterations, r.rela
               r.sleepLinearTolerance, r.sleepAngularTolerance, r.timeToSleep, r.threads, r.frictionMixing,
               r.restitutionMixing);
 PHYSIM_FIELDS(BodyData, r.xf, r.center, r.angle, r.v, r.w, r.extent, r.detection, r.type, r.awakeIndex, r.collides,
-              r.force, r.torque, r.turnReach, r.localCenter, r.mass, r.invMass, r.inertia, r.invInertia, r.density, r.unitMass,
-              r.shapeHead, r.shapeTail, r.shapeCount, r.coreRadius, r.precision, r.useGravity, r.gravityScale,
+              r.force, r.torque, r.turnReach, r.localCenter, r.mass, r.invMass, r.inertia, r.invInertia, r.density,
+              r.unitMass, r.shapeHead, r.shapeTail, r.shapeCount, r.coreRadius, r.precision, r.useGravity, r.gravityScale,
               r.attracting, r.fixedRotation, r.allowSleep, r.alive, r.generation, r.aabb, r.contactHead,
               r.contactCount, r.jointHead, r.island, r.islandPrev, r.islandNext, r.sleepTime);
 PHYSIM_FIELDS(ShapeData, r.body, r.proxy, r.aabb, r.geometry, r.density, r.restitution, r.staticFriction,

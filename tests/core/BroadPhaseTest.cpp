@@ -1,7 +1,7 @@
 // BroadPhase's pair finding: pairs with a contact are not reported again, a pair the caller declines is offered
-// again by the next call although nothing moved, one it passes by only once a proxy of it moves again, proxies moved together are queried like proxies moved alone, and
-// the pairs found are the brute-force overlaps however the static boxes are searched (their wide tree once built)
-// and however they change.
+// again by the next call although nothing moved, one it passes by only once a proxy of it moves again, proxies moved
+// together are queried like proxies moved alone, and the pairs found are the brute-force overlaps however the static
+// boxes are searched (their wide tree once built) and however they change.
 
 #include "BroadPhase.hpp"
 #include "Executor.hpp"
