@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -16,7 +17,7 @@
 namespace physim {
 namespace {
 
-// Colouring asks for the bodies of the contact this far ahead, and for that contact twice as far ahead.
+// Colouring asks for the bodies of the contact with points this far ahead, and for that contact twice as far ahead.
 constexpr std::size_t kPrefetchContacts = 8;
 // Islands are solved in groups of about this many bodies: a group's rows (~260 bytes each, two or three per body)
 // and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
@@ -25,12 +26,12 @@ constexpr std::size_t kGroupBodies = 256;
 
 }  // namespace
 
-JointConstraint jointRow(const WorldImpl& w, std::uint32_t joint, double h, const Softness& rodSoftness) {
-    JointConstraint row;
+void prepareJointRow(JointConstraint& row, const WorldImpl& w, std::uint32_t joint, double h,
+                     const Softness& rodSoftness) {
+    row = JointConstraint{};
     row.joint = joint;
     prepareJoint(row, w.joints[joint], w.bodies, h, rodSoftness);
     row.h = arcStep(w.settings, row.h);
-    return row;
 }
 
 // A colour's rows may lie in any order (they share no dynamic body), and a block whose rows all have one point
@@ -74,20 +75,15 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         rowRefs.resize(w.awakeContacts.size());
         rowList.clear();
         const bool hooked = static_cast<bool>(w.preSolve);  // contacts may be disabled (WorldImpl::runPreSolve)
-        for (std::size_t k = 0; k < w.awakeContacts.size(); ++k) {
-            // The contacts lie close to their order in memory, their bodies do not: ask for the records ahead, the
-            // bodies only of a contact with points (on a terrain most contacts have none: they are passed over).
-            if (k + 2 * kPrefetchContacts < w.awakeContacts.size())
-                __builtin_prefetch(&w.contacts[w.awakeContacts[k + 2 * kPrefetchContacts]].manifold.pointCount);
-            if (k + kPrefetchContacts < w.awakeContacts.size()) {
-                const ContactData& ahead = w.contacts[w.awakeContacts[k + kPrefetchContacts]];
-                if (ahead.manifold.pointCount > 0) {
-                    __builtin_prefetch(&w.bodies[ahead.a()].awakeIndex);
-                    __builtin_prefetch(&w.bodies[ahead.b()].awakeIndex);
-                }
-            }
+        // Only the contacts with points are read (awakeHasPoints): on a terrain most awake contacts have none.
+        const std::size_t contactCount = w.awakeContacts.size();
+        const std::uint8_t* const hasPoints = w.awakeHasPoints.data();
+        assert(w.awakeHasPoints.size() == contactCount);
+        for (std::size_t k = 0; k < contactCount; ++k) {
+            assert(hasPoints[k] == (w.contacts[w.awakeContacts[k]].manifold.pointCount > 0 ? 1 : 0));
+            if (!hasPoints[k]) continue;
             const ContactData& c = w.contacts[w.awakeContacts[k]];
-            if (c.manifold.pointCount == 0 || (hooked && c.disabled)) continue;
+            if (hooked && c.disabled) continue;
             const BodyData& A = w.bodies[c.a()];
             const BodyData& B = w.bodies[c.b()];
             // The lowest colour neither dynamic body has yet; the overflow if both have them all.
@@ -120,7 +116,7 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
             if (!joint.alive || !joint.isRow()) continue;
             const bool active = w.bodies[joint.b].awake() || (joint.twoBodies() && w.bodies[joint.a].awake());
             if (!active) continue;
-            jointConstraints.push_back(jointRow(w, j, h, rodSoftness));
+            prepareJointRow(jointConstraints.emplace_back(), w, j, h, rodSoftness);
         }
         // Chains of pins under a large mass ratio are solved as blocks, after the colours (PinChains.hpp).
         chains.find(jointConstraints, n, w.settings.directChainMassRatio);
@@ -182,7 +178,8 @@ std::size_t ConstraintGraph::layOut(WorldImpl& w, bool byIsland, double h, const
         segmentFill.assign(segmentStart.begin(), segmentStart.end() - 1);
         for (const std::uint32_t k : sortedRows) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         for (std::size_t s = 0; s + 1 < segmentStart.size(); ++s)
-            if (s % kSegments < kColours) putOnePointRowsFirst(w, segmentStart[s], segmentStart[s + 1]);
+            if (s % kSegments < kColours && segmentStart[s + 1] - segmentStart[s] > 1)
+                putOnePointRowsFirst(w, segmentStart[s], segmentStart[s + 1]);
         for (const std::uint32_t k : rowList)
             if (constraintColour[k] == kColours) rowContacts[segmentFill[segmentOf(k)]++] = rowRefs[k];
         // kLanes rows of a colour to a block; an overflow row shares no block (it may share a body with the next).

@@ -30,8 +30,9 @@ constexpr std::size_t kSegments = kColours + 1;  // a group's rows: kColours col
 // Where two threads cut a colour's blocks [first, end) in halves: the second half starts here.
 inline std::size_t middleBlock(std::size_t first, std::size_t end) { return first + (end - first) / 2; }
 
-/// Joint `joint`'s row for this step (substep h).
-JointConstraint jointRow(const WorldImpl& w, std::uint32_t joint, double h, const Softness& rodSoftness);
+/// Makes `row` joint `joint`'s row for this step (substep h), every field anew (in place: a row is 224 bytes).
+void prepareJointRow(JointConstraint& row, const WorldImpl& w, std::uint32_t joint, double h,
+                     const Softness& rodSoftness);
 /// The substep a pin's or weld's row bends its aim over (solvePoint): h, or 0 (no bend) without
 /// WorldSettings::jointArcs.
 inline double arcStep(const WorldSettings& settings, double h) { return settings.jointArcs ? h : 0.0; }

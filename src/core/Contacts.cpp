@@ -359,7 +359,10 @@ template <bool V>
 // Records what the refresh of contact i changed: its flag, and whether it gained its first point or lost its last.
 [[gnu::always_inline]] inline void noteChange(const RefreshPass& p, std::size_t i, ContactData& c, bool hadPoints,
                                               bool touching) {
-    if (hadPoints != (c.manifold.pointCount > 0)) p.pointsChanged->store(true, std::memory_order_relaxed);
+    if (hadPoints != (c.manifold.pointCount > 0)) {
+        p.pointsChanged->store(true, std::memory_order_relaxed);
+        if (p.hasPoints) p.hasPoints[i] = c.manifold.pointCount > 0 ? 1 : 0;
+    }
     if (touching != c.touching) p.flags[i] = touching ? kBegan : kEnded;
     else if (!hadPoints && c.manifold.pointCount > 0) p.flags[i] = kReached;  // speculative points, not touching
     c.touching = touching;
@@ -613,6 +616,7 @@ void WorldImpl::destroyContact(std::uint32_t index, bool wakeBodies) {
 void WorldImpl::addAwakeContact(std::uint32_t index) {
     contacts[index].awakeIndex = static_cast<std::int32_t>(awakeContacts.size());
     awakeContacts.push_back(index);
+    awakeHasPoints.push_back(contacts[index].manifold.pointCount > 0 ? 1 : 0);
     if (contacts[index].manifold.pointCount > 0) solver.layoutChanged();
     awakeContactsChanged = true;
 }
@@ -623,8 +627,10 @@ void WorldImpl::removeAwakeContact(std::uint32_t index) {
     if (contacts[index].manifold.pointCount > 0 || (last != index && contacts[last].manifold.pointCount > 0))
         solver.layoutChanged();
     awakeContacts[static_cast<std::size_t>(at)] = last;
+    awakeHasPoints[static_cast<std::size_t>(at)] = awakeHasPoints.back();
     contacts[last].awakeIndex = at;
     awakeContacts.pop_back();
+    awakeHasPoints.pop_back();
     contacts[index].awakeIndex = kNullIndex;
     awakeContactsChanged = true;
 }
@@ -670,7 +676,7 @@ void WorldImpl::updateContacts() {
     checkedBoxRevision = broadPhase.boxRevision();
     constexpr std::size_t kPrefetchFromContacts = 8192;
     const RefreshPass pass{contacts.data(), awakeContacts.data(), bodies.data(), shapes.data(), &broadPhase,
-                           contactFlags.data(),
+                           contactFlags.data(), awakeHasPoints.data(),
                            speculative, reuseTolerance, dt, overlapsKnown, n >= kPrefetchFromContacts,
                            &pointsChanged};
     executor.parallelFor(n, 64, [&](std::size_t begin, std::size_t end, int) { refreshContacts(pass, begin, end); });

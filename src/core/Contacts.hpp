@@ -26,6 +26,7 @@ struct RefreshPass {
     const ShapeData* shapes = nullptr;
     const BroadPhase* broadPhase = nullptr;  // read only where !overlapsKnown
     std::uint8_t* flags = nullptr;           // ContactChange, kNone on entry
+    std::uint8_t* hasPoints = nullptr;       // per contact of the loop: its manifold has points (kept up); or null
     double speculative = 0.0;                // m: points this far apart are kept
     double tolerance = 0.0;                  // m: a kept manifold is rebuilt while its pair moved less than this
     double dt = 0.0;                         // s

@@ -360,6 +360,7 @@ struct StateFields<WorldState> {
     static void each(Io& io, R& r) {
         io(r.settings, r.bodies, r.freeBodies, r.liveCount, r.dynamicCount, r.continuousCount, r.shapeRevision,
            r.awake, r.shapes, r.freeShapes, r.shapeLiveCount, r.contacts, r.freeContacts, r.awakeContacts,
+           r.awakeHasPoints,
            r.contactPairs, r.contactSurfaces, r.contactCores, r.contactImpulses, r.joints, r.freeJoints, r.jointCount, r.rowJointCount,
            r.breakableJoints, r.jointEvents, r.islands, r.freeIslands, r.broadPhase, r.continuous, r.effects,
            r.sensors, r.newPairs, r.contactFlags, r.changedContacts, r.awakeContactsChanged, r.checkedBoxRevision,

@@ -148,7 +148,7 @@ void Solver::solve(WorldImpl& w) {
             for (std::size_t i = begin; i < end; ++i) {
                 const std::size_t k = refreshPins_ ? inPlaceRows_[i] : i;
                 const bool chained = rows[k].chained;
-                rows[k] = jointRow(w, rows[k].joint, h, rodSoftness);
+                prepareJointRow(rows[k], w, rows[k].joint, h, rodSoftness);
                 rows[k].chained = chained;
             }
         });
@@ -451,7 +451,7 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
         return count;
     };
     // Pin blocks [b, e) for the step: from their rows, or made ready from the bodies where the layout is kept.
-    const double pinArcStep = arcStep(w.settings, h);  // the rows' h (jointRow)
+    const double pinArcStep = arcStep(w.settings, h);  // the rows' h (prepareJointRow)
     auto packPinBlocks = [&](std::size_t b, std::size_t e) {
         for (std::size_t k = b; k < e; ++k) {
             if (refreshPins_) {

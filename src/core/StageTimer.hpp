@@ -19,7 +19,7 @@ public:
     ~StageClock() { stop(); }
     /// From now on the time counts in `stage`.
     void enter(Stage stage) {
-        if (!profile_) return;
+        if (!profile_ || (running_ && stage == stage_)) return;  // the span goes on: no reading
         const auto now = std::chrono::steady_clock::now();
         charge(now);
         stage_ = stage;

@@ -152,36 +152,6 @@ void WorldImpl::wakeOverlapping(const Aabb& box) {
         if (bodies[body].type == BodyType::Dynamic && !bodies[body].awake()) wakeBody(body);
 }
 
-WorldImpl::StepTravel WorldImpl::stepTravel(const BodyData& b) const {
-    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
-    // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
-    // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
-    // world would pair it with everything on the way. However fast it spins, the shape stays within its extent of
-    // the centre of mass, which stays inside the box of the path: the turn moves the outline no further than its
-    // reach (BodyData::turnReach), which a wheel's, turning onto itself, does not move at all.
-    StepTravel t{b.v * dt, 0.0, std::min(std::abs(b.w) * dt * b.turnReach, b.turnReach)};
-    t.length = t.travel.norm();
-    if (b.detection == CollisionDetection::Discrete && t.length > b.extent) {
-        t.travel *= b.extent / t.length;
-        t.length = b.extent;
-    }
-    return t;
-}
-
-Aabb WorldImpl::sweptBox(const BodyData& b, const StepTravel& t, const Aabb& aabb, double steps, double margin) const {
-    if (b.type == BodyType::Static) return aabb.fattened(margin);
-    // Further ahead, up to kLookAheadReach and the body's extent: a body that travels that far in a step gets no
-    // more than the step.
-    Vec2 travel = t.travel;
-    const double length = t.length;
-    if (steps > 1.0 && length > 0.0)
-        travel *= std::min(steps * length, std::max(length, std::min(b.extent, kLookAheadReach))) / length;
-    Aabb box = aabb;
-    box.lower = box.lower.cwiseMin(aabb.lower + travel);
-    box.upper = box.upper.cwiseMax(aabb.upper + travel);
-    return box.fattened(margin + t.turn);
-}
-
 // --- World -------------------------------------------------------------------------------------------
 
 World::World(const WorldSettings& settings) : impl_(std::make_unique<WorldImpl>()) { setSettings(settings); }

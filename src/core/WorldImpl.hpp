@@ -81,6 +81,9 @@ struct WorldState {
     std::vector<ContactData> contacts;
     std::vector<std::uint32_t> freeContacts;
     std::vector<std::uint32_t> awakeContacts;  // contacts with an awake body: the narrow phase's work list
+    // Per awake contact (awakeContacts' order): its manifold has points, so it may have a row. The layout reads
+    // these bytes instead of every awake contact's record; most awake contacts on a terrain have none.
+    std::vector<std::uint8_t> awakeHasPoints;
     PairSet contactPairs;                      // shape slots (a, b) of every contact, a < b
     // Per contact slot, its surface terms: empty until some contact has one (surfaceMaterials), then kept for every
     // contact mixed since (those mixed before had none: a slot past the end reads as zero terms).
@@ -316,6 +319,38 @@ void WorldImpl::forEachContactOfShape(std::uint32_t shape, F&& f) {
         key = contacts[c].next[key & 1];  // f may destroy the contact
         if (contacts[c].shapeA() == shape || contacts[c].shapeB() == shape) f(c);
     }
+}
+
+// Inline: the step asks for every moving body's (Solver::finishBody, proxyOutgrown).
+inline WorldImpl::StepTravel WorldImpl::stepTravel(const BodyData& b) const {
+    // Where the body is and where its velocity takes it over the next step, and how far its turn reaches: the
+    // speculative contacts then see what it will meet. A discrete body's reach is capped at its own size: a body
+    // that moves farther in a step is the Continuous stage's (against static bodies), and sweeping it across the
+    // world would pair it with everything on the way. However fast it spins, the shape stays within its extent of
+    // the centre of mass, which stays inside the box of the path: the turn moves the outline no further than its
+    // reach (BodyData::turnReach), which a wheel's, turning onto itself, does not move at all.
+    StepTravel t{b.v * dt, 0.0, std::min(std::abs(b.w) * dt * b.turnReach, b.turnReach)};
+    t.length = t.travel.norm();
+    if (b.detection == CollisionDetection::Discrete && t.length > b.extent) {
+        t.travel *= b.extent / t.length;
+        t.length = b.extent;
+    }
+    return t;
+}
+
+inline Aabb WorldImpl::sweptBox(const BodyData& b, const StepTravel& t, const Aabb& aabb, double steps,
+                                double margin) const {
+    if (b.type == BodyType::Static) return aabb.fattened(margin);
+    // Further ahead, up to kLookAheadReach and the body's extent: a body that travels that far in a step gets no
+    // more than the step.
+    Vec2 travel = t.travel;
+    const double length = t.length;
+    if (steps > 1.0 && length > 0.0)
+        travel *= std::min(steps * length, std::max(length, std::min(b.extent, kLookAheadReach))) / length;
+    Aabb box = aabb;
+    box.lower = box.lower.cwiseMin(aabb.lower + travel);
+    box.upper = box.upper.cwiseMax(aabb.upper + travel);
+    return box.fattened(margin + t.turn);
 }
 
 }  // namespace physim

@@ -55,7 +55,7 @@ std::size_t WorldSnapshot::bytes() const {
     if (!state_) return 0;
     const WorldState& s = *state_;
     return sizeof(WorldState) + held(s.bodies) + held(s.shapes) + held(s.contacts) + held(s.joints) + held(s.islands) +
-           held(s.awake) + held(s.awakeContacts) + held(s.contactSurfaces) +
+           held(s.awake) + held(s.awakeContacts) + held(s.awakeHasPoints) + held(s.contactSurfaces) +
            held(s.contactCores) + held(s.contactImpulses);
 }
 

@@ -282,7 +282,8 @@ TEST(Contacts, EveryBuildOfTheNarrowPhaseGivesTheSameBits) {
         for (std::size_t c = 0; c < copyCount; ++c) {
             std::atomic<bool> pointsChanged{false};
             // Every other build also asks for records ahead, which must change nothing.
-            const RefreshPass pass{copies[c].data(), awake.data(), bodies.data(), shapes.data(), nullptr, flags[c].data(),
+            const RefreshPass pass{copies[c].data(), awake.data(), bodies.data(), shapes.data(), nullptr,
+                                   flags[c].data(), nullptr,
                                    0.02, 5e-4, 1.0 / 60.0, true, c % 2 == 1, &pointsChanged};
             if (c < codes.size())
                 refreshContacts(pass, 0, contacts.size(), codes[c]);

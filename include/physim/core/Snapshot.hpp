@@ -43,7 +43,7 @@ public:
     std::size_t bytes() const;
 
     /// The file format's version: a file of another version is refused.
-    static constexpr std::uint32_t kFormatVersion = 5;
+    static constexpr std::uint32_t kFormatVersion = 6;
     /// Writes the snapshot in the format above to `out` (a stream opened in binary mode). Throws
     /// std::invalid_argument for an empty snapshot and std::runtime_error if the stream fails.
     void write(std::ostream& out) const;

@@ -47,7 +47,7 @@ void framePins(PinFrame& frame, const JointConstraint* const* rows, std::uint32_
                const std::vector<JointData>& joints, const std::vector<BodyData>& bodies);
 /// Makes a block packed last step ready for this one, where the layout is kept (the same rows, joints, awake bodies
 /// and body masses): the arms, the centres' offset and the masses at the step's start, from the awake bodies' step
-/// records (sims) and the others' records, bit for bit as jointRow and packPins would give them, without reading
+/// records (sims) and the others' records, bit for bit as prepareJointRow and packPins would give them, without reading
 /// the rows or the joints; the impulses stay (storePins left the joints the same). `arcStep`: the row's h (0
 /// without WorldSettings::jointArcs), `invH` and `softness` the substep's.
 void refreshPins(PinBlock& block, const PinFrame& frame, const SolverBodySim* sims,
