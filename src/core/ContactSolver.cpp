@@ -265,7 +265,8 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
                                                        const BlockRows* rows, std::size_t count, const RowRef* refs,
                                                        const ContactData* contacts, const SolverBodySim* sims,
                                                        const BodyData* bodies, const ContactCores* cores,
-                                                       const ShapeData* shapes, ContactBlockEnds* ends) {
+                                                       const ShapeData* shapes, ContactBlockEnds* ends,
+                                                       RoundedSides* sides) {
     PreparedRows prepared;
     SolverBodySim still[2][kLanes];  // the lanes' static or sleeping sides, A and B (rowBody)
     for (std::size_t j = 0; j < count; ++j) {
@@ -308,10 +309,12 @@ static_assert(offsetof(ContactData, cache) <= 3 * kCacheLine && alignof(ContactD
         if (cores && ends)
             for (int k = 0; k < lanes; ++k) {
                 const std::uint32_t index = cold[j].lanes[k].contact;
-                const ContactCores& sides = cores[index];
-                if (sides.radiusA + sides.radiusB > 0.0 && (sides.facesA || sides.facesB)) {
+                const ContactCores& rounding = cores[index];
+                if (rounding.radiusA + rounding.radiusB > 0.0 && (rounding.facesA || rounding.facesB)) {
                     const ContactData& c = contacts[index];
-                    prepareRounded(block, ends[j], k, c.manifold, sides, shapes, bodies[c.a()], bodies[c.b()]);
+                    prepareRounded(block, ends[j], k, c.manifold, rounding, shapes, bodies[c.a()], bodies[c.b()],
+                                   sides ? &sides[index] : nullptr);
+                    prepared.rounded = true;
                 }
             }
         for (int k = 0; k < lanes; ++k) prepared.bounce = prepared.bounce || cold[j].restitution[k] > 0.0;
@@ -909,8 +912,8 @@ struct PrepareContacts {
                                                    std::size_t count, const RowRef* refs, const ContactData* contacts,
                                                    const SolverBodySim* sims, const BodyData* bodies,
                                                    const ContactCores* cores, const ShapeData* shapes,
-                                                   ContactBlockEnds* ends) {
-        return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends);
+                                                   ContactBlockEnds* ends, RoundedSides* sides) {
+        return prepareLoop(blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes, ends, sides);
     }
 };
 struct WarmStartContacts {
@@ -941,9 +944,9 @@ struct RelaxMaterial {
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
                              const BodyData* bodies, WideCode code, const ContactCores* cores,
-                             const ShapeData* shapes, ContactBlockEnds* ends) {
+                             const ShapeData* shapes, ContactBlockEnds* ends, RoundedSides* sides) {
     return runWide<PrepareContacts>(code, blocks, cold, rows, count, refs, contacts, sims, bodies, cores, shapes,
-                                    ends);
+                                    ends, sides);
 }
 
 void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,

@@ -167,19 +167,21 @@ void startBlock(ContactBlock& block, ContactBlockCold& cold, int lanes);
 struct PreparedRows {
     std::size_t turning = 0;  // rows a body of which turns
     bool bounce = false;      // some row can bounce (restitution > 0)
+    bool rounded = false;     // some row has a rounded side on a straight one (RoundedRows.hpp)
 };
+struct RoundedSides;
 /// Prepares blocks [0, count): block j's lanes from rows refs[rows[j].first ..] (rows[j].count of them; the other
 /// lanes empty rows), each from its contact's manifold and its bodies (lever arms at the centres of mass): an awake
 /// side (index >= 0) from the solver's copy in sims, a static or sleeping one (kNullIndex) from its record in
 /// bodies. Four lanes at once; a lane's bits never depend on the others or on `code` (as for the passes below).
 /// With `cores` (per contact, ContactCores), the shapes and `ends` (ends[j] beside block j), a rounded side's rows
 /// on a straight side are measured from its centres of curvature (RoundedRows.hpp); without, from the contact
-/// points.
+/// points. With `sides` (per contact slot), those sides are found again only where what they follow from changed.
 PreparedRows prepareContacts(ContactBlock* blocks, ContactBlockCold* cold, const BlockRows* rows, std::size_t count,
                              const RowRef* refs, const ContactData* contacts, const SolverBodySim* sims,
                              const BodyData* bodies, WideCode code = WideCode::Best,
                              const ContactCores* cores = nullptr, const ShapeData* shapes = nullptr,
-                             ContactBlockEnds* ends = nullptr);
+                             ContactBlockEnds* ends = nullptr, RoundedSides* sides = nullptr);
 /// After prepareContacts, in a world that uses surface materials: blocks [0, count)'s terms (material[j] block j's),
 /// from surfaces[i] for contact i (ContactSurface). A pass of its own, so preparation without them is as it was.
 void prepareMaterials(const ContactBlock* blocks, const ContactBlockCold* cold, ContactBlockMaterial* material,

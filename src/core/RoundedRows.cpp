@@ -1,6 +1,8 @@
 #include "RoundedRows.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 namespace physim {
@@ -49,9 +51,6 @@ CoreSide coreSide(const Geometry& g, const Transform& xf, const Vec2& outward) {
 // At a concave joint the next side rises toward the rounded side, and the rows, whose normal is this side's for the
 // whole step, would push along it against a slope and give energy: there the surface is taken to end, as at an open
 // end, which folds straight back, (-1, 0), so the rounded side leaves this side by pivoting about its end.
-struct Turn {
-    double c = -1.0, s = 0.0;
-};
 Turn turnAt(const Vec2& end, const Vec2& other, const Vec2& beyond, const Vec2& outward) {
     constexpr double kFlatSine = 1e-9;  // a joint whose turn has a smaller sine is flat (as chains take it)
     if (beyond == end) return {};
@@ -63,19 +62,60 @@ Turn turnAt(const Vec2& end, const Vec2& other, const Vec2& beyond, const Vec2& 
 }
 
 // Whether `point` is (to rounding) an end of `side`, along the tangent t.
-bool atEnd(const CoreSide& side, const Vec2& point, const Vec2& t) {
+bool atEnd(const FacingSide& side, const Vec2& point, const Vec2& t) {
     constexpr double kTolerance = 1e-9;  // m: a clipped point lies on its end to rounding
     return std::abs(t.dot(side.end0 - point)) < kTolerance || std::abs(t.dot(side.end1 - point)) < kTolerance;
+}
+
+// The side of `g` (at pose xf) facing along `outward`, with its turns.
+FacingSide facingSide(const Geometry& g, const Transform& xf, const Vec2& outward) {
+    const CoreSide side = coreSide(g, xf, outward);
+    if (!side.found) return {};
+    return {true, side.end0, side.end1, turnAt(side.end0, side.end1, side.beyond0, outward),
+            turnAt(side.end1, side.end0, side.beyond1, outward)};
+}
+
+bool sameBits(double x, double y) {
+    std::uint64_t u, v;
+    std::memcpy(&u, &x, sizeof u);
+    std::memcpy(&v, &y, sizeof v);
+    return u == v;
+}
+bool sameBits(const Vec2& x, const Vec2& y) { return sameBits(x.x(), y.x()) && sameBits(x.y(), y.y()); }
+bool sameBits(const Transform& x, const Transform& y) {
+    return sameBits(x.p, y.p) && sameBits(x.q.c, y.q.c) && sameBits(x.q.s, y.q.s);
+}
+
+// Whether `kept` holds the sides prepareRounded would find now: found from the same shapes (a slot's generation
+// names one shape for life), normal and poses of the bodies whose sides were asked for.
+bool stillHolds(const RoundedSides& kept, const Manifold& manifold, const ContactCores& cores, const BodyData& a,
+                const BodyData& b) {
+    return kept.kept && kept.shapeA == manifold.shapeA && kept.shapeB == manifold.shapeB &&
+           sameBits(kept.normal, manifold.normal) && (!cores.facesA || sameBits(kept.xfA, a.xf)) &&
+           (!cores.facesB || sameBits(kept.xfB, b.xf));
 }
 
 }  // namespace
 
 void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const Manifold& manifold,
-                    const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b) {
+                    const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b,
+                    RoundedSides* kept) {
     const Vec2 n = manifold.normal, t = perp(n);
-    CoreSide sideA, sideB;  // A's straight side facing B (outward n), B's facing A (outward -n)
-    if (cores.facesA) sideA = coreSide(shapes[manifold.shapeA.index].geometry, a.xf, n);
-    if (cores.facesB) sideB = coreSide(shapes[manifold.shapeB.index].geometry, b.xf, -n);
+    // A's straight side facing B (outward n), B's facing A (outward -n).
+    RoundedSides fresh;
+    RoundedSides& sides = kept ? *kept : fresh;
+    if (!kept || !stillHolds(*kept, manifold, cores, a, b)) {
+        sides.kept = true;
+        sides.shapeA = manifold.shapeA;
+        sides.shapeB = manifold.shapeB;
+        sides.normal = n;
+        sides.xfA = a.xf;
+        sides.xfB = b.xf;
+        sides.a = cores.facesA ? facingSide(shapes[manifold.shapeA.index].geometry, a.xf, n) : FacingSide{};
+        sides.b = cores.facesB ? facingSide(shapes[manifold.shapeB.index].geometry, b.xf, -n) : FacingSide{};
+    }
+    const FacingSide& sideA = sides.a;
+    const FacingSide& sideB = sides.b;
     if (!sideA.found && !sideB.found) return;  // a vertex on a vertex: the rows keep the contact points
     for (int i = 0; i < manifold.pointCount; ++i) {
         const ContactPoint& p = manifold.points[i];
@@ -85,17 +125,14 @@ void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const
         // The interval of u = t . (coreB - coreA) (0 now) within which the vertex is over the straight side: B's
         // vertex on A's side, unless B's point lies inside a straight side of B's (then it is A's vertex on B's).
         const bool onA = sideA.found && !(sideB.found && !atEnd(sideB, coreB, t));
-        const CoreSide& side = onA ? sideA : sideB;
+        const FacingSide& side = onA ? sideA : sideB;
         // u at each end: B's vertex moves along t over A's side; A's vertex, -t over B's.
         const double e0 = onA ? t.dot(side.end0 - coreA) : -t.dot(side.end0 - coreB);
         const double e1 = onA ? t.dot(side.end1 - coreA) : -t.dot(side.end1 - coreB);
-        const Vec2 outward = onA ? n : Vec2(-n);
-        const Turn turn0 = turnAt(side.end0, side.end1, side.beyond0, outward);
-        const Turn turn1 = turnAt(side.end1, side.end0, side.beyond1, outward);
         const bool firstLow = e0 <= e1;
         const double lo = firstLow ? e0 : e1, hi = firstLow ? e1 : e0;
-        const Turn& low = firstLow ? turn0 : turn1;
-        const Turn& high = firstLow ? turn1 : turn0;
+        const Turn& low = firstLow ? side.turn0 : side.turn1;
+        const Turn& high = firstLow ? side.turn1 : side.turn0;
         // From the anchors (each side's surface point across a gap, the midway point in overlap: prepareContacts).
         const double inward = 0.5 * std::min(p.separation, 0.0);
         ContactBlock::Point& q = block.points[i];

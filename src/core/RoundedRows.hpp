@@ -20,13 +20,40 @@
 
 namespace physim {
 
+/// How a side's surface goes on past one of its ends, as the rows follow it (RoundedRows.cpp, turnAt): the
+/// direction as cosine and sine in the side's frame (along the side out of the end, along its outward normal).
+struct Turn {
+    double c = -1.0, s = 0.0;
+};
+
+/// A shape's straight core side that faces the other shape along the contact normal (outward n for A's, -n for
+/// B's), if it has one: its ends in world metres, and the turns past them.
+struct FacingSide {
+    bool found = false;
+    Vec2 end0 = Vec2::Zero(), end1 = Vec2::Zero();
+    Turn turn0, turn1;
+};
+
+/// A contact's facing sides as prepareRounded last found them, with what they follow from: the shapes, the normal
+/// and the poses of the bodies whose sides were asked for (compared bit for bit). A wheel on a terrain's piece
+/// keeps all of them from step to step while it rolls over the piece's face; the solver keeps one per contact slot.
+struct RoundedSides {
+    bool kept = false;
+    ShapeId shapeA, shapeB;
+    Vec2 normal = Vec2::Zero();
+    Transform xfA, xfB;
+    FacingSide a, b;
+};
+
 /// Lane `lane` of a prepared block, whose contact has a rounded side and a side that may be straight
 /// (cores.radiusA + cores.radiusB > 0, cores.facesA or facesB): where a core's straight side faces the other along
 /// the normal, its points' separation anchors moved onto the cores and the side's ends kept in `ends` (beside the
 /// block), which marks the block (ContactBlock::ends); else the lane is left as prepared. The lever arms, the
-/// masses and the separation at the step's start are unchanged. a, b are the contact's bodies.
+/// masses and the separation at the step's start are unchanged. a, b are the contact's bodies. `kept` (or null):
+/// the contact's sides from the last call, used while what they follow from is the same, else found again.
 void prepareRounded(ContactBlock& block, ContactBlockEnds& ends, int lane, const Manifold& manifold,
-                    const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b);
+                    const ContactCores& cores, const ShapeData* shapes, const BodyData& a, const BodyData& b,
+                    RoundedSides* kept = nullptr);
 
 /// Point i's separation s (m, along the normal from its anchors), once the block's centres of curvature may
 /// have passed their sides' ends (c.ends): past an end, the centre's distance from the surface that goes on there

@@ -200,6 +200,8 @@ void Solver::solve(WorldImpl& w) {
     rowsBase_.resize(n);
     warmStarts_.resize(n);
     if (!graph_.chains.rows.empty()) chainScratch_.resize(static_cast<std::size_t>(w.executor.workerSlots()));
+    if (roundedRows_.value.load(std::memory_order_relaxed) && roundedSides_.size() < w.contacts.size())
+        roundedSides_.resize(w.contacts.size());
     std::atomic<std::size_t> turningRows{0};
     for (std::size_t g = 0; g < groups; ++g)
         if (graph_.spreads(g, w.executor.threads(), n)) turningRows += solveGroup(w, g, true, 0);
@@ -584,13 +586,16 @@ std::size_t Solver::solveGroup(WorldImpl& w, std::size_t g, bool timed, int work
                                              blockAt(b), coldAt(b), graph_.blockRows.data() + b, e - b,
                                              graph_.rowContacts.data(), w.contacts.data(), sims_.data(),
                                              w.bodies.data(), WideCode::Best, w.contactCores.data(),
-                                             w.shapes.data(), endsAt(b));
+                                             w.shapes.data(), endsAt(b),
+                                             roundedSides_.empty() ? nullptr : roundedSides_.data());
                                          if (materials)
                                              prepareMaterials(blockAt(b), coldAt(b), materialAt(b),
                                                               graph_.blockRows.data() + b, e - b,
                                                               w.contactSurfaces.data());
                                          turningRows += prepared.turning;  // one add per chunk
                                          if (prepared.bounce) bounces.store(true, std::memory_order_relaxed);
+                                         if (prepared.rounded)
+                                             roundedRows_.value.store(true, std::memory_order_relaxed);
                                      }
                                      warmStartContacts(blockAt(b), blockAt(e), st);
                                      if (materials && sub > 0) warmStartRolling(blockAt(b), blockAt(e), materialAt(b), st);

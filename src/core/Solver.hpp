@@ -9,12 +9,14 @@
 #include "ConstraintGraph.hpp"
 #include "ContactSolver.hpp"
 #include "EnergyTally.hpp"
+#include "RoundedRows.hpp"
 #include "SolverData.hpp"
 #include "joints/PinLanes.hpp"
 #include "joints/WheelLanes.hpp"
 
 #include "physim/core/Aabb.hpp"
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -32,6 +34,8 @@ public:
 
     /// Something the rows' layout depends on changed (ConstraintGraph::stale): the next step lays them out anew.
     void layoutChanged() { graph_.stale = true; }
+    /// The world's state was replaced (a restore): the contacts' kept sides may name another history's shapes.
+    void forgetRoundedSides() { roundedSides_.clear(); }
     /// The contact rows of the last layout.
     std::size_t rowCount() const { return graph_.rowContacts.size(); }
 
@@ -69,6 +73,18 @@ private:
     std::vector<ContactBlockCold> contactCold_;
     std::vector<ContactBlockMaterial> contactMaterial_;  // beside contactCold_, only once the world uses materials
     std::vector<ContactBlockEnds> contactEnds_;  // beside contactCold_; a block's written only where it has ends
+    // Per contact slot, its rounded rows' straight sides as last found (RoundedRows.hpp): kept from the step after
+    // the first that prepared such a row (roundedRows_), so that a world without them holds none.
+    std::vector<RoundedSides> roundedSides_;
+    struct SetOnce {  // set by any chunk of a parallel preparation; copied with the state (a snapshot)
+        std::atomic<bool> value{false};
+        SetOnce() = default;
+        SetOnce(const SetOnce& other) : value(other.value.load(std::memory_order_relaxed)) {}
+        SetOnce& operator=(const SetOnce& other) {
+            value.store(other.value.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            return *this;
+        }
+    } roundedRows_;
     std::vector<std::int8_t> rowImpact_;         // per block lane in use: its impact event's point; -1: none
     std::vector<double> rowImpactSpeed_;         // per block lane with an impact: how fast it met, m/s
     ContactPass contactPassSettings_;            // this step's pass constants

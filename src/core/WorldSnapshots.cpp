@@ -89,6 +89,7 @@ void World::restore(const WorldSnapshot& snapshot) {
     }
     w.settings.threads = threads;
     w.solver.layoutChanged();  // the rows' groups depend on the thread count
+    w.solver.forgetRoundedSides();
     if (w.ledger.enabled) setEnergyLedger(true);  // the ledger starts again from the restored state
 }
 

@@ -2,12 +2,17 @@
 // joints keeps its energy and height, and a disc rolling off a platform leaves its face where its centre passes the
 // corner.
 
+#include "BodyData.hpp"
+#include "RoundedRows.hpp"
+#include "ShapeData.hpp"
 #include "physim/core/World.hpp"
 #include "support/Scenes.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <vector>
 
 namespace physim {
 namespace {
@@ -126,6 +131,65 @@ TEST(RoundedRows, SlowDiscRollsAboutTheCornerUntilItsWeightCannotHoldIt) {
     }
     // Within half a degree (measured 1e-4 rad): a 240 Hz step turns it by a third of a degree there.
     EXPECT_NEAR(left, predicted, 0.5 * M_PI / 180.0);
+}
+
+// prepareRounded keeps a contact's straight sides (their ends and turns) from one step to the next while their
+// shapes, the normal and the bodies' poses stay the same bits. Whatever changed, the rows it prepares from what it
+// kept are those it prepares from nothing: a disc on a chain piece, then the piece's slot holding another piece
+// (a new generation, as a destroyed shape's slot does), the chain moved, the normal tilted by a hair.
+TEST(RoundedRows, KeptSidesGiveTheRowsOfSidesFoundAnew) {
+    std::vector<ShapeData> shapes(2);
+    ChainSegment piece;
+    piece.ghost1 = {-1.0, 0.0};
+    piece.segment = makeSegment({0.0, 0.0}, {1.0, 0.0});
+    piece.ghost2 = {2.0, -0.3};  // a convex joint at the piece's second end: a turn of its own
+    shapes[0].geometry = piece;
+    shapes[1].geometry = makeCircle(0.25);
+    BodyData ground, disc;
+    disc.xf.p = {0.5, 0.25};
+    Manifold m;
+    m.shapeA = ShapeId{0, 1};
+    m.shapeB = ShapeId{1, 1};
+    m.normal = {0.0, 1.0};
+    m.pointCount = 1;
+    m.points[0].point = {0.5, 0.0};
+    const ContactCores cores = coresOf(shapes[0], shapes[1]);
+    ASSERT_TRUE(cores.facesA);
+    ASSERT_FALSE(cores.facesB);
+    // The block lane and ends prepareRounded writes, from the kept sides or (kept null) from nothing.
+    struct Prepared {
+        ContactBlock block{};
+        ContactBlockEnds ends{};
+    };
+    auto prepare = [&](RoundedSides* kept) {
+        Prepared out;
+        prepareRounded(out.block, out.ends, 0, m, cores, shapes.data(), ground, disc, kept);
+        return out;
+    };
+    auto same = [](const Prepared& x, const Prepared& y) {
+        return std::memcmp(&x.ends, &y.ends, sizeof x.ends) == 0 &&
+               std::memcmp(&x.block.points, &y.block.points, sizeof x.block.points) == 0;
+    };
+    RoundedSides kept;
+    const Prepared first = prepare(&kept);
+    ASSERT_TRUE(kept.kept);
+    EXPECT_TRUE(same(first, prepare(nullptr)));
+    EXPECT_TRUE(same(first, prepare(&kept))) << "kept, unchanged";
+
+    ChainSegment other = piece;  // the slot's next shape: its ends elsewhere, flat on
+    other.segment = makeSegment({0.2, 0.0}, {0.8, 0.0});
+    other.ghost1 = {-0.5, 0.0};
+    other.ghost2 = {1.5, 0.0};
+    shapes[0].geometry = other;
+    m.shapeA = ShapeId{0, 2};
+    const Prepared anew = prepare(nullptr);
+    EXPECT_FALSE(same(first, anew)) << "the test needs sides that differ";
+    EXPECT_TRUE(same(anew, prepare(&kept))) << "another shape in the slot";
+
+    ground.xf.p = {0.1, 0.0};
+    EXPECT_TRUE(same(prepare(nullptr), prepare(&kept))) << "the chain's body moved";
+    m.normal = Vec2(1e-12, 1.0).normalized();
+    EXPECT_TRUE(same(prepare(nullptr), prepare(&kept))) << "the normal tilted";
 }
 
 }  // namespace
