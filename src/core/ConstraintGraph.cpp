@@ -17,8 +17,6 @@
 namespace physim {
 namespace {
 
-// Colouring asks for the bodies of the contact with points this far ahead, and for that contact twice as far ahead.
-constexpr std::size_t kPrefetchContacts = 8;
 // Islands are solved in groups of about this many bodies: a group's rows (~260 bytes each, two or three per body)
 // and bodies stay in a core's cache through all of its substeps' passes, where one sweep of a large scene's rows
 // per pass streams them from memory. Smaller groups leave more lanes of their colours' last blocks empty.
