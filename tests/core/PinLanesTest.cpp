@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 namespace physim {
@@ -31,21 +32,34 @@ bool sameBits(const test::JointLaneCase& a, const test::JointLaneCase& b) {
     return true;
 }
 
+// Each build of the loops on `start`, `perColour` blocks to a call: the case's bits must be the scalar rows'.
+void expectScalarBits(const test::JointLaneCase& scalar, const test::JointLaneCase& start, std::size_t perColour,
+                      const std::string& what) {
+    for (const WideCode code : test::runnableWideCodes()) {
+        test::JointLaneCase lanes = start;
+        std::vector<PinBlock> blocks = test::packJointBlocks<PinBlock>(lanes, packPins);
+        test::byColour(blocks, perColour, [&](PinBlock* b, PinBlock* e) { warmStartPins(b, e, lanes.states(), code); });
+        for (const bool useBias : {true, false})
+            test::byColour(blocks, perColour, [&](PinBlock* b, PinBlock* e) {
+                solvePins(b, e, lanes.states(), useBias, code);
+            });
+        storePins(blocks.data(), blocks.data() + blocks.size(), lanes.joints);
+        EXPECT_TRUE(sameBits(scalar, lanes)) << what << ", build " << static_cast<int>(code);
+    }
+}
+
+// The scalar rows run a warm start, a solve and a relax pass over all rows; the lanes a colour (a call) at a time.
+// Side by side, two blocks go to each call, which the loops take together (inPairs).
 TEST(RevolutePinLanes, EveryBuildGivesTheScalarRowsBits) {
     for (unsigned seed = 1; seed <= 20; ++seed) {
-        test::JointLaneCase scalar = makeCase(seed);
+        const test::JointLaneCase start = makeCase(seed);
+        test::JointLaneCase scalar = start;
         test::solveJointRowsOneByOne(scalar, 1);
-        for (const WideCode code : test::runnableWideCodes()) {
-            test::JointLaneCase lanes = makeCase(seed);
-            std::vector<PinBlock> blocks = test::packJointBlocks<PinBlock>(lanes, packPins);
-            PinBlock* const begin = blocks.data();
-            PinBlock* const end = begin + blocks.size();
-            warmStartPins(begin, end, lanes.states(), code);
-            solvePins(begin, end, lanes.states(), true, code);
-            solvePins(begin, end, lanes.states(), false, code);
-            storePins(begin, end, lanes.joints);
-            EXPECT_TRUE(sameBits(scalar, lanes)) << "seed " << seed << ", build " << static_cast<int>(code);
-        }
+        expectScalarBits(scalar, start, 1, "seed " + std::to_string(seed));
+        const test::JointLaneCase pairs = test::sideBySide(start, makeCase(seed + 100));
+        test::JointLaneCase pairsScalar = pairs;
+        test::solveJointRowsOneByOne(pairsScalar, 1);
+        expectScalarBits(pairsScalar, pairs, 2, "side by side, seed " + std::to_string(seed));
     }
 }
 

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace physim {
@@ -49,28 +50,43 @@ bool sameBits(const test::JointLaneCase& a, const test::JointLaneCase& b) {
     return true;
 }
 
+// Each build of the loops on `lanes`, `perColour` blocks to a call: the case's bits must be the scalar rows'.
+void expectScalarBits(const test::JointLaneCase& scalar, const test::JointLaneCase& start, std::size_t perColour,
+                      const std::string& what) {
+    for (const WideCode code : test::runnableWideCodes()) {
+        test::JointLaneCase lanes = start;
+        std::vector<WheelBlock> blocks = test::packJointBlocks<WheelBlock>(lanes, packWheels);
+        for (int substep = 0; substep < 2; ++substep) {
+            test::byColour(blocks, perColour, [&](WheelBlock* b, WheelBlock* e) {
+                warmStartWheels(b, e, lanes.states(), code);
+            });
+            for (const bool useBias : {true, false})
+                test::byColour(blocks, perColour, [&](WheelBlock* b, WheelBlock* e) {
+                    solveWheels(b, e, lanes.states(), useBias, code);
+                });
+        }
+        storeWheels(blocks.data(), blocks.data() + blocks.size(), lanes.joints);
+        EXPECT_TRUE(sameBits(scalar, lanes)) << what << ", build " << static_cast<int>(code);
+    }
+}
+
+// The scalar rows run warm start, solve and relax passes over all rows; the lanes a colour (a call) at a time.
+// Side by side, two blocks go to each call, which the loops take together (inPairs).
 TEST(WheelJointLanes, EveryBuildGivesTheScalarRowsBits) {
     int saturated = 0;  // motors at their cap after the passes: the clamp's rule was exercised
     for (unsigned seed = 1; seed <= 20; ++seed) {
-        test::JointLaneCase scalar = makeCase(seed);
+        const test::JointLaneCase start = makeCase(seed);
+        test::JointLaneCase scalar = start;
         test::solveJointRowsOneByOne(scalar, 2);
         for (const JointConstraint& row : scalar.rows) {
             const WheelJoint& wheel = std::get<WheelJoint>(scalar.joints[row.joint].params);
             if (wheel.enableMotor && std::abs(wheel.motorImpulse) == row.maxImpulse) ++saturated;
         }
-        for (const WideCode code : test::runnableWideCodes()) {
-            test::JointLaneCase lanes = makeCase(seed);
-            std::vector<WheelBlock> blocks = test::packJointBlocks<WheelBlock>(lanes, packWheels);
-            WheelBlock* const begin = blocks.data();
-            WheelBlock* const end = begin + blocks.size();
-            for (int substep = 0; substep < 2; ++substep) {
-                warmStartWheels(begin, end, lanes.states(), code);
-                solveWheels(begin, end, lanes.states(), true, code);
-                solveWheels(begin, end, lanes.states(), false, code);
-            }
-            storeWheels(begin, end, lanes.joints);
-            EXPECT_TRUE(sameBits(scalar, lanes)) << "seed " << seed << ", build " << static_cast<int>(code);
-        }
+        expectScalarBits(scalar, start, 1, "seed " + std::to_string(seed));
+        const test::JointLaneCase pairs = test::sideBySide(start, makeCase(seed + 100));
+        test::JointLaneCase pairsScalar = pairs;
+        test::solveJointRowsOneByOne(pairsScalar, 2);
+        expectScalarBits(pairsScalar, pairs, 2, "side by side, seed " + std::to_string(seed));
     }
     EXPECT_GT(saturated, 0);
 }

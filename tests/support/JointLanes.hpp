@@ -8,6 +8,7 @@
 #include "JointData.hpp"
 #include "Joints.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -87,6 +88,14 @@ inline void solveJointRowsOneByOne(JointLaneCase& c, int substeps) {
     }
 }
 
+/// Runs `pass(begin, end)` over `blocks` a colour at a time, `perColour` blocks to a colour (1 for a case, whose
+/// blocks reuse each other's bodies; 2 for sideBySide's), as the solver calls the loops.
+template <class Block, class Pass>
+void byColour(std::vector<Block>& blocks, std::size_t perColour, Pass&& pass) {
+    for (std::size_t b = 0; b < blocks.size(); b += perColour)
+        pass(blocks.data() + b, blocks.data() + std::min(b + perColour, blocks.size()));
+}
+
 /// The case's blocks packed for the lanes by `pack` (packPins, packWheels).
 template <class Block, class Pack>
 std::vector<Block> packJointBlocks(JointLaneCase& c, Pack&& pack) {
@@ -97,6 +106,37 @@ std::vector<Block> packJointBlocks(JointLaneCase& c, Pack&& pack) {
         pack(blocks[b], rows.data(), static_cast<std::uint32_t>(rows.size()), c.joints);
     }
     return blocks;
+}
+
+/// Cases a and b side by side on disjoint bodies (b's rows name bodies JointLaneCase::kBodies further on, and joints
+/// after a's), their blocks alternating a's, b's: blocks 2k and 2k + 1 share no moving body, as the blocks of one
+/// joint colour, which the four-lane loops take two at a time (LaneBlocks.hpp's inPairs).
+inline JointLaneCase sideBySide(JointLaneCase a, const JointLaneCase& b) {
+    JointLaneCase c;
+    c.bodies = a.bodies;
+    c.bodies.insert(c.bodies.end(), b.bodies.begin() + 1, b.bodies.end());
+    c.joints = a.joints;
+    c.joints.insert(c.joints.end(), b.joints.begin(), b.joints.end());
+    const auto moved = [](std::int32_t index) {
+        return index == kNullIndex ? index : index + JointLaneCase::kBodies;
+    };
+    for (std::size_t k = 0; k < a.blocks.size(); ++k)
+        for (const bool second : {false, true}) {
+            const JointLaneCase& from = second ? b : a;
+            std::vector<int> block;
+            for (const int r : from.blocks[k]) {
+                JointConstraint row = from.rows[static_cast<std::size_t>(r)];
+                if (second) {
+                    row.indexA = moved(row.indexA);
+                    row.indexB = moved(row.indexB);
+                    row.joint += static_cast<std::uint32_t>(a.joints.size());
+                }
+                block.push_back(static_cast<int>(c.rows.size()));
+                c.rows.push_back(row);
+            }
+            c.blocks.push_back(block);
+        }
+    return c;
 }
 
 /// Whether two values have the same bits (-0 and +0 differ, a NaN equals itself).

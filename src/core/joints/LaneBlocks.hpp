@@ -2,6 +2,7 @@
 // What the joint blocks solved in lanes share (PinLanes.hpp, WheelLanes.hpp): the fields every row has, packed lane
 // by lane the same way for each kind. Internal.
 
+#include "../BodyLanes.hpp"
 #include "../Wide.hpp"
 #include "JointShared.hpp"
 
@@ -40,6 +41,31 @@ void packRowFields(Block& block, const JointConstraint& row, std::uint32_t lane)
     block.joint[k] = row.joint;
     if (rowMoves(row.indexA, row.invMassA)) block.writesA |= 1u << lane;
     if (rowMoves(row.indexB, row.invMassB)) block.writesB |= 1u << lane;
+}
+
+/// Runs `work(block, A, B)` on each block of [begin, end) between the gather and the scatter of its bodies. The
+/// blocks must share no dynamic body (one joint colour's): two blocks' bodies are gathered before either is written
+/// back, so that their rows are two independent chains of operations that the core overlaps (a block alone is one
+/// long chain, and waits on it).
+template <class Block, class Work>
+[[gnu::always_inline]] inline void inPairs(Block* begin, Block* end, SolverBody* states, Work&& work) {
+    Block* p = begin;
+    for (; end - p >= 2; p += 2) {
+        WideSide A0 = gather<true>(p[0].indexA, states), B0 = gather<true>(p[0].indexB, states);
+        WideSide A1 = gather<true>(p[1].indexA, states), B1 = gather<true>(p[1].indexB, states);
+        work(p[0], A0, B0);
+        work(p[1], A1, B1);
+        scatter(p[0].indexA, p[0].writesA, A0, states);
+        scatter(p[0].indexB, p[0].writesB, B0, states);
+        scatter(p[1].indexA, p[1].writesA, A1, states);
+        scatter(p[1].indexB, p[1].writesB, B1, states);
+    }
+    if (p != end) {
+        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
+        work(*p, A, B);
+        scatter(p->indexA, p->writesA, A, states);
+        scatter(p->indexB, p->writesB, B, states);
+    }
 }
 
 }  // namespace physim

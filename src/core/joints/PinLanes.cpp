@@ -30,16 +30,11 @@ struct Arms {
     B.w = B.w + p.invIB * (r.rBx * Py - r.rBy * Px);
 }
 
-// RevoluteJoint::warmStart.
-[[gnu::always_inline]] inline void warmStartLoop(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
-    for (const PinBlock* p = begin; p != end; ++p) {
-        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
-        apply(*p, A, B, arms(*p, A, B), p->impulseX, p->impulseY);
-        A.w = A.w - p->invIA * p->turnImpulse;
-        B.w = B.w + p->invIB * p->turnImpulse;
-        scatter(p->indexA, p->writesA, A, states);
-        scatter(p->indexB, p->writesB, B, states);
-    }
+// RevoluteJoint::warmStart on one block's lanes, its bodies gathered.
+[[gnu::always_inline]] inline void warmStartBlock(const PinBlock& p, WideSide& A, WideSide& B) {
+    apply(p, A, B, arms(p, A, B), p.impulseX, p.impulseY);
+    A.w = A.w - p.invIA * p.turnImpulse;
+    B.w = B.w + p.invIB * p.turnImpulse;
 }
 
 // JointShared.hpp's pointBend: B's arm's bend less A's, for bodies turning at wA and wB.
@@ -52,64 +47,64 @@ struct Arms {
     y = by - ay;
 }
 
-// JointShared.hpp's solvePoint and solvePointMass.
+// JointShared.hpp's solvePoint and solvePointMass on one block's lanes, its bodies gathered.
 template <bool UseBias>
-[[gnu::always_inline]] inline void solveLoop(PinBlock* begin, PinBlock* end, SolverBody* states) {
-    for (PinBlock* p = begin; p != end; ++p) {
-        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
-        const Arms r = arms(*p, A, B);
-        // The relative velocity of the points, B.v + w x rB - A.v - w x rA.
-        const Wide cdotX = ((B.vx + -B.w * r.rBy) - A.vx) - -A.w * r.rAy;
-        const Wide cdotY = ((B.vy + B.w * r.rBx) - A.vy) - A.w * r.rAx;
-        Wide rhsX = cdotX, rhsY = cdotY, bendX = splat(0.0), bendY = splat(0.0), impulseScale = splat(0.0);
-        if constexpr (UseBias) {
-            const Wide sepX = ((p->deltaX + (B.dpx - A.dpx)) + r.rBx) - r.rAx;
-            const Wide sepY = ((p->deltaY + (B.dpy - A.dpy)) + r.rBy) - r.rAy;
-            if (p->h > 0.0) bend(*p, A.w, B.w, r, bendX, bendY);
-            rhsX = p->massScale * (cdotX + p->biasRate * sepX) + bendX;
-            rhsY = p->massScale * (cdotY + p->biasRate * sepY) + bendY;
-            impulseScale = p->impulseScale;
-        }
-        const Wide m = p->invMassA + p->invMassB;
-        const Wide k11 = (m + p->invIA * r.rAy * r.rAy) + p->invIB * r.rBy * r.rBy;
-        const Wide k12 = -p->invIA * r.rAx * r.rAy - p->invIB * r.rBx * r.rBy;
-        const Wide k22 = (m + p->invIA * r.rAx * r.rAx) + p->invIB * r.rBx * r.rBx;
-        const Wide det = k11 * k22 - k12 * k12;
-        const WideMask solvable = det > splat(0.0);  // else the scalar row does nothing (an unused lane)
-        const Wide invDet = splat(1.0) / (solvable ? det : splat(1.0));
-        const Wide solvedX = (k22 * rhsX - k12 * rhsY) * invDet, solvedY = (k11 * rhsY - k12 * rhsX) * invDet;
-        Wide ix = -solvedX - impulseScale * p->impulseX;
-        Wide iy = -solvedY - impulseScale * p->impulseY;
-        if (UseBias && p->h > 0.0) {
-            const Wide wA = A.w - p->invIA * (r.rAx * iy - r.rAy * ix);
-            const Wide wB = B.w + p->invIB * (r.rBx * iy - r.rBy * ix);
-            Wide againX, againY;
-            bend(*p, wA, wB, r, againX, againY);
-            againX = againX - bendX;
-            againY = againY - bendY;
-            ix = ix - (k22 * againX - k12 * againY) * invDet;
-            iy = iy - (k11 * againY - k12 * againX) * invDet;
-        }
-        const Wide Px = solvable ? ix : splat(0.0), Py = solvable ? iy : splat(0.0);
-        p->impulseX = solvable ? p->impulseX + Px : p->impulseX;
-        p->impulseY = solvable ? p->impulseY + Py : p->impulseY;
-        apply(*p, A, B, r, Px, Py);
-        scatter(p->indexA, p->writesA, A, states);
-        scatter(p->indexB, p->writesB, B, states);
+[[gnu::always_inline]] inline void solveBlock(PinBlock& p, WideSide& A, WideSide& B) {
+    const Arms r = arms(p, A, B);
+    // The relative velocity of the points, B.v + w x rB - A.v - w x rA.
+    const Wide cdotX = ((B.vx + -B.w * r.rBy) - A.vx) - -A.w * r.rAy;
+    const Wide cdotY = ((B.vy + B.w * r.rBx) - A.vy) - A.w * r.rAx;
+    Wide rhsX = cdotX, rhsY = cdotY, bendX = splat(0.0), bendY = splat(0.0), impulseScale = splat(0.0);
+    if constexpr (UseBias) {
+        const Wide sepX = ((p.deltaX + (B.dpx - A.dpx)) + r.rBx) - r.rAx;
+        const Wide sepY = ((p.deltaY + (B.dpy - A.dpy)) + r.rBy) - r.rAy;
+        if (p.h > 0.0) bend(p, A.w, B.w, r, bendX, bendY);
+        rhsX = p.massScale * (cdotX + p.biasRate * sepX) + bendX;
+        rhsY = p.massScale * (cdotY + p.biasRate * sepY) + bendY;
+        impulseScale = p.impulseScale;
     }
+    const Wide m = p.invMassA + p.invMassB;
+    const Wide k11 = (m + p.invIA * r.rAy * r.rAy) + p.invIB * r.rBy * r.rBy;
+    const Wide k12 = -p.invIA * r.rAx * r.rAy - p.invIB * r.rBx * r.rBy;
+    const Wide k22 = (m + p.invIA * r.rAx * r.rAx) + p.invIB * r.rBx * r.rBx;
+    const Wide det = k11 * k22 - k12 * k12;
+    const WideMask solvable = det > splat(0.0);  // else the scalar row does nothing (an unused lane)
+    const Wide invDet = splat(1.0) / (solvable ? det : splat(1.0));
+    const Wide solvedX = (k22 * rhsX - k12 * rhsY) * invDet, solvedY = (k11 * rhsY - k12 * rhsX) * invDet;
+    Wide ix = -solvedX - impulseScale * p.impulseX;
+    Wide iy = -solvedY - impulseScale * p.impulseY;
+    if (UseBias && p.h > 0.0) {
+        const Wide wA = A.w - p.invIA * (r.rAx * iy - r.rAy * ix);
+        const Wide wB = B.w + p.invIB * (r.rBx * iy - r.rBy * ix);
+        Wide againX, againY;
+        bend(p, wA, wB, r, againX, againY);
+        againX = againX - bendX;
+        againY = againY - bendY;
+        ix = ix - (k22 * againX - k12 * againY) * invDet;
+        iy = iy - (k11 * againY - k12 * againX) * invDet;
+    }
+    const Wide Px = solvable ? ix : splat(0.0), Py = solvable ? iy : splat(0.0);
+    p.impulseX = solvable ? p.impulseX + Px : p.impulseX;
+    p.impulseY = solvable ? p.impulseY + Py : p.impulseY;
+    apply(p, A, B, r, Px, Py);
 }
 
 struct WarmStartPins {
     template <bool>
     [[gnu::always_inline]] static void run(const PinBlock* begin, const PinBlock* end, SolverBody* states) {
-        warmStartLoop(begin, end, states);
+        inPairs(begin, end, states, [](const PinBlock& p, WideSide& A, WideSide& B)
+                    __attribute__((always_inline)) { warmStartBlock(p, A, B); });
     }
 };
 struct SolvePins {
     template <bool>
     [[gnu::always_inline]] static void run(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias) {
-        if (useBias) solveLoop<true>(begin, end, states);
-        else solveLoop<false>(begin, end, states);
+        if (useBias)
+            inPairs(begin, end, states, [](PinBlock& p, WideSide& A, WideSide& B)
+                        __attribute__((always_inline)) { solveBlock<true>(p, A, B); });
+        else
+            inPairs(begin, end, states, [](PinBlock& p, WideSide& A, WideSide& B)
+                        __attribute__((always_inline)) { solveBlock<false>(p, A, B); });
     }
 };
 

@@ -52,6 +52,7 @@ void framePins(PinFrame& frame, const JointConstraint* const* rows, std::uint32_
 /// without WorldSettings::jointArcs), `invH` and `softness` the substep's.
 void refreshPins(PinBlock& block, const PinFrame& frame, const SolverBodySim* sims,
                  const std::vector<BodyData>& bodies, double arcStep, double invH, const Softness& softness);
+/// The blocks of one call share no dynamic body (one joint colour's; LaneBlocks.hpp's inPairs).
 void warmStartPins(const PinBlock* begin, const PinBlock* end, SolverBody* states, WideCode code = WideCode::Best);
 void solvePins(PinBlock* begin, PinBlock* end, SolverBody* states, bool useBias, WideCode code = WideCode::Best);
 /// The blocks' impulses back into their joints (the next step's warm start, the reaction).

@@ -52,78 +52,73 @@ struct Frame {
     return ((p.invMassA + p.invMassB) + (p.invIA * j1) * j1) + (p.invIB * j2) * j2;
 }
 
-// WheelJoint::warmStart (with its limits off, their impulses +0).
-[[gnu::always_inline]] inline void warmStartLoop(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
+// WheelJoint::warmStart (with its limits off, their impulses +0) on one block's lanes, its bodies gathered.
+[[gnu::always_inline]] inline void warmStartBlock(const WheelBlock& p, WideSide& A, WideSide& B) {
     const WideMask all = {-1, -1, -1, -1};
-    for (const WheelBlock* p = begin; p != end; ++p) {
-        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
-        const Frame f = frameOf(*p, A, B);
-        const Wide axial = (p->springImpulse + splat(0.0)) - splat(0.0);
-        pushAlong(*p, A, B, all, f.axisX, f.axisY, f.a1, f.a2, axial);
-        pushAlong(*p, A, B, all, f.normalX, f.normalY, f.n1, f.n2, p->normalImpulse);
-        const Wide motor = splat(0.0) + p->motorImpulse;
-        A.w = A.w - p->invIA * motor;
-        B.w = B.w + p->invIB * motor;
-        scatter(p->indexA, p->writesA, A, states);
-        scatter(p->indexB, p->writesB, B, states);
-    }
+    const Frame f = frameOf(p, A, B);
+    const Wide axial = (p.springImpulse + splat(0.0)) - splat(0.0);
+    pushAlong(p, A, B, all, f.axisX, f.axisY, f.a1, f.a2, axial);
+    pushAlong(p, A, B, all, f.normalX, f.normalY, f.n1, f.n2, p.normalImpulse);
+    const Wide motor = splat(0.0) + p.motorImpulse;
+    A.w = A.w - p.invIA * motor;
+    B.w = B.w + p.invIB * motor;
 }
 
-// WheelJoint::solve.
+// WheelJoint::solve on one block's lanes, its bodies gathered (the caller writes them back).
 template <bool UseBias>
-[[gnu::always_inline]] inline void solveLoop(WheelBlock* begin, WheelBlock* end, SolverBody* states) {
-    for (WheelBlock* p = begin; p != end; ++p) {
-        WideSide A = gather<true>(p->indexA, states), B = gather<true>(p->indexB, states);
-        const Frame f = frameOf(*p, A, B);
-        p->lastAxisX = f.axisX;
-        p->lastAxisY = f.axisY;
-        // The motor: an angular velocity row capped at maxImpulse.
-        const Wide old = p->motorImpulse;
-        const Wide motorImpulse =
-            clamp(old - p->axialMass * ((B.w - A.w) - p->motorSpeed), -p->maxImpulse, p->maxImpulse);
-        const Wide turn = motorImpulse - old;
-        A.w = p->motor ? A.w - p->invIA * turn : A.w;
-        B.w = p->motor ? B.w + p->invIB * turn : B.w;
-        p->motorImpulse = p->motor ? motorImpulse : old;
-        // The suspension, soft in both passes.
-        const Wide kAxial = inverseMass(*p, f.a1, f.a2);
-        const WideMask spring = p->spring & (kAxial > splat(0.0));
-        const Wide safeAxial = spring ? kAxial : splat(1.0);
-        const Wide rate = ((f.axisX * (B.vx - A.vx) + f.axisY * (B.vy - A.vy)) + f.a2 * B.w) - f.a1 * A.w;
-        const Wide springLambda = -(p->springMass / safeAxial) * (rate + p->springBias * f.translation) -
-                                  p->springImpulseScale * p->springImpulse;
-        p->springImpulse = spring ? p->springImpulse + springLambda : p->springImpulse;
-        pushAlong(*p, A, B, spring, f.axisX, f.axisY, f.a1, f.a2, springLambda);
-        // Across the axis: the anchor stays on A's line.
-        const Wide kNormal = inverseMass(*p, f.n1, f.n2);
-        const WideMask solvable = kNormal > splat(0.0);
-        const Wide safeNormal = solvable ? kNormal : splat(1.0);
-        Wide bias = splat(0.0), massScale = splat(1.0), impulseScale = splat(0.0);
-        if constexpr (UseBias) {
-            bias = p->biasRate * f.offset;
-            massScale = p->massScale;
-            impulseScale = p->impulseScale;
-        }
-        const Wide cdot = ((f.normalX * (B.vx - A.vx) + f.normalY * (B.vy - A.vy)) + f.n2 * B.w) - f.n1 * A.w;
-        const Wide lambda = -(massScale / safeNormal) * (cdot + bias) - impulseScale * p->normalImpulse;
-        p->normalImpulse = solvable ? p->normalImpulse + lambda : p->normalImpulse;
-        pushAlong(*p, A, B, solvable, f.normalX, f.normalY, f.n1, f.n2, lambda);
-        scatter(p->indexA, p->writesA, A, states);
-        scatter(p->indexB, p->writesB, B, states);
+[[gnu::always_inline]] inline void solveBlock(WheelBlock& p, WideSide& A, WideSide& B) {
+    const Frame f = frameOf(p, A, B);
+    p.lastAxisX = f.axisX;
+    p.lastAxisY = f.axisY;
+    // The motor: an angular velocity row capped at maxImpulse.
+    const Wide old = p.motorImpulse;
+    const Wide motorImpulse =
+        clamp(old - p.axialMass * ((B.w - A.w) - p.motorSpeed), -p.maxImpulse, p.maxImpulse);
+    const Wide turn = motorImpulse - old;
+    A.w = p.motor ? A.w - p.invIA * turn : A.w;
+    B.w = p.motor ? B.w + p.invIB * turn : B.w;
+    p.motorImpulse = p.motor ? motorImpulse : old;
+    // The suspension, soft in both passes.
+    const Wide kAxial = inverseMass(p, f.a1, f.a2);
+    const WideMask spring = p.spring & (kAxial > splat(0.0));
+    const Wide safeAxial = spring ? kAxial : splat(1.0);
+    const Wide rate = ((f.axisX * (B.vx - A.vx) + f.axisY * (B.vy - A.vy)) + f.a2 * B.w) - f.a1 * A.w;
+    const Wide springLambda = -(p.springMass / safeAxial) * (rate + p.springBias * f.translation) -
+                              p.springImpulseScale * p.springImpulse;
+    p.springImpulse = spring ? p.springImpulse + springLambda : p.springImpulse;
+    pushAlong(p, A, B, spring, f.axisX, f.axisY, f.a1, f.a2, springLambda);
+    // Across the axis: the anchor stays on A's line.
+    const Wide kNormal = inverseMass(p, f.n1, f.n2);
+    const WideMask solvable = kNormal > splat(0.0);
+    const Wide safeNormal = solvable ? kNormal : splat(1.0);
+    Wide bias = splat(0.0), massScale = splat(1.0), impulseScale = splat(0.0);
+    if constexpr (UseBias) {
+        bias = p.biasRate * f.offset;
+        massScale = p.massScale;
+        impulseScale = p.impulseScale;
     }
+    const Wide cdot = ((f.normalX * (B.vx - A.vx) + f.normalY * (B.vy - A.vy)) + f.n2 * B.w) - f.n1 * A.w;
+    const Wide lambda = -(massScale / safeNormal) * (cdot + bias) - impulseScale * p.normalImpulse;
+    p.normalImpulse = solvable ? p.normalImpulse + lambda : p.normalImpulse;
+    pushAlong(p, A, B, solvable, f.normalX, f.normalY, f.n1, f.n2, lambda);
 }
 
 struct WarmStartWheels {
     template <bool>
     [[gnu::always_inline]] static void run(const WheelBlock* begin, const WheelBlock* end, SolverBody* states) {
-        warmStartLoop(begin, end, states);
+        inPairs(begin, end, states, [](const WheelBlock& p, WideSide& A, WideSide& B)
+                    __attribute__((always_inline)) { warmStartBlock(p, A, B); });
     }
 };
 struct SolveWheels {
     template <bool>
     [[gnu::always_inline]] static void run(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias) {
-        if (useBias) solveLoop<true>(begin, end, states);
-        else solveLoop<false>(begin, end, states);
+        if (useBias)
+            inPairs(begin, end, states, [](WheelBlock& p, WideSide& A, WideSide& B)
+                        __attribute__((always_inline)) { solveBlock<true>(p, A, B); });
+        else
+            inPairs(begin, end, states, [](WheelBlock& p, WideSide& A, WideSide& B)
+                        __attribute__((always_inline)) { solveBlock<false>(p, A, B); });
     }
 };
 

@@ -37,6 +37,7 @@ struct alignas(64) WheelBlock {  // 64: the AVX builds assume their vectors alig
 /// Fills `block` from `count` (1..kLanes) prepared rows of wheel joints whose solvesInLanes() holds.
 void packWheels(WheelBlock& block, const JointConstraint* const* rows, std::uint32_t count,
                 const std::vector<JointData>& joints);
+/// The blocks of one call share no dynamic body (one joint colour's; LaneBlocks.hpp's inPairs).
 void warmStartWheels(const WheelBlock* begin, const WheelBlock* end, SolverBody* states,
                      WideCode code = WideCode::Best);
 void solveWheels(WheelBlock* begin, WheelBlock* end, SolverBody* states, bool useBias, WideCode code = WideCode::Best);
