@@ -50,7 +50,7 @@ bool sameBits(const test::JointLaneCase& a, const test::JointLaneCase& b) {
     return true;
 }
 
-// Each build of the loops on `lanes`, `perColour` blocks to a call: the case's bits must be the scalar rows'.
+// Each build of the loops on a copy of `start`, `perColour` blocks to a call: its bits must be the scalar rows'.
 void expectScalarBits(const test::JointLaneCase& scalar, const test::JointLaneCase& start, std::size_t perColour,
                       const std::string& what) {
     for (const WideCode code : test::runnableWideCodes()) {
