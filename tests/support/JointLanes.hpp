@@ -111,7 +111,7 @@ std::vector<Block> packJointBlocks(JointLaneCase& c, Pack&& pack) {
 /// Cases a and b side by side on disjoint bodies (b's rows name bodies JointLaneCase::kBodies further on, and joints
 /// after a's), their blocks alternating a's, b's: blocks 2k and 2k + 1 share no moving body, as the blocks of one
 /// joint colour, which the four-lane loops take two at a time (LaneBlocks.hpp's inPairs).
-inline JointLaneCase sideBySide(JointLaneCase a, const JointLaneCase& b) {
+inline JointLaneCase sideBySide(const JointLaneCase& a, const JointLaneCase& b) {
     JointLaneCase c;
     c.bodies = a.bodies;
     c.bodies.insert(c.bodies.end(), b.bodies.begin() + 1, b.bodies.end());
