@@ -9,10 +9,9 @@
 namespace physim {
 namespace {
 
-// Unit vector along v, or `fallback` when v is zero. std::hypot does not underflow for tiny components, so any
-// non-zero finite v gives a unit vector (never NaN).
-Vec2 directionOr(const Vec2& v, const Vec2& fallback) {
-    const double length = std::hypot(v.x(), v.y());
+// Unit vector along v, whose length (std::hypot's) the caller has, or `fallback` when v is zero. std::hypot does
+// not underflow for tiny components, so any non-zero finite v gives a unit vector (never NaN).
+Vec2 directionOr(const Vec2& v, double length, const Vec2& fallback) {
     return length > 0.0 ? Vec2(v / length) : fallback;
 }
 
@@ -24,12 +23,13 @@ NarrowResult collideCircles(const Circle& a, const Transform& xa, const Circle& 
     const Vec2 ca = xa.apply(a.center);
     const Vec2 cb = xb.apply(b.center);
     const Vec2 d = cb - ca;
-    r.separation = std::hypot(d.x(), d.y()) - a.radius - b.radius;
+    const double distance = std::hypot(d.x(), d.y());
+    r.separation = distance - a.radius - b.radius;
     if (r.separation > margin) return r;
     Manifold& m = r.manifold;
     // Concentric circles have no preferred direction: +y keeps the normal a unit vector, and every direction
     // needs the same push (the sum of the radii).
-    m.normal = directionOr(d, Vec2(0.0, 1.0));
+    m.normal = directionOr(d, distance, Vec2(0.0, 1.0));
     m.pointCount = 1;
     m.points[0].point = ca + (a.radius + 0.5 * r.separation) * m.normal;
     m.points[0].separation = r.separation;
@@ -79,7 +79,7 @@ NarrowResult collidePolygonAndCircle(const Polygon& a, const Transform& xa, cons
             r.separation = distance - b.radius;
             return r;
         }
-        normal = directionOr(d, normal);  // d is non-zero here: faceSeparation > 0 puts c off the boundary
+        normal = directionOr(d, distance, normal);  // d is non-zero here: faceSeparation > 0 puts c off the boundary
         feature = 8u + static_cast<std::uint32_t>(vertex);
     }
 
