@@ -231,7 +231,7 @@ BodyId World::createBody(const BodyDef& def) {
     w.addAwakeBody(index);
     if (def.type == BodyType::Static) w.wakeShapesOverlapping(index);
     if (def.type == BodyType::Dynamic && w.settings.enableSleep) w.createIsland(index);
-    w.effects.drag.set(index, def.drag, w.meanWidth(index));
+    w.setDrag(index, def.drag);
     if (def.attracting) {
         b.attracting = true;
         w.effects.gravitation.add(index);

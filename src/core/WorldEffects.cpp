@@ -21,7 +21,7 @@ double World::gravityScale(BodyId id) const { return at(id).gravityScale; }
 void World::setDrag(BodyId id, const DragDef& drag) {
     physim::validate(drag);
     wake(id, "setDrag");
-    impl_->effects.drag.set(id.index, drag, impl_->meanWidth(id.index));
+    impl_->setDrag(id.index, drag);
 }
 
 DragDef World::drag(BodyId id) const {

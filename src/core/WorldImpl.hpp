@@ -243,6 +243,9 @@ struct WorldImpl : WorldState {
     void wakeShapesOverlapping(std::uint32_t body);
     /// The body's mean width over all directions, m (drag): its shape's, or that of the convex hull of its shapes.
     double meanWidth(std::uint32_t body) const;
+    /// Gives the body this drag (DragEffect::set), measuring its mean width only where the drag's quadratic term
+    /// asks for it: a ground of many shapes added one by one would otherwise pay a hull of all of them per shape.
+    void setDrag(std::uint32_t body, const DragDef& def);
     /// Sets a shape's material and mixes it again into its contacts.
     void setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction, double dynamicFriction);
     /// Sets a shape's rolling resistance and tangent speed (validated) and mixes them again into its contacts.

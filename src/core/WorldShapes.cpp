@@ -183,6 +183,13 @@ double WorldImpl::meanWidth(std::uint32_t body) const {
     return perimeter / M_PI;
 }
 
+void WorldImpl::setDrag(std::uint32_t body, const DragDef& def) {
+    // Without a width of its own, only C_d rho width |v| v reads the body's width; with C_d or rho zero that term is
+    // zero for any finite width, so 0 stands in for it.
+    const bool readsWidth = !isNone(def) && def.width == 0.0 && def.dragCoefficient != 0.0 && def.fluidDensity != 0.0;
+    effects.drag.set(body, def, readsWidth ? meanWidth(body) : 0.0);
+}
+
 void WorldImpl::setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction,
                                  double dynamicFriction) {
     ShapeData& s = shapes[shape];
@@ -303,7 +310,7 @@ std::vector<ShapeId> World::addShapes(BodyId id, const std::vector<ShapeDef>& de
         if (b.type == BodyType::Static)
             for (const std::uint32_t slot : slots) w.wakeOverlapping(w.broadPhase.fatBox(w.shapes[slot].proxy));
     }
-    w.effects.drag.set(body, w.effects.drag.get(body), w.meanWidth(body));
+    w.setDrag(body, w.effects.drag.get(body));
     w.wakeBody(body);
     w.touched.push_back(body);
     ++w.shapeRevision;
@@ -352,7 +359,7 @@ void World::destroyShape(ShapeId id) {
     w.freeShapes.push_back(slot);
     --w.shapeLiveCount;
     w.updateBoxes(b);
-    w.effects.drag.set(body, w.effects.drag.get(body), w.meanWidth(body));
+    w.setDrag(body, w.effects.drag.get(body));
     w.wakeBody(body);
     w.touched.push_back(body);
     ++w.shapeRevision;
