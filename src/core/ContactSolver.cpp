@@ -15,9 +15,10 @@ namespace physim {
 
 namespace {
 
-// A normal impulse on one row (the bounce path and push records), with the moments prepared once per step.
-void pushNormal(const ContactConstraint& c, MotionSide& A, MotionSide& B, const ContactConstraintPoint& p,
-                double lambda) {
+// A normal impulse on one row (the bounce path and push records), with the moments prepared once per step. Row: a
+// ContactConstraint, or a PushRow where only push-out is recorded; Point: its points' type.
+template <class Row, class Point>
+void pushNormal(const Row& c, MotionSide& A, MotionSide& B, const Point& p, double lambda) {
     const Vec2 P = lambda * c.normal;
     A.v -= c.invMassA * P;
     B.v += c.invMassB * P;
@@ -473,7 +474,8 @@ void addVelocity(RowsBase& base, const MotionSide& change) {
 
 // Adds a point's push impulse (N s along the normal) to what its bodies have been given by push-out this substep.
 // Only sides the row can move are written (a kinematic body is read by many rows of one colour).
-void recordPush(const ContactPass& pass, const ContactConstraint& c, const ContactConstraintPoint& cp, double impulse) {
+template <class Row, class Point>
+void recordPush(const ContactPass& pass, const Row& c, const Point& cp, double impulse) {
     if (!pass.pushes) return;
     MotionSide A = pushedSide(pass, c.indexA), B = pushedSide(pass, c.indexB);
     pushNormal(c, A, B, cp, impulse);
@@ -562,6 +564,28 @@ ContactConstraint rowMotion(const ContactBlock& b, const ContactBlockCold& cold,
         p.engaged = lane.engaged[i];
     }
     return c;
+}
+
+// What lane k's push-out records need (pushNormal, recordPush, storeSide), named as in ContactConstraint: the
+// passes that only move held push-out read these few lanes of the block instead of the whole row.
+struct PushRow {
+    std::int32_t indexA, indexB;
+    Vec2 normal;
+    double invMassA, invIA, invMassB, invIB;
+    struct Point {
+        double rnA, rnB;
+    } points[2];
+};
+
+PushRow pushRow(const ContactBlock& b, int k) {
+    return {b.indexA[k],
+            b.indexB[k],
+            {b.nx[k], b.ny[k]},
+            -b.negInvMassA[k],
+            b.invIA[k],
+            b.invMassB[k],
+            b.invIB[k],
+            {{-b.points[0].negRnA[k], b.points[0].rnB[k]}, {-b.points[1].negRnA[k], b.points[1].rnB[k]}}};
 }
 
 void completeRow(ContactConstraint& c, const ContactBlock& b, const ContactBlockCold& cold, int k) {
@@ -654,7 +678,7 @@ double startLane(ContactBlock& block, ContactBlockCold& cold, int k, WideSide& w
 void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* states, const ContactPass& pass) {
     for (int k = 0; k < kLanes; ++k) {
         if (cold.push[0][k] == 0.0 && cold.push[1][k] == 0.0) continue;
-        const ContactConstraint c = rowMotion(block, cold, k);
+        const PushRow c = pushRow(block, k);
         MotionSide A = loadSide(states, c.indexA), B = loadSide(states, c.indexB);
         for (int i = 0; i < 2; ++i) {
             const double held = cold.push[i][k];
@@ -682,7 +706,7 @@ void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const Contact
             if (started[i][k]) continue;
             const double held = std::min(pushes[i][k], block.points[i].normalImpulse[k]);
             if (held == cold.push[i][k]) continue;
-            const ContactConstraint c = rowMotion(block, cold, k);
+            const PushRow c = pushRow(block, k);
             recordPush(pass, c, c.points[i], held - cold.push[i][k]);
             cold.push[i][k] = held;
             if (held != 0.0) block.holdsPush = true;
