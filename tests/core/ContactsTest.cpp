@@ -177,6 +177,28 @@ TEST(Contacts, ASpinningWheelPairsOnlyWithWhatItsOutlineCanReach) {
     EXPECT_EQ(world.profile().candidatePairs, 2u) << "each circle of the dumbbell meets the ground";
 }
 
+// A moving body's proxy box exceeds its shape's by 0.1 m, or by a quarter of its extent where that is less, so a
+// crowd of small bodies pairs only with near neighbours; the ground's static proxy exceeds its box by the
+// speculative distance (2 cm). Balls at rest, no gravity (no travel widens the boxes): a pair is made exactly
+// when the gap is under the ball's margin plus 2 cm. A ball of radius 0.1 m (margin 2.5 cm) 6 cm above the
+// ground makes none, with 0.1 m it would; 3 cm above, one. A ball of radius 0.5 m (margin 0.1 m) 6 cm above, one.
+TEST(Contacts, AProxysMarginIsAQuarterOfItsBodysExtentAtMostATenthOfAMetre) {
+    WorldSettings settings;
+    settings.gravity = {0.0, 0.0};
+    settings.enableSleep = false;
+    const auto pairsFor = [&](double radius, double gap) {
+        World world(settings);
+        add(world, BodyType::Static, makeBox(5.0, 0.5), {0.0, -0.5});
+        add(world, BodyType::Dynamic, makeCircle(radius), {0.0, radius + gap});
+        world.step(kDt);
+        return world.profile().candidatePairs;
+    };
+    EXPECT_EQ(pairsFor(0.1, 0.06), 0u) << "gap 6 cm, reach 2.5 + 2 cm";
+    EXPECT_EQ(pairsFor(0.1, 0.03), 1u) << "gap 3 cm, reach 2.5 + 2 cm";
+    EXPECT_EQ(pairsFor(0.5, 0.06), 1u) << "gap 6 cm, reach 10 + 2 cm";
+    EXPECT_EQ(pairsFor(0.5, 0.13), 0u) << "gap 13 cm, reach 10 + 2 cm";
+}
+
 // A contact that slept while its boxes parted is tested when it wakes. A static platform moved away from a
 // sleeping ball (the move wakes only what the platform's new place touches) leaves the pair's boxes apart, and
 // narrow phases run meanwhile for another pair: the first narrow phase after the ball wakes must end the contact.
