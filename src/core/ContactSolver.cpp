@@ -697,21 +697,18 @@ void releasePushes(ContactBlock& block, ContactBlockCold& cold, SolverBody* stat
 }
 
 // A solve pass over rows that keep their push-out: each point that did not start in this pass (startLane records
-// those) holds as push-out the part of its impulse its bias gave, at most all of it; its bodies' push record follows.
-void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const ContactPass& pass, const Wide (&pushes)[2],
-                      const WideMask (&started)[2]) {
-    for (int k = 0; k < kLanes; ++k) {
-        if (!cold.lanes[k].keepsPush) continue;
+// those) holds as push-out the part of its impulse its bias gave, at most all of it (`held`, worked out in the
+// lanes); where that changed (`changed`), its bodies' push record follows, lane by lane.
+void updateHeldPushes(ContactBlock& block, ContactBlockCold& cold, const ContactPass& pass, const Wide (&held)[2],
+                      const WideMask (&changed)[2]) {
+    for (int k = 0; k < kLanes; ++k)
         for (int i = 0; i < 2; ++i) {
-            if (started[i][k]) continue;
-            const double held = std::min(pushes[i][k], block.points[i].normalImpulse[k]);
-            if (held == cold.push[i][k]) continue;
+            if (!changed[i][k]) continue;
             const PushRow c = pushRow(block, k);
-            recordPush(pass, c, c.points[i], held - cold.push[i][k]);
-            cold.push[i][k] = held;
-            if (held != 0.0) block.holdsPush = true;
+            recordPush(pass, c, c.points[i], held[i][k] - cold.push[i][k]);
+            cold.push[i][k] = held[i][k];
+            if (held[i][k] != 0.0) block.holdsPush = true;
         }
-    }
 }
 
 // One pass over a block's rows. Turns is false for a block none of whose bodies can turn (rotation locked, or
@@ -798,10 +795,17 @@ template <bool V, bool Turns, bool Bias, bool Two, bool Material = false>
     }
     if constexpr (Bias) {
         if (pass.holdPushes && c.keepsPushes) {
-            Wide pushes[2];
-            for (int i = 0; i < 2; ++i)
-                pushes[i] = bias[i] < 0.0 ? c.points[i].negNormalMass * massScale[i] * bias[i] : zero;
-            updateHeldPushes(c, cold, pass, pushes, started);
+            WideMask keeps;
+            for (int k = 0; k < kLanes; ++k) keeps[k] = cold.lanes[k].keepsPush ? -1 : 0;
+            Wide held[2];
+            WideMask changed[2];
+            for (int i = 0; i < 2; ++i) {
+                const Wide push = bias[i] < 0.0 ? c.points[i].negNormalMass * massScale[i] * bias[i] : zero;
+                const Wide x = c.points[i].normalImpulse;
+                held[i] = x < push ? x : push;  // std::min(push, x)
+                changed[i] = keeps & ~started[i] & (held[i] != cold.push[i]);
+            }
+            if (any(changed[0] | changed[1])) updateHeldPushes(c, cold, pass, held, changed);
         }
     }
     if (any(started[0] | started[1])) {
