@@ -47,10 +47,9 @@ namespace physim {
 class ContinuousSolver;
 
 /// Margin (m) by which a proxy's box exceeds its body's box, so small motions never touch the broad phase: at most
-/// kAabbMargin, and at most kMarginPerExtent of the body's extent. A crowd of small bodies then pairs only with near
-/// neighbours (with 0.1 m for all, four in five of washer's contacts, between 0.2 m squares, had no points); a
-/// quarter leaves every body of 0.4 m extent or more as it was, a car's wheel among them, whose proxy would move
-/// more often with less.
+/// kAabbMargin, and at most kMarginPerExtent of the body's extent, so a crowd of small bodies pairs only with near
+/// neighbours, not with every body within 0.1 m. A quarter leaves bodies of 0.4 m extent or more at 0.1 m: a car's
+/// wheel with less moves its proxy more often than its fewer pairs save (docs/collision.md, "Proxies").
 constexpr double kAabbMargin = 0.1;
 constexpr double kMarginPerExtent = 0.25;
 /// Steps of its present travel a proxy's box reaches ahead of its body, no further than kLookAheadReach (m) nor the
@@ -250,8 +249,8 @@ struct WorldImpl : WorldState {
     void wakeShapesOverlapping(std::uint32_t body);
     /// The body's mean width over all directions, m (drag): its shape's, or that of the convex hull of its shapes.
     double meanWidth(std::uint32_t body) const;
-    /// Gives the body this drag (DragEffect::set), measuring its mean width only where the drag's quadratic term
-    /// asks for it: a ground of many shapes added one by one would otherwise pay a hull of all of them per shape.
+    /// Gives the body this drag (DragEffect::set, which measures the body's mean width only where the drag reads
+    /// it: a ground of many shapes added one by one would otherwise pay a hull of all of them per shape).
     void setDrag(std::uint32_t body, const DragDef& def);
     /// Sets a shape's material and mixes it again into its contacts.
     void setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction, double dynamicFriction);

@@ -184,10 +184,7 @@ double WorldImpl::meanWidth(std::uint32_t body) const {
 }
 
 void WorldImpl::setDrag(std::uint32_t body, const DragDef& def) {
-    // Without a width of its own, only C_d rho width |v| v reads the body's width; with C_d or rho zero that term is
-    // zero for any finite width, so 0 stands in for it.
-    const bool readsWidth = !isNone(def) && def.width == 0.0 && def.dragCoefficient != 0.0 && def.fluidDensity != 0.0;
-    effects.drag.set(body, def, readsWidth ? meanWidth(body) : 0.0);
+    effects.drag.set(body, def, [&] { return meanWidth(body); });
 }
 
 void WorldImpl::setShapeMaterial(std::uint32_t shape, double restitution, double staticFriction,

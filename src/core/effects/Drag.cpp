@@ -22,12 +22,14 @@ void validate(const DragDef& d) {
     requireNonNegative("drag angular coefficient", d.angular);
 }
 
-void DragEffect::set(std::uint32_t slot, const DragDef& def, double shapeWidth) {
+void DragEffect::set(std::uint32_t slot, const DragDef& def, const std::function<double()>& shapeWidth) {
     if (isNone(def)) {
         remove(slot);
         return;
     }
-    const double width = def.width > 0.0 ? def.width : shapeWidth;
+    // With C_d or rho zero the quadratic term is zero for any finite width, so 0 stands in for it.
+    const bool readsWidth = def.dragCoefficient != 0.0 && def.fluidDensity != 0.0;
+    const double width = def.width > 0.0 ? def.width : readsWidth ? shapeWidth() : 0.0;
     const Coefficients c{def.linear, 0.5 * def.fluidDensity * def.dragCoefficient * width, def.angular};
     const std::size_t at = members_.add(slot);
     if (at == defs_.size()) {

@@ -6,6 +6,7 @@
 #include "physim/core/Drag.hpp"
 #include "physim/core/Geometry.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace physim {
@@ -14,9 +15,10 @@ struct WorldImpl;
 
 class DragEffect {
 public:
-    /// Gives the body at `slot` this drag (a definition asking for none removes it); `shapeWidth` (m) is the body's
-    /// mean width, used where the definition gives none.
-    void set(std::uint32_t slot, const DragDef& def, double shapeWidth);
+    /// Gives the body at `slot` this drag (a definition asking for none removes it); `shapeWidth()` (m) is the body's
+    /// mean width, asked for only where the definition gives none and its quadratic term reads one (it can cost a
+    /// convex hull of all the body's parts).
+    void set(std::uint32_t slot, const DragDef& def, const std::function<double()>& shapeWidth);
     DragDef get(std::uint32_t slot) const;
     void remove(std::uint32_t slot);
     bool active() const { return !members_.empty(); }
